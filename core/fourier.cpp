@@ -1,0 +1,30 @@
+#include "core/fourier.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "core/conventions.h"
+
+namespace skinlayer {
+
+CosineProjector::CosineProjector(int modes, int samples) : weights_(modes, samples) {
+  if (modes < 1 || samples < 2) throw std::invalid_argument("CosineProjector: need modes >= 1 and samples >= 2");
+  const double step = kPi / (samples - 1);
+  for (int k = 0; k < samples; ++k) {
+    const double trapezoid = (k == 0 || k == samples - 1) ? 0.5 * step : step;
+    const double phi = k * step;
+    for (int m = 0; m < modes; ++m) {
+      const double scale = (m == 0 ? 1.0 : 2.0) / kPi;
+      weights_(m, k) = scale * trapezoid * std::cos(m * phi);
+    }
+  }
+}
+
+double CosineProjector::angle(int k) const { return k * kPi / (samples() - 1); }
+
+Vec3 propagation_direction(double mu, double phi) {
+  const double s = std::sqrt(std::max(0.0, 1.0 - mu * mu));
+  return {s * std::cos(phi), s * std::sin(phi), mu};
+}
+
+}  // namespace skinlayer

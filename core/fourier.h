@@ -1,0 +1,64 @@
+// Projection of azimuth-dependent kernels onto the full cosine series of core/conventions.h.
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+#include <vector>
+
+#include "core/microfacet.h"
+
+namespace skinlayer {
+
+// Per Fourier mode m, a matrix K^m(to, from).
+using FourierKernel = std::vector<Eigen::MatrixXd>;
+
+// Cosine coefficients of even, 2pi-periodic functions from samples at phi_k = k pi / (n - 1), k = 0..n-1:
+//   K^0 = (1/pi) int_0^pi K dphi,   K^m = (2/pi) int_0^pi K cos(m phi) dphi,
+// by the trapezoid rule, which is spectrally accurate for smooth periodic functions.
+class CosineProjector {
+ public:
+  CosineProjector(int modes, int samples);
+
+  int modes() const { return static_cast<int>(weights_.rows()); }
+  int samples() const { return static_cast<int>(weights_.cols()); }
+  double angle(int k) const;
+
+  // samples: one column per function, one row per azimuth sample. Returns modes x functions.
+  Eigen::MatrixXd project(const Eigen::MatrixXd& samples) const { return weights_ * samples; }
+
+ private:
+  Eigen::MatrixXd weights_;  // modes x samples
+};
+
+// A direction of propagation with cosine mu (signed, mu > 0 travels up) and azimuth phi.
+Vec3 propagation_direction(double mu, double phi);
+
+// Fourier coefficients in Delta phi_prop of a kernel used with propagation labels:
+//   K^m(to b, from a) = coefficients of  Delta phi -> kernel(omega_i = -d_a(0), omega_o = d_b(Delta phi)),
+// where kernel(wi, wo) is a BSDF-like function of graphics-convention directions. mu_from and mu_to are signed
+// propagation cosines. Returns one (to x from) matrix per mode.
+template <class Kernel>
+FourierKernel project_propagation_kernel(const Kernel& kernel, std::span<const double> mu_from,
+                                         std::span<const double> mu_to, const CosineProjector& projector) {
+  const int n_from = static_cast<int>(mu_from.size());
+  const int n_to = static_cast<int>(mu_to.size());
+  Eigen::MatrixXd samples(projector.samples(), n_from * n_to);
+  for (int a = 0; a < n_from; ++a) {
+    const Vec3 wi = -propagation_direction(mu_from[a], 0.0);
+    for (int b = 0; b < n_to; ++b) {
+      for (int k = 0; k < projector.samples(); ++k) {
+        samples(k, a * n_to + b) = kernel(wi, propagation_direction(mu_to[b], projector.angle(k)));
+      }
+    }
+  }
+  const Eigen::MatrixXd coefficients = projector.project(samples);
+  FourierKernel result(projector.modes(), Eigen::MatrixXd(n_to, n_from));
+  for (int m = 0; m < projector.modes(); ++m) {
+    for (int a = 0; a < n_from; ++a) {
+      for (int b = 0; b < n_to; ++b) result[m](b, a) = coefficients(m, a * n_to + b);
+    }
+  }
+  return result;
+}
+
+}  // namespace skinlayer

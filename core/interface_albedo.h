@@ -1,0 +1,22 @@
+// Directional-hemispherical reflectance and transmittance of one rough dielectric interface.
+#pragma once
+
+#include "core/microfacet.h"
+
+namespace skinlayer {
+
+struct InterfaceAlbedo {
+  double reflectance;    // int f_r |wo.n| d omega_o
+  double transmittance;  // int f_t |wo.n| d omega_o  (energy; f_t is a radiance BTDF)
+  double loss() const { return 1.0 - reflectance - transmittance; }  // what Smith shadowing-masking removes
+};
+
+// Integrates over microfacet normals in slope space, where D(h) cos(alpha) d omega_h is the Gaussian slope density
+// exp(-(p^2+q^2)/sigma^2)/(pi sigma^2) dp dq. Changing variables from outgoing direction to h turns both integrands
+// into  F-or-(1-F) * G1(wi) G1(wo) * |wi.h| / (|wi.n| h.n)  (Walter et al. 2007, eqs. 14 and 17), so the
+// integration is smooth apart from the visibility cut-offs. Gauss-Legendre in u = 1 - exp(-r^2/sigma^2) and in the
+// slope azimuth. At eta = 1 the interface is absent: reflectance 0, transmittance 1.
+InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& wi, int radial_nodes = 96,
+                                 int azimuth_nodes = 192);
+
+}  // namespace skinlayer

@@ -1,0 +1,93 @@
+#include "core/layer_tables.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/conventions.h"
+
+namespace skinlayer {
+namespace {
+
+// Catmull-Rom weights for the four samples around t in [0, 1] (interpolating, C1, exact for quadratics).
+void catmull_rom_weights(double t, double w[4]) {
+  const double t2 = t * t;
+  const double t3 = t2 * t;
+  w[0] = 0.5 * (-t + 2.0 * t2 - t3);
+  w[1] = 0.5 * (2.0 - 5.0 * t2 + 3.0 * t3);
+  w[2] = 0.5 * (t + 4.0 * t2 - 3.0 * t3);
+  w[3] = 0.5 * (-t2 + t3);
+}
+
+}  // namespace
+
+LayerTables::LayerTables(int grid_size, int modes, std::vector<double> reflection, std::vector<double> transmission)
+    : grid_size_(grid_size), modes_(modes), reflection_(std::move(reflection)), transmission_(std::move(transmission)) {
+  const std::size_t expected = static_cast<std::size_t>(grid_size) * grid_size * modes;
+  if (grid_size < 4 || reflection_.size() != expected || transmission_.size() != expected) {
+    throw std::invalid_argument("LayerTables: table sizes do not match grid_size^2 * modes");
+  }
+}
+
+double LayerTables::grid_spacing() const { return 0.5 * kPi / (grid_size_ - 1); }
+
+// Tensor-product Catmull-Rom in (theta_i, theta_o). Beyond theta = 0 the table continues by the exact symmetry
+// S_m(-theta) = (-1)^m S_m(theta) (a direction at -theta is the one at theta with phi + pi); beyond pi/2 it is
+// extended linearly.
+double LayerTables::interpolate(std::span<const double> table, int m, double theta_i, double theta_o) const {
+  const int k = grid_size_;
+  const double h = grid_spacing();
+  const double parity = azimuth_parity(m);
+  const auto axis = [&](double theta, int index[4], double weight[4], double sign[4]) {
+    const double x = std::clamp(theta, 0.0, 0.5 * kPi) / h;
+    const int cell = std::min(static_cast<int>(x), k - 2);
+    catmull_rom_weights(x - cell, weight);
+    for (int a = 0; a < 4; ++a) {
+      index[a] = cell - 1 + a;
+      sign[a] = 1.0;
+    }
+    if (index[0] < 0) {
+      index[0] = 1;
+      sign[0] = parity;
+    }
+    if (index[3] > k - 1) {  // linear extension f(k) = 2 f(k-1) - f(k-2), folded onto index[2] and index[1]
+      weight[2] += 2.0 * weight[3];
+      weight[1] -= weight[3];
+      weight[3] = 0.0;
+      index[3] = k - 1;
+    }
+  };
+  int ii[4], io[4];
+  double wi[4], wo[4], si[4], so[4];
+  axis(theta_i, ii, wi, si);
+  axis(theta_o, io, wo, so);
+  const double* base = table.data() + static_cast<std::size_t>(m) * k * k;
+  double value = 0.0;
+  for (int a = 0; a < 4; ++a) {
+    double row = 0.0;
+    for (int b = 0; b < 4; ++b) row += wo[b] * so[b] * base[ii[a] * k + io[b]];
+    value += wi[a] * si[a] * row;
+  }
+  return value;
+}
+
+double LayerTables::sum_modes(std::span<const double> table, double theta_i, double theta_o, double phi) const {
+  double value = 0.0;
+  for (int m = 0; m < modes_; ++m) value += interpolate(table, m, theta_i, theta_o) * std::cos(m * phi);
+  return value;
+}
+
+double LayerTables::reflection_mode(int m, double theta_i, double theta_o) const {
+  return interpolate(reflection_, m, theta_i, theta_o);
+}
+double LayerTables::transmission_mode(int m, double theta_i, double theta_o) const {
+  return interpolate(transmission_, m, theta_i, theta_o);
+}
+double LayerTables::brdf_subsurface(double theta_i, double theta_o, double phi) const {
+  return sum_modes(reflection_, theta_i, theta_o, phi);
+}
+double LayerTables::btdf(double theta_i, double theta_o, double phi) const {
+  return sum_modes(transmission_, theta_i, theta_o, phi);
+}
+
+}  // namespace skinlayer

@@ -1,0 +1,47 @@
+// The solver's result: the subsurface BRDF and the layer BTDF as Fourier series in azimuth whose coefficients are
+// tabulated on a uniform polar-angle grid and interpolated with cubic (Catmull-Rom) splines.
+//
+//   f_sub(theta_i, theta_o, phi) = sum_{m < M} S_m(theta_i, theta_o) cos(m phi)        [1/sr]
+//   f_T  (theta_i, theta_o, phi) = sum_{m < M} B_m(theta_i, theta_o) cos(m phi)        [1/sr]
+//
+// Angles follow core/conventions.h (graphics convention; the (-1)^m parity is already folded into S_m and B_m).
+// Grid: theta_k = k * (pi/2) / (K - 1), k = 0..K-1, for both theta_i and theta_o.
+// Storage: coefficient (m, i, o) at index (m * K + i) * K + o.
+#pragma once
+
+#include <span>
+#include <vector>
+
+namespace skinlayer {
+
+class LayerTables {
+ public:
+  LayerTables() = default;
+  LayerTables(int grid_size, int modes, std::vector<double> reflection, std::vector<double> transmission);
+
+  int grid_size() const { return grid_size_; }
+  int modes() const { return modes_; }
+  double grid_spacing() const;  // radians between grid angles
+
+  std::span<const double> reflection_coefficients() const { return reflection_; }
+  std::span<const double> transmission_coefficients() const { return transmission_; }
+
+  // Subsurface BRDF and layer BTDF in 1/sr at arbitrary angles (radians, graphics convention).
+  double brdf_subsurface(double theta_i, double theta_o, double phi) const;
+  double btdf(double theta_i, double theta_o, double phi) const;
+
+  // The m-th azimuthal coefficient, spline-interpolated.
+  double reflection_mode(int m, double theta_i, double theta_o) const;
+  double transmission_mode(int m, double theta_i, double theta_o) const;
+
+ private:
+  double interpolate(std::span<const double> table, int m, double theta_i, double theta_o) const;
+  double sum_modes(std::span<const double> table, double theta_i, double theta_o, double phi) const;
+
+  int grid_size_ = 0;
+  int modes_ = 0;
+  std::vector<double> reflection_;
+  std::vector<double> transmission_;
+};
+
+}  // namespace skinlayer

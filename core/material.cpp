@@ -1,0 +1,104 @@
+#include "core/material.h"
+
+#include <array>
+#include <charconv>
+#include <cstdio>
+#include <limits>
+
+namespace skinlayer {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The single table of parameters. Ranges are the ones the solver is tested over.
+constexpr std::array kParameters = {
+    ParameterInfo{"sigma", "σ", "top interface Beckmann RMS slope", 0.05, 1.0, 0.5},
+    ParameterInfo{"eta", "η", "top relative index n_layer/n_air (1 = no interface)", 1.0, 2.5, 1.4},
+    ParameterInfo{"T", "T", "transparency exp(-tau); 0 = semi-infinite, 1 = no medium", 0.0, 1.0, 0.2},
+    ParameterInfo{"tau", "τb", "optical depth; inf = semi-infinite", 0.0, kInf, 1.6094379124341003},
+    ParameterInfo{"albedo", "Ω", "single-scattering albedo", 0.0, 1.0, 1.0},
+    ParameterInfo{"g", "g", "Henyey-Greenstein asymmetry", -0.95, 0.95, 0.8},
+    ParameterInfo{"bottom-sigma", "σ3", "bottom interface Beckmann RMS slope", 0.05, 1.0, 0.5},
+    ParameterInfo{"bottom-eta", "η3", "bottom relative index n_layer/n_below (1 = no interface)", 1.0, 2.5, 1.4},
+    ParameterInfo{"lambert", "A", "albedo of the Lambertian base", 0.0, 1.0, 0.5},
+    ParameterInfo{"ordinates", "N", "discrete ordinates per hemisphere", 4.0, 256.0, 0.0},
+};
+
+std::string format_number(double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.10g", value);
+  return buffer;
+}
+
+}  // namespace
+
+double optical_depth_from_transparency(double transparency) {
+  check_parameter(parameter_info("T"), transparency);
+  return transparency == 0.0 ? kInf : -std::log(transparency);
+}
+
+std::span<const ParameterInfo> parameter_table() { return kParameters; }
+
+const ParameterInfo& parameter_info(std::string_view flag) {
+  for (const ParameterInfo& info : kParameters) {
+    if (info.flag == flag) return info;
+  }
+  throw std::logic_error("unknown parameter '" + std::string(flag) + "'");
+}
+
+void check_parameter(const ParameterInfo& info, double value) {
+  if (!(value >= info.min && value <= info.max)) {  // false for NaN too
+    throw ParameterError(std::string(info.flag) + " = " + format_number(value) +
+                         " is out of range; valid range is [" + format_number(info.min) + ", " +
+                         format_number(info.max) + "] (" + std::string(info.description) + ")");
+  }
+}
+
+void validate(const Material& material) {
+  check_parameter(parameter_info("sigma"), material.sigma);
+  check_parameter(parameter_info("eta"), material.eta);
+  check_parameter(parameter_info("tau"), material.tau);
+  check_parameter(parameter_info("albedo"), material.albedo);
+  check_parameter(parameter_info("g"), material.g);
+  if (material.bottom.sigma) check_parameter(parameter_info("bottom-sigma"), *material.bottom.sigma);
+  if (material.bottom.eta) check_parameter(parameter_info("bottom-eta"), *material.bottom.eta);
+  if (material.bottom.kind == BottomKind::Lambert) {
+    check_parameter(parameter_info("lambert"), material.bottom.lambert_albedo);
+  }
+  if (material.ordinates) check_parameter(parameter_info("ordinates"), *material.ordinates);
+}
+
+Bottom parse_bottom(std::string_view text) {
+  Bottom bottom;
+  if (text == "air") return bottom;
+  if (text == "matched") {
+    bottom.kind = BottomKind::Matched;
+    return bottom;
+  }
+  constexpr std::string_view kLambert = "lambert:";
+  if (text.starts_with(kLambert)) {
+    const std::string_view number = text.substr(kLambert.size());
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(number.data(), number.data() + number.size(), value);
+    if (error != std::errc() || end != number.data() + number.size() || number.empty()) {
+      throw ParameterError("bottom = '" + std::string(text) +
+                           "': the Lambertian albedo must be a number in [0, 1], as in lambert:0.5");
+    }
+    check_parameter(parameter_info("lambert"), value);
+    bottom.kind = BottomKind::Lambert;
+    bottom.lambert_albedo = value;
+    return bottom;
+  }
+  throw ParameterError("bottom = '" + std::string(text) + "' is not one of air, matched, lambert:A (A in [0, 1])");
+}
+
+std::string format_bottom(const Bottom& bottom) {
+  switch (bottom.kind) {
+    case BottomKind::Air: return "air";
+    case BottomKind::Matched: return "matched";
+    case BottomKind::Lambert: return "lambert:" + format_number(bottom.lambert_albedo);
+  }
+  return "air";
+}
+
+}  // namespace skinlayer

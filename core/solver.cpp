@@ -1,0 +1,421 @@
+#include "core/solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/boundary_solve.h"
+#include "core/conventions.h"
+#include "core/henyey_greenstein.h"
+#include "core/interface_albedo.h"
+#include "core/interface_operators.h"
+#include "core/microfacet.h"
+#include "core/quadrature.h"
+#include "core/slab_eigen.h"
+
+namespace skinlayer {
+namespace {
+
+// Omega = 1 makes mode 0's eigen-reduction singular (a double eigenvalue k = 0). Solving at Omega = 1 - 1e-9 keeps
+// it positive definite; the energy this absorbs is ~1e-9 per unit optical path (about 1e-4 of the albedo of a
+// conservative semi-infinite layer, whose mean path length diverges).
+constexpr double kMaxSolvedAlbedo = 1.0 - 1e-9;
+// Exterior cosines are kept off 0 (grazing) so that 1/mu stays finite; the tables' theta = 90 deg row is the limit.
+constexpr double kMinCosine = 1e-6;
+constexpr int kDefaultTableSize = 64;
+
+enum class Base { Rough, Open, Lambert };
+
+struct Geometry {
+  bool top_open;  // eta = 1: no top interface, the incident beam enters unscattered
+  Base base;
+  RoughDielectric top;
+  RoughDielectric bottom;
+  bool bottom_mirrors_top;  // bottom interface is the top one mirrored: R23 = R21 and T23 = T21
+};
+
+Geometry classify(const Material& material) {
+  Geometry geometry{};
+  geometry.top_open = material.eta == 1.0;
+  geometry.top = {material.eta, material.sigma};
+  switch (material.bottom.kind) {
+    case BottomKind::Air:
+      geometry.base = material.bottom_eta() == 1.0 ? Base::Open : Base::Rough;
+      break;
+    case BottomKind::Matched: geometry.base = Base::Open; break;
+    case BottomKind::Lambert: geometry.base = Base::Lambert; break;
+  }
+  geometry.bottom = {1.0 / material.bottom_eta(), material.bottom_sigma()};
+  geometry.bottom_mirrors_top =
+      geometry.base == Base::Rough && material.bottom_eta() == material.eta && material.bottom_sigma() == material.sigma;
+  return geometry;
+}
+
+std::vector<double> negated(std::span<const double> values) {
+  std::vector<double> result(values.begin(), values.end());
+  for (double& v : result) v = -v;
+  return result;
+}
+
+Eigen::VectorXd attenuation(std::span<const double> mu0, double tau) {  // e^{-tau/mu0}
+  Eigen::VectorXd result(static_cast<Eigen::Index>(mu0.size()));
+  for (std::size_t k = 0; k < mu0.size(); ++k) result(static_cast<Eigen::Index>(k)) = std::exp(-tau / mu0[k]);
+  return result;
+}
+
+// All Fourier-projected ingredients shared by the modes of one solve, and the per-mode solve itself.
+class LayerSolver {
+ public:
+  LayerSolver(const Material& material, const Resolution& resolution, std::span<const double> mu_in,
+              std::span<const double> mu_out);
+
+  struct ModeResult {
+    Eigen::MatrixXd reflection;    // K_out x K_in, graphics azimuth convention, 1/sr
+    Eigen::MatrixXd transmission;  // K_out x K_in
+    NodeField field;
+  };
+  ModeResult solve_mode(int m) const;
+
+  const QuadratureRule& quadrature() const { return quadrature_; }
+  const Geometry& geometry() const { return geometry_; }
+  double tau() const { return tau_; }
+
+ private:
+  Eigen::MatrixXd lambert_reflection() const;
+
+  Geometry geometry_;
+  double tau_;
+  double albedo_;
+  double lambert_;
+  bool conservative_;  // Omega = 1
+  QuadratureRule quadrature_;
+  std::vector<double> mu_in_, mu_out_;
+  Eigen::VectorXd beam_attenuation_;  // e^{-tau/mu0} per incident direction
+  Eigen::VectorXd beam_flux_;         // F = 1/mu0 (so that E_perp mu0 = 1: values are BSDFs)
+  bool want_exit_;
+  PhaseMatrices phase_;
+  FourierKernel r_top_, t_source_, t_exit_, t_source_exterior_, r_top_rows_;
+  FourierKernel r_bottom_, t_bottom_exit_, s_bottom_beam_, t_bottom_beam_, r_bottom_rows_, r_bottom_beam_rows_;
+  FourierKernel beam_up_nodes_, beam_down_nodes_, same_rows_, opposite_rows_, beam_rows_up_, beam_rows_down_;
+};
+
+LayerSolver::LayerSolver(const Material& material, const Resolution& resolution, std::span<const double> mu_in,
+                         std::span<const double> mu_out)
+    : geometry_(classify(material)),
+      tau_(material.tau),
+      albedo_(std::min(material.albedo, kMaxSolvedAlbedo)),
+      lambert_(material.bottom.lambert_albedo),
+      conservative_(material.albedo == 1.0),
+      quadrature_(double_gauss_half_range(resolution.ordinates)),
+      mu_in_(mu_in.begin(), mu_in.end()),
+      mu_out_(mu_out.begin(), mu_out.end()),
+      want_exit_(!mu_out.empty()) {
+  for (double& mu : mu_in_) mu = std::max(mu, kMinCosine);
+  for (double& mu : mu_out_) mu = std::max(mu, kMinCosine);
+  beam_attenuation_ = attenuation(mu_in_, tau_);
+  beam_flux_ = Eigen::Map<const Eigen::VectorXd>(mu_in_.data(), static_cast<Eigen::Index>(mu_in_.size())).cwiseInverse();
+
+  const CosineProjector surface(resolution.max_modes, resolution.interface_azimuths);
+  const CosineProjector phase(resolution.max_modes, resolution.phase_azimuths);
+  const std::span<const double> up = quadrature_.nodes;
+  const std::span<const double> weights = quadrature_.weights;
+  const std::vector<double> down = negated(up);
+  const std::vector<double> down_in = negated(mu_in_);
+  const std::vector<double> down_out = negated(mu_out_);
+  const bool exterior_scattering = want_exit_ && (geometry_.top_open || geometry_.base == Base::Open);
+
+  phase_ = henyey_greenstein_matrices(material.g, up, weights, phase);
+  if (!geometry_.top_open) {
+    r_top_ = interface_fourier(geometry_.top, up, down, surface);
+    apply_quadrature_weights(r_top_, up, weights);
+    t_source_ = interface_fourier(geometry_.top, down_in, down, surface);
+    if (want_exit_) {
+      t_exit_ = interface_fourier(geometry_.top, up, mu_out_, surface);
+      apply_quadrature_weights(t_exit_, up, weights);
+      if (geometry_.base == Base::Open) {
+        t_source_exterior_ = interface_fourier(geometry_.top, down_in, down_out, surface);
+        r_top_rows_ = interface_fourier(geometry_.top, up, down_out, surface);
+        apply_quadrature_weights(r_top_rows_, up, weights);
+      }
+    }
+  } else {
+    beam_up_nodes_ = henyey_greenstein_fourier(material.g, down_in, up, phase);
+    beam_down_nodes_ = henyey_greenstein_fourier(material.g, down_in, down, phase);
+    if (exterior_scattering) {
+      beam_rows_up_ = henyey_greenstein_fourier(material.g, down_in, mu_out_, phase);
+      beam_rows_down_ = henyey_greenstein_fourier(material.g, down_in, down_out, phase);
+    }
+  }
+  if (exterior_scattering) {
+    same_rows_ = henyey_greenstein_fourier(material.g, up, mu_out_, phase);
+    opposite_rows_ = henyey_greenstein_fourier(material.g, down, mu_out_, phase);
+  }
+  if (geometry_.base == Base::Rough) {
+    if (geometry_.bottom_mirrors_top && !geometry_.top_open) {
+      r_bottom_ = r_top_;
+      t_bottom_exit_ = t_exit_;
+    } else {
+      r_bottom_ = interface_fourier(geometry_.bottom, down, up, surface);
+      apply_quadrature_weights(r_bottom_, up, weights);
+      if (want_exit_) {
+        t_bottom_exit_ = interface_fourier(geometry_.bottom, down, down_out, surface);
+        apply_quadrature_weights(t_bottom_exit_, up, weights);
+      }
+    }
+    if (geometry_.top_open) {
+      s_bottom_beam_ = interface_fourier(geometry_.bottom, down_in, up, surface);
+      if (want_exit_) {
+        t_bottom_beam_ = interface_fourier(geometry_.bottom, down_in, down_out, surface);
+        r_bottom_rows_ = interface_fourier(geometry_.bottom, down, mu_out_, surface);
+        apply_quadrature_weights(r_bottom_rows_, up, weights);
+        r_bottom_beam_rows_ = interface_fourier(geometry_.bottom, down_in, mu_out_, surface);
+      }
+    }
+  }
+}
+
+// Lambertian base, f = A/pi, mode 0 only: R(o, j) = c_0 (A/pi) mu_j a_j = 2 A mu_j a_j.
+Eigen::MatrixXd LayerSolver::lambert_reflection() const {
+  const Eigen::Index n = quadrature_.size();
+  Eigen::RowVectorXd row(n);
+  for (Eigen::Index j = 0; j < n; ++j) row(j) = 2.0 * lambert_ * quadrature_.nodes[j] * quadrature_.weights[j];
+  return row.replicate(n, 1);
+}
+
+LayerSolver::ModeResult LayerSolver::solve_mode(int m) const {
+  const std::span<const double> nodes = quadrature_.nodes;
+  const std::span<const double> weights = quadrature_.weights;
+  const Eigen::Index n = quadrature_.size();
+  const Eigen::Index count_in = static_cast<Eigen::Index>(mu_in_.size());
+  const Eigen::Index count_out = static_cast<Eigen::Index>(mu_out_.size());
+  const double scattering = albedo_ * fourier_azimuth_weight(m);
+  SlabEigenSolution eigen = slab_eigen(nodes, weights, phase_.same[m], phase_.opposite[m], scattering);
+  if (m == 0 && conservative_ && std::isinf(tau_)) {
+    // Conservative scattering in a semi-infinite slab: the slowest mode of the clamped albedo tends to the exact
+    // bounded solution k = 0, u = constant (exact on the quadrature, since mode 0's phase matrix conserves energy).
+    eigen.k(0) = 0.0;
+    eigen.g_up.col(0).setOnes();
+    eigen.g_down.col(0).setOnes();
+  }
+  const bool lambert_mode = geometry_.base == Base::Lambert && m == 0;
+  const bool infinite = std::isinf(tau_);
+
+  BoundaryProblem problem;
+  problem.eigen = &eigen;
+  problem.tau = tau_;
+  if (!geometry_.top_open) {
+    problem.reflect_top = r_top_[m];
+    problem.source_top = t_source_[m];
+  }
+  if (geometry_.base == Base::Rough) {
+    problem.reflect_bottom = r_bottom_[m];
+    if (geometry_.top_open) problem.source_bottom = s_bottom_beam_[m] * beam_attenuation_.asDiagonal();
+  } else if (lambert_mode) {
+    problem.reflect_bottom = lambert_reflection();
+    if (geometry_.top_open) {
+      problem.source_bottom = (lambert_ * kInvPi) * beam_attenuation_.transpose().replicate(n, 1);
+    }
+  }
+  BeamParticular beam;
+  if (geometry_.top_open) {
+    Eigen::MatrixXd source_up = albedo_ * beam_up_nodes_[m] * beam_flux_.asDiagonal();
+    Eigen::MatrixXd source_down = albedo_ * beam_down_nodes_[m] * beam_flux_.asDiagonal();
+    if (m == 0) {
+      // Scale the beam's first-scattering source so that the quadrature scatters exactly the energy it removes:
+      // c_0 sum_j a_j (p^0(mu_j, -mu0) + p^0(-mu_j, -mu0)) = 1, as mode 0's phase matrix does between nodes.
+      const Eigen::Map<const Eigen::VectorXd> a(weights.data(), n);
+      for (Eigen::Index k = 0; k < count_in; ++k) {
+        const double scattered =
+            fourier_azimuth_weight(0) * a.dot(beam_up_nodes_[0].col(k) + beam_down_nodes_[0].col(k));
+        source_up.col(k) /= scattered;
+        source_down.col(k) /= scattered;
+      }
+    }
+    beam = beam_particular_solution(nodes, weights, phase_.same[m], phase_.opposite[m], scattering, source_up,
+                                    source_down, mu_in_);
+    problem.beam = &beam;
+  }
+
+  ModeResult result;
+  result.field = solve_boundary(problem, static_cast<int>(count_in));
+  const NodeField& field = result.field;
+  if (!want_exit_) return result;
+
+  ExitScattering exit{mu_out_, {}, {}, {}};
+  if (!same_rows_.empty()) {
+    const Eigen::Map<const Eigen::VectorXd> a(weights.data(), n);
+    exit.same_row = scattering * same_rows_[m] * a.asDiagonal();
+    exit.opposite_row = scattering * opposite_rows_[m] * a.asDiagonal();
+  }
+
+  // Out through the top.
+  if (!geometry_.top_open) {
+    result.reflection = t_exit_[m] * field.up_top;
+  } else {
+    Eigen::MatrixXd upward_at_bottom;
+    if (!infinite && geometry_.base == Base::Rough) {
+      upward_at_bottom = r_bottom_rows_[m] * field.down_bottom + r_bottom_beam_rows_[m] * beam_attenuation_.asDiagonal();
+    } else if (!infinite && lambert_mode) {
+      Eigen::RowVectorXd flux(count_in);  // diffuse plus direct flux reaching the base
+      for (Eigen::Index k = 0; k < count_in; ++k) {
+        double diffuse = 0.0;
+        for (Eigen::Index j = 0; j < n; ++j) diffuse += 2.0 * kPi * nodes[j] * weights[j] * field.down_bottom(j, k);
+        flux(k) = diffuse + beam_attenuation_(k);
+      }
+      upward_at_bottom = (lambert_ * kInvPi) * flux.replicate(count_out, 1);
+    }
+    exit.beam_row = albedo_ * beam_rows_up_[m] * beam_flux_.asDiagonal();
+    result.reflection = upward_radiance_at_top(problem, field, exit, upward_at_bottom);
+  }
+
+  // Out through the bottom.
+  if (infinite || geometry_.base == Base::Lambert) {
+    result.transmission = Eigen::MatrixXd::Zero(count_out, count_in);
+  } else if (geometry_.base == Base::Rough) {
+    result.transmission = t_bottom_exit_[m] * field.down_bottom;
+    if (geometry_.top_open) result.transmission += t_bottom_beam_[m] * beam_attenuation_.asDiagonal();
+  } else {
+    Eigen::MatrixXd downward_at_top;
+    if (!geometry_.top_open) {
+      downward_at_top = t_source_exterior_[m] + r_top_rows_[m] * field.up_top;
+    } else {
+      exit.beam_row = albedo_ * beam_rows_down_[m] * beam_flux_.asDiagonal();
+    }
+    if (!geometry_.top_open) exit.beam_row.resize(0, 0);
+    result.transmission = downward_radiance_at_bottom(problem, field, exit, downward_at_top);
+  }
+  const double parity = azimuth_parity(m);
+  result.reflection *= parity;
+  result.transmission *= parity;
+  return result;
+}
+
+int ceil_to_int(double x) { return static_cast<int>(std::ceil(x)); }
+
+}  // namespace
+
+Resolution choose_resolution(const Material& material, const SolveOptions& options) {
+  validate(material);
+  const Geometry geometry = classify(material);
+  const double forwardness = 1.0 - std::abs(material.g);
+  const double sigma_min =
+      std::min(geometry.top_open ? 1.0 : material.sigma, geometry.base == Base::Rough ? material.bottom_sigma() : 1.0);
+  Resolution resolution{};
+  if (material.ordinates) {
+    resolution.ordinates = *material.ordinates;
+  } else {
+    // N >= 6/sigma for the interfaces (model-spec §4.1) and half of layerlab's full-sphere HG heuristic
+    // 8.6/(1-g) - 0.2; at least 16, at most 64.
+    const int from_phase = ceil_to_int(0.5 * (8.6 / forwardness - 0.2));
+    const int from_surface = ceil_to_int(6.0 / sigma_min);
+    resolution.ordinates = std::clamp(std::max({16, from_phase, from_surface}), 16, 64);
+  }
+  resolution.max_modes = options.max_modes > 0
+                             ? options.max_modes
+                             : std::clamp(std::max({16, ceil_to_int(5.4 / forwardness) + 8, ceil_to_int(4.0 / sigma_min)}),
+                                          16, 128);
+  resolution.table_size = options.table_size > 0 ? options.table_size : kDefaultTableSize;
+  resolution.interface_azimuths = std::max(2 * resolution.max_modes + 1, ceil_to_int(24.0 / sigma_min) + 1);
+  resolution.phase_azimuths = std::max(2 * resolution.max_modes + 1, ceil_to_int(30.0 / forwardness) + 1);
+  return resolution;
+}
+
+LayerTables solve(const Material& material, const SolveOptions& options) {
+  const Resolution resolution = choose_resolution(material, options);
+  const int k = resolution.table_size;
+  if (k < 4) throw ParameterError("table_size = " + std::to_string(k) + " is out of range; it must be at least 4");
+  std::vector<double> grid(k);
+  for (int i = 0; i < k; ++i) grid[i] = std::cos(0.5 * kPi * i / (k - 1));
+  const LayerSolver solver(material, resolution, grid, grid);
+
+  const std::size_t plane = static_cast<std::size_t>(k) * k;
+  std::vector<double> reflection, transmission;
+  reflection.reserve(plane * resolution.max_modes);
+  transmission.reserve(plane * resolution.max_modes);
+  double peak_reflection = 0.0, peak_transmission = 0.0;
+  int quiet_modes = 0;
+  int modes = 0;
+  for (int m = 0; m < resolution.max_modes && quiet_modes < 2; ++m) {
+    const LayerSolver::ModeResult mode = solver.solve_mode(m);
+    for (int i = 0; i < k; ++i) {
+      for (int o = 0; o < k; ++o) {
+        reflection.push_back(mode.reflection(o, i));
+        transmission.push_back(mode.transmission(o, i));
+      }
+    }
+    const double r = mode.reflection.cwiseAbs().maxCoeff();
+    const double t = mode.transmission.cwiseAbs().maxCoeff();
+    if (!std::isfinite(r) || !std::isfinite(t)) {
+      throw std::runtime_error("solve: Fourier mode " + std::to_string(m) + " is not finite");
+    }
+    if (m == 0) {
+      peak_reflection = r;
+      peak_transmission = t;
+    }
+    const bool quiet = r <= options.fourier_tolerance * peak_reflection && t <= options.fourier_tolerance * peak_transmission;
+    quiet_modes = quiet ? quiet_modes + 1 : 0;
+    modes = m + 1;
+  }
+  return LayerTables(k, modes, std::move(reflection), std::move(transmission));
+}
+
+double brdf_surface(const Material& material, double theta_i, double theta_o, double phi) {
+  const Vec3 wi = direction_from_angles(theta_i, 0.0);
+  const Vec3 wo = direction_from_angles(theta_o, phi);
+  return microfacet_brdf({material.eta, material.sigma}, wi, wo);
+}
+
+std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std::span<const double> theta_i,
+                                                  const SolveOptions& options) {
+  const Resolution resolution = choose_resolution(material, options);
+  std::vector<double> mu0(theta_i.size());
+  for (std::size_t k = 0; k < theta_i.size(); ++k) mu0[k] = std::cos(theta_i[k]);
+  const LayerSolver solver(material, resolution, mu0, {});
+  const LayerSolver::ModeResult mode = solver.solve_mode(0);
+  const Geometry& geometry = solver.geometry();
+  const QuadratureRule& q = solver.quadrature();
+
+  // Energy transmittance of each interface from inside, per node: light travelling up (top) or down (bottom).
+  std::vector<double> top_exit(q.size(), 1.0), bottom_exit(q.size(), 1.0);
+  for (int j = 0; j < q.size(); ++j) {
+    const double mu = q.nodes[j];
+    const double sin_theta = std::sqrt(1.0 - mu * mu);
+    if (!geometry.top_open) top_exit[j] = interface_albedo(geometry.top, Vec3(sin_theta, 0.0, -mu)).transmittance;
+    if (geometry.base == Base::Rough) {
+      bottom_exit[j] = interface_albedo(geometry.bottom, Vec3(sin_theta, 0.0, mu)).transmittance;
+    }
+  }
+  const bool direct_path = geometry.top_open && !std::isinf(material.tau);
+  std::vector<DirectionalAlbedo> rows;
+  for (std::size_t k = 0; k < theta_i.size(); ++k) {
+    const Eigen::Index col = static_cast<Eigen::Index>(k);
+    const Vec3 wi = direction_from_angles(theta_i[k], 0.0);
+    DirectionalAlbedo row{};
+    row.theta_i = theta_i[k];
+    row.reflectance_surface = interface_albedo(geometry.top, wi).reflectance;
+    double up = 0.0, down = 0.0;
+    for (int j = 0; j < q.size(); ++j) {
+      const double flux_weight = 2.0 * kPi * q.nodes[j] * q.weights[j];
+      up += flux_weight * mode.field.up_top(j, col) * top_exit[j];
+      down += flux_weight * mode.field.down_bottom(j, col) * bottom_exit[j];
+    }
+    row.reflectance_subsurface = up;
+    const double direct = direct_path ? std::exp(-material.tau / std::max(mu0[k], kMinCosine)) : 0.0;
+    switch (geometry.base) {
+      case Base::Lambert: row.transmittance = 0.0; break;
+      case Base::Open: row.transmittance = down + direct; break;
+      case Base::Rough: {
+        const double sin0 = std::sqrt(std::max(0.0, 1.0 - mu0[k] * mu0[k]));
+        const double beam_exit = direct > 0.0 ? interface_albedo(geometry.bottom, Vec3(sin0, 0.0, mu0[k])).transmittance : 0.0;
+        row.transmittance = down + direct * beam_exit;
+        break;
+      }
+    }
+    if (std::isinf(material.tau)) row.transmittance = 0.0;
+    row.absorptance = 1.0 - row.reflectance() - row.transmittance;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace skinlayer

@@ -1,0 +1,51 @@
+// The one entry point of the subsurface solver: material parameters to tables, and directional albedos.
+//
+// Method (Stam 2001, with the choices of ../shared/docs/model-spec.md): Fourier series in azimuth, double-Gauss
+// discrete ordinates in polar angle, one half-size symmetric eigen-decomposition per Fourier mode, one boundary
+// linear system per mode solved for every incident direction at once, then out through the top (and bottom)
+// interface, tabulated on a polar-angle grid and splined.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/layer_tables.h"
+#include "core/material.h"
+
+namespace skinlayer {
+
+struct SolveOptions {
+  int table_size = 0;                // polar grid points on [0, pi/2] for the tables; 0 = default
+  double fourier_tolerance = 1e-4;   // stop when two successive modes are below this fraction of mode 0's peak
+  int max_modes = 0;                 // hard cap on Fourier modes; 0 = automatic
+};
+
+// The discretization a solve uses, chosen from the material (and its ordinates override).
+struct Resolution {
+  int ordinates;          // N, discrete ordinates per hemisphere
+  int max_modes;          // cap on Fourier modes
+  int table_size;         // K, polar grid size of the tables
+  int interface_azimuths; // azimuth samples on [0, pi] for projecting interface BSDFs
+  int phase_azimuths;     // azimuth samples on [0, pi] for projecting the phase function
+};
+Resolution choose_resolution(const Material& material, const SolveOptions& options = {});
+
+// Solves the layer. Throws ParameterError for an invalid material.
+LayerTables solve(const Material& material, const SolveOptions& options = {});
+
+// The surface term: the top interface's rough-dielectric BRDF (Fresnel x Beckmann x Smith), in 1/sr.
+double brdf_surface(const Material& material, double theta_i, double theta_o, double phi);
+
+// Directional-hemispherical energy fractions for light incident at theta_i (radians).
+struct DirectionalAlbedo {
+  double theta_i;
+  double reflectance_surface;     // reflected by the top interface
+  double reflectance_subsurface;  // entered, scattered, left through the top
+  double transmittance;           // left through the bottom (including any unscattered beam)
+  double absorptance;             // 1 - reflectance - transmittance: medium, base, and shadowing losses
+  double reflectance() const { return reflectance_surface + reflectance_subsurface; }
+};
+std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std::span<const double> theta_i,
+                                                  const SolveOptions& options = {});
+
+}  // namespace skinlayer
