@@ -7,12 +7,15 @@
 
 namespace skinlayer {
 
-CosineProjector::CosineProjector(int modes, int samples) : weights_(modes, samples) {
+CosineProjector::CosineProjector(int modes, int samples)
+    : weights_(modes, samples), cos_(samples), sin_(samples) {
   if (modes < 1 || samples < 2) throw std::invalid_argument("CosineProjector: need modes >= 1 and samples >= 2");
   const double step = kPi / (samples - 1);
   for (int k = 0; k < samples; ++k) {
     const double trapezoid = (k == 0 || k == samples - 1) ? 0.5 * step : step;
     const double phi = k * step;
+    cos_[k] = std::cos(phi);
+    sin_[k] = std::sin(phi);
     for (int m = 0; m < modes; ++m) {
       const double scale = (m == 0 ? 1.0 : 2.0) / kPi;
       weights_(m, k) = scale * trapezoid * std::cos(m * phi);

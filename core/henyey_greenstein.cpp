@@ -15,8 +15,10 @@ double henyey_greenstein(double cos_theta, double g) {
 FourierKernel henyey_greenstein_fourier(double g, std::span<const double> mu_from, std::span<const double> mu_to,
                                         const CosineProjector& projector) {
   // kernel(wi, wo) with wi = -d_from and wo = d_to: cos Theta = d_from . d_to = -wi . wo.
-  const auto kernel = [g](const Vec3& wi, const Vec3& wo) { return henyey_greenstein(-wi.dot(wo), g); };
-  return project_propagation_kernel(kernel, mu_from, mu_to, projector);
+  const auto kernel_for_pair = [g](const Vec3& wi, double) {
+    return [g, wi](const Vec3& wo) { return henyey_greenstein(-wi.dot(wo), g); };
+  };
+  return project_propagation_kernel(kernel_for_pair, mu_from, mu_to, projector);
 }
 
 PhaseMatrices henyey_greenstein_matrices(double g, std::span<const double> nodes, std::span<const double> weights,

@@ -33,7 +33,7 @@ double LayerTables::grid_spacing() const { return 0.5 * kPi / (grid_size_ - 1); 
 
 // Tensor-product Catmull-Rom in (theta_i, theta_o). Beyond theta = 0 the table continues by the exact symmetry
 // S_m(-theta) = (-1)^m S_m(theta) (a direction at -theta is the one at theta with phi + pi); beyond pi/2 it is
-// extended linearly.
+// extended by the quadratic through the last three samples.
 double LayerTables::interpolate(std::span<const double> table, int m, double theta_i, double theta_o) const {
   const int k = grid_size_;
   const double h = grid_spacing();
@@ -50,9 +50,10 @@ double LayerTables::interpolate(std::span<const double> table, int m, double the
       index[0] = 1;
       sign[0] = parity;
     }
-    if (index[3] > k - 1) {  // linear extension f(k) = 2 f(k-1) - f(k-2), folded onto index[2] and index[1]
-      weight[2] += 2.0 * weight[3];
-      weight[1] -= weight[3];
+    if (index[3] > k - 1) {  // quadratic extension f(k) = 3 f(k-1) - 3 f(k-2) + f(k-3), folded onto the others
+      weight[2] += 3.0 * weight[3];
+      weight[1] -= 3.0 * weight[3];
+      weight[0] += weight[3];
       weight[3] = 0.0;
       index[3] = k - 1;
     }

@@ -8,11 +8,9 @@
 namespace skinlayer {
 namespace {
 
-// Smith G1 of a direction w with respect to the microfacet h: zero if w sees the back of h.
-double masking(const Vec3& w, const Vec3& h, double sigma) {
-  if (w.dot(h) * w.z() <= 0.0) return 0.0;
-  return smith_g1_beckmann(w.z(), sigma);
-}
+// Smith G1 of a direction w with respect to the microfacet h, given G1(w) for the macro surface: zero if w sees
+// the back of h.
+double masking(const Vec3& w, const Vec3& h, double g1) { return w.dot(h) * w.z() <= 0.0 ? 0.0 : g1; }
 
 }  // namespace
 
@@ -36,6 +34,11 @@ double smith_g1_beckmann(double cos_theta, double sigma) {
 }
 
 double microfacet_brdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo) {
+  return microfacet_brdf(interface, wi, wo, smith_g1_beckmann(wi.z(), interface.sigma),
+                         smith_g1_beckmann(wo.z(), interface.sigma));
+}
+
+double microfacet_brdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo, double g1_wi, double g1_wo) {
   if (wi.z() * wo.z() <= 0.0) return 0.0;
   if (interface.eta == 1.0) return 0.0;  // F = 0 exactly: no interface
   Vec3 h = wi + wo;
@@ -45,13 +48,18 @@ double microfacet_brdf(const RoughDielectric& interface, const Vec3& wi, const V
   if (h.z() < 0.0) h = -h;
   const double eta_rel = wi.z() > 0.0 ? interface.eta : 1.0 / interface.eta;
   const double c = std::abs(wi.dot(h));
-  const double g = masking(wi, h, interface.sigma) * masking(wo, h, interface.sigma);
+  const double g = masking(wi, h, g1_wi) * masking(wo, h, g1_wo);
   if (g == 0.0) return 0.0;
   return fresnel_dielectric(c, eta_rel) * beckmann_ndf(h.z(), interface.sigma) * g /
          (4.0 * std::abs(wi.z()) * std::abs(wo.z()));
 }
 
 double microfacet_btdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo) {
+  return microfacet_btdf(interface, wi, wo, smith_g1_beckmann(wi.z(), interface.sigma),
+                         smith_g1_beckmann(wo.z(), interface.sigma));
+}
+
+double microfacet_btdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo, double g1_wi, double g1_wo) {
   if (wi.z() * wo.z() >= 0.0) return 0.0;
   if (interface.eta == 1.0) return 0.0;
   const double eta_t = wi.z() > 0.0 ? interface.eta : 1.0 / interface.eta;
@@ -60,7 +68,7 @@ double microfacet_btdf(const RoughDielectric& interface, const Vec3& wi, const V
   if (h.z() < 0.0) h = -h;
   const double i_h = wi.dot(h);
   const double o_h = wo.dot(h);
-  const double g = masking(wi, h, interface.sigma) * masking(wo, h, interface.sigma);
+  const double g = masking(wi, h, g1_wi) * masking(wo, h, g1_wo);
   if (g == 0.0) return 0.0;
   const double fresnel = fresnel_dielectric(i_h, eta_t);
   if (fresnel >= 1.0) return 0.0;
@@ -70,7 +78,14 @@ double microfacet_btdf(const RoughDielectric& interface, const Vec3& wi, const V
 }
 
 double rough_dielectric_bsdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo) {
-  return wi.z() * wo.z() > 0.0 ? microfacet_brdf(interface, wi, wo) : microfacet_btdf(interface, wi, wo);
+  return rough_dielectric_bsdf(interface, wi, wo, smith_g1_beckmann(wi.z(), interface.sigma),
+                               smith_g1_beckmann(wo.z(), interface.sigma));
+}
+
+double rough_dielectric_bsdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo, double g1_wi,
+                             double g1_wo) {
+  return wi.z() * wo.z() > 0.0 ? microfacet_brdf(interface, wi, wo, g1_wi, g1_wo)
+                               : microfacet_btdf(interface, wi, wo, g1_wi, g1_wo);
 }
 
 Vec3 direction_from_angles(double theta, double phi) {

@@ -44,6 +44,13 @@ double microfacet_btdf(const RoughDielectric& interface, const Vec3& wi, const V
 // microfacet_brdf + microfacet_btdf: the full BSDF of the interface for any pair of directions.
 double rough_dielectric_bsdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo);
 
+// The same three functions with the macro-surface Smith factors g1_wi = G1(wi) and g1_wo = G1(wo) supplied: they
+// depend only on the directions' polar angles, so a caller sweeping azimuth computes them once.
+double microfacet_brdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo, double g1_wi, double g1_wo);
+double microfacet_btdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo, double g1_wi, double g1_wo);
+double rough_dielectric_bsdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo, double g1_wi,
+                             double g1_wo);
+
 // A unit direction from polar angle theta (from +z) and azimuth phi, radians.
 Vec3 direction_from_angles(double theta, double phi);
 

@@ -63,6 +63,15 @@ Eigen::VectorXd attenuation(std::span<const double> mu0, double tau) {  // e^{-t
   return result;
 }
 
+// Generalized reciprocity of the radiance BTDF (Walter et al. 2007): f_t12(a -> b) / n2^2 = f_t21(b -> a) / n1^2.
+// The reversed pair of propagation directions has the same azimuth difference, so the coefficients of the exit
+// kernel (layer -> air, mu_j up to mu_o up) are those of the source kernel (air -> layer, -mu_o to -mu_j) / eta^2.
+FourierKernel transmission_by_reciprocity(const FourierKernel& air_to_layer, double eta) {
+  FourierKernel layer_to_air(air_to_layer.size());
+  for (std::size_t m = 0; m < air_to_layer.size(); ++m) layer_to_air[m] = air_to_layer[m].transpose() / (eta * eta);
+  return layer_to_air;
+}
+
 // All Fourier-projected ingredients shared by the modes of one solve, and the per-mode solve itself.
 class LayerSolver {
  public:
@@ -130,7 +139,8 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
     apply_quadrature_weights(r_top_, up, weights);
     t_source_ = interface_fourier(geometry_.top, down_in, down, surface);
     if (want_exit_) {
-      t_exit_ = interface_fourier(geometry_.top, up, mu_out_, surface);
+      t_exit_ = mu_out_ == mu_in_ ? transmission_by_reciprocity(t_source_, material.eta)
+                                  : interface_fourier(geometry_.top, up, mu_out_, surface);
       apply_quadrature_weights(t_exit_, up, weights);
       if (geometry_.base == Base::Open) {
         t_source_exterior_ = interface_fourier(geometry_.top, down_in, down_out, surface);
@@ -308,7 +318,8 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
     // 8.6/(1-g) - 0.2; at least 16, at most 64.
     const int from_phase = ceil_to_int(0.5 * (8.6 / forwardness - 0.2));
     const int from_surface = ceil_to_int(6.0 / sigma_min);
-    resolution.ordinates = std::clamp(std::max({16, from_phase, from_surface}), 16, 64);
+    const int needed = std::max({16, from_phase, from_surface});
+    resolution.ordinates = std::clamp((needed + 3) / 4 * 4, 16, 64);  // a multiple of 4 at or above the need
   }
   resolution.max_modes = options.max_modes > 0
                              ? options.max_modes
@@ -376,14 +387,12 @@ std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std:
   const QuadratureRule& q = solver.quadrature();
 
   // Energy transmittance of each interface from inside, per node: light travelling up (top) or down (bottom).
-  std::vector<double> top_exit(q.size(), 1.0), bottom_exit(q.size(), 1.0);
+  std::vector<InterfaceAlbedo> top_inside(q.size(), {0.0, 1.0}), bottom_inside(q.size(), {0.0, 1.0});
   for (int j = 0; j < q.size(); ++j) {
     const double mu = q.nodes[j];
     const double sin_theta = std::sqrt(1.0 - mu * mu);
-    if (!geometry.top_open) top_exit[j] = interface_albedo(geometry.top, Vec3(sin_theta, 0.0, -mu)).transmittance;
-    if (geometry.base == Base::Rough) {
-      bottom_exit[j] = interface_albedo(geometry.bottom, Vec3(sin_theta, 0.0, mu)).transmittance;
-    }
+    if (!geometry.top_open) top_inside[j] = interface_albedo(geometry.top, Vec3(sin_theta, 0.0, -mu));
+    if (geometry.base == Base::Rough) bottom_inside[j] = interface_albedo(geometry.bottom, Vec3(sin_theta, 0.0, mu));
   }
   const bool direct_path = geometry.top_open && !std::isinf(material.tau);
   std::vector<DirectionalAlbedo> rows;
@@ -392,12 +401,18 @@ std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std:
     const Vec3 wi = direction_from_angles(theta_i[k], 0.0);
     DirectionalAlbedo row{};
     row.theta_i = theta_i[k];
-    row.reflectance_surface = interface_albedo(geometry.top, wi).reflectance;
+    const InterfaceAlbedo entry = interface_albedo(geometry.top, wi);
+    row.reflectance_surface = entry.reflectance;
+    row.interface_loss = entry.loss();
     double up = 0.0, down = 0.0;
     for (int j = 0; j < q.size(); ++j) {
       const double flux_weight = 2.0 * kPi * q.nodes[j] * q.weights[j];
-      up += flux_weight * mode.field.up_top(j, col) * top_exit[j];
-      down += flux_weight * mode.field.down_bottom(j, col) * bottom_exit[j];
+      const double up_flux = flux_weight * mode.field.up_top(j, col);
+      const double down_flux = flux_weight * mode.field.down_bottom(j, col);
+      up += up_flux * top_inside[j].transmittance;
+      down += down_flux * bottom_inside[j].transmittance;
+      row.interface_loss += up_flux * top_inside[j].loss();
+      if (geometry.base == Base::Rough) row.interface_loss += down_flux * bottom_inside[j].loss();
     }
     row.reflectance_subsurface = up;
     const double direct = direct_path ? std::exp(-material.tau / std::max(mu0[k], kMinCosine)) : 0.0;
@@ -406,8 +421,10 @@ std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std:
       case Base::Open: row.transmittance = down + direct; break;
       case Base::Rough: {
         const double sin0 = std::sqrt(std::max(0.0, 1.0 - mu0[k] * mu0[k]));
-        const double beam_exit = direct > 0.0 ? interface_albedo(geometry.bottom, Vec3(sin0, 0.0, mu0[k])).transmittance : 0.0;
-        row.transmittance = down + direct * beam_exit;
+        const InterfaceAlbedo beam_exit =
+            direct > 0.0 ? interface_albedo(geometry.bottom, Vec3(sin0, 0.0, mu0[k])) : InterfaceAlbedo{0.0, 0.0};
+        row.transmittance = down + direct * beam_exit.transmittance;
+        row.interface_loss += direct * (direct > 0.0 ? beam_exit.loss() : 0.0);
         break;
       }
     }

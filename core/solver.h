@@ -43,6 +43,7 @@ struct DirectionalAlbedo {
   double reflectance_subsurface;  // entered, scattered, left through the top
   double transmittance;           // left through the bottom (including any unscattered beam)
   double absorptance;             // 1 - reflectance - transmittance: medium, base, and shadowing losses
+  double interface_loss;          // the part of absorptance that Smith shadowing-masking removes at the interfaces
   double reflectance() const { return reflectance_surface + reflectance_subsurface; }
 };
 std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std::span<const double> theta_i,

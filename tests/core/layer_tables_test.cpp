@@ -1,0 +1,68 @@
+#include "core/layer_tables.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/conventions.h"
+#include "core/solver.h"
+
+namespace skinlayer {
+namespace {
+
+// A table holding f_m(theta_i, theta_o) = cos(theta_i)^2 cos(theta_o)^2 (1 + m) on every mode.
+LayerTables smooth_tables(int k, int modes) {
+  std::vector<double> values;
+  for (int m = 0; m < modes; ++m) {
+    for (int i = 0; i < k; ++i) {
+      for (int o = 0; o < k; ++o) {
+        const double ti = 0.5 * kPi * i / (k - 1), to = 0.5 * kPi * o / (k - 1);
+        values.push_back(std::pow(std::cos(ti) * std::cos(to), 2) * (1.0 + m));
+      }
+    }
+  }
+  return LayerTables(k, modes, values, values);
+}
+
+TEST(LayerTables, InterpolatesGridValuesExactlyAndSmoothFunctionsClosely) {
+  const LayerTables tables = smooth_tables(32, 1);
+  const double h = tables.grid_spacing();
+  EXPECT_NEAR(tables.reflection_mode(0, 3 * h, 7 * h), std::pow(std::cos(3 * h) * std::cos(7 * h), 2), 1e-15);
+  for (double ti = 0.0; ti <= 1.5707; ti += 0.0937) {
+    for (double to = 0.0; to <= 1.5707; to += 0.0611) {
+      EXPECT_NEAR(tables.reflection_mode(0, ti, to), std::pow(std::cos(ti) * std::cos(to), 2), 2e-5);
+    }
+  }
+}
+
+TEST(LayerTables, SumsModesWithCosines) {
+  const LayerTables tables = smooth_tables(16, 3);
+  const double expected = 1.0 * 1.0 + 2.0 * std::cos(0.7) + 3.0 * std::cos(1.4);  // at theta = 0 both
+  EXPECT_NEAR(tables.brdf_subsurface(0.0, 0.0, 0.7), expected, 1e-12);
+  EXPECT_THROW(LayerTables(16, 2, std::vector<double>(10), std::vector<double>(10)), std::invalid_argument);
+}
+
+// The spline between grid angles, checked against a solve on a grid twice as fine, whose nodes at odd degrees sit
+// halfway between the coarse grid's nodes.
+TEST(LayerTables, SplineBetweenGridAnglesMatchesAFinerSolve) {
+  const Material material;
+  SolveOptions coarse_options, fine_options;
+  coarse_options.table_size = 46;  // 2 degree spacing
+  fine_options.table_size = 91;    // 1 degree spacing
+  const LayerTables coarse = solve(material, coarse_options);
+  const LayerTables fine = solve(material, fine_options);
+  double worst = 0.0;
+  for (int ti = 1; ti < 89; ti += 6) {
+    for (int to = 1; to < 89; to += 4) {
+      for (double phi : {0.0, 90.0, 180.0}) {
+        const double a = coarse.brdf_subsurface(degrees_to_radians(ti), degrees_to_radians(to), degrees_to_radians(phi));
+        const double b = fine.brdf_subsurface(degrees_to_radians(ti), degrees_to_radians(to), degrees_to_radians(phi));
+        worst = std::max(worst, std::abs(a - b) / b);
+      }
+    }
+  }
+  EXPECT_LT(worst, 2e-3);
+}
+
+}  // namespace
+}  // namespace skinlayer

@@ -1,0 +1,118 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/conventions.h"
+#include "core/henyey_greenstein.h"
+#include "core/solver.h"
+#include "reference_csv.h"
+
+namespace skinlayer {
+namespace {
+
+Material index_matched_slab(double tau, double albedo, double g) {
+  Material m;
+  m.eta = 1.0;
+  m.bottom.kind = BottomKind::Matched;
+  m.tau = tau;
+  m.albedo = albedo;
+  m.g = g;
+  return m;
+}
+
+// Single scattering in a thin index-matched slab (Chandrasekhar 1960; Hanrahan & Krueger 1993, eq. 7 form):
+//   f_R = Omega p(cos Theta) (1 - e^{-tau (1/mu0 + 1/mu)}) / (mu0 + mu),
+//   f_T = Omega p(cos Theta) (e^{-tau/mu0} - e^{-tau/mu}) / (mu0 - mu)   (mu != mu0),
+// with Theta the scattering angle between the incident and outgoing directions of propagation.
+TEST(SolverLimits, SingleScatteringClosedFormForThinSlab) {
+  const double tau = 1e-5;  // double scattering is O(tau) relative: 1e-5 times a phase-function ratio <= 30
+  for (double g : {0.0, 0.5, 0.8}) {
+    const Material m = index_matched_slab(tau, 0.9, g);
+    const LayerTables tables = solve(m);
+    for (double ti_deg : {0.0, 30.0, 60.0}) {
+      for (double to_deg : {10.0, 45.0, 70.0}) {
+        for (double phi_deg : {0.0, 90.0, 180.0}) {
+          const double ti = degrees_to_radians(ti_deg), to = degrees_to_radians(to_deg), phi = degrees_to_radians(phi_deg);
+          const double mu0 = std::cos(ti), mu = std::cos(to);
+          const Vec3 travel_in = -direction_from_angles(ti, 0.0);
+          const Vec3 reflected = direction_from_angles(to, phi);
+          const Vec3 transmitted(std::sin(to) * std::cos(phi), std::sin(to) * std::sin(phi), -std::cos(to));
+          const double p_r = henyey_greenstein(travel_in.dot(reflected), g);
+          const double p_t = henyey_greenstein(travel_in.dot(transmitted), g);
+          const double f_r = 0.9 * p_r * -std::expm1(-tau * (1.0 / mu0 + 1.0 / mu)) / (mu0 + mu);
+          const double f_t = 0.9 * p_t * (std::exp(-tau / mu0) - std::exp(-tau / mu)) / (mu0 - mu);
+          EXPECT_NEAR(tables.brdf_subsurface(ti, to, phi), f_r, 3e-3 * f_r) << g << " " << ti_deg << " " << to_deg;
+          EXPECT_NEAR(tables.btdf(ti, to, phi), f_t, 3e-3 * f_t) << g << " " << ti_deg << " " << to_deg;
+        }
+      }
+    }
+  }
+}
+
+// Semi-infinite isotropic scatterer: Chandrasekhar's H-function gives the albedo 1 - H(mu0) sqrt(1 - omega) and the
+// BRDF omega H(mu) H(mu0) / (4 pi (mu + mu0)) (table in ../shared/reference).
+TEST(SolverLimits, SemiInfiniteIsotropicMatchesChandrasekharHFunction) {
+  const test::CsvTable table = test::read_reference("analytic_Hfunction_isotropic_semiinfinite.csv");
+  ASSERT_GT(table.rows.size(), 10u);
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const double omega = table.number(r, "omega");
+    const double theta_i = std::acos(table.number(r, "mu0"));
+    const double theta_o = std::acos(table.number(r, "mu"));
+    const Material m = index_matched_slab(INFINITY, omega, 0.0);
+    const LayerTables tables = solve(m);
+    const double f = table.number(r, "f_per_sr");
+    EXPECT_NEAR(tables.brdf_subsurface(theta_i, theta_o, 1.0), f, 1e-3 * f) << "row " << r;
+    const double albedo = directional_albedo(m, std::vector<double>{theta_i})[0].reflectance();
+    EXPECT_NEAR(albedo, table.number(r, "albedo_planar_mu0"), 1e-4) << "row " << r;
+  }
+}
+
+TEST(SolverLimits, NoMediumAndNoInterfaceGivesNothingBack) {
+  const Material m = index_matched_slab(0.0, 1.0, 0.8);
+  const LayerTables tables = solve(m);
+  for (double ti : {0.0, 0.5, 1.2}) {
+    for (double to : {0.0, 0.6, 1.4}) {
+      EXPECT_EQ(brdf_surface(m, ti, to, 1.0), 0.0);
+      EXPECT_NEAR(tables.brdf_subsurface(ti, to, 1.0), 0.0, 1e-14);
+      EXPECT_NEAR(tables.btdf(ti, to, 1.0), 0.0, 1e-14);
+    }
+  }
+  for (const DirectionalAlbedo& row : directional_albedo(m, std::vector<double>{0.0, 1.0, 1.5})) {
+    EXPECT_NEAR(row.reflectance(), 0.0, 1e-10);
+    EXPECT_NEAR(row.transmittance, 1.0, 1e-10);
+  }
+}
+
+TEST(SolverLimits, PureAbsorberTransmitsOnlyTheBeerLambertBeam) {
+  const Material m = index_matched_slab(0.7, 0.0, 0.5);
+  for (const DirectionalAlbedo& row : directional_albedo(m, std::vector<double>{0.0, 0.8, 1.3})) {
+    EXPECT_NEAR(row.reflectance(), 0.0, 1e-14);
+    EXPECT_NEAR(row.transmittance, std::exp(-0.7 / std::cos(row.theta_i)), 1e-14);
+  }
+}
+
+// The automatic resolution is converged: within 0.5% of a solve with 64 ordinates and a tight Fourier tolerance.
+TEST(SolverLimits, AutomaticResolutionIsConvergedForThePapersDefault) {
+  const Material automatic;
+  Material fine = automatic;
+  fine.ordinates = 64;
+  SolveOptions tight;
+  tight.fourier_tolerance = 1e-6;
+  const LayerTables a = solve(automatic);
+  const LayerTables b = solve(fine, tight);
+  for (double ti = 0.0; ti < 89.0; ti += 11.0) {
+    for (double to = 0.0; to < 89.0; to += 11.0) {
+      for (double phi : {0.0, 60.0, 120.0, 180.0}) {
+        const double x = degrees_to_radians(ti), y = degrees_to_radians(to), z = degrees_to_radians(phi);
+        const double fa = brdf_surface(automatic, x, y, z) + a.brdf_subsurface(x, y, z);
+        const double fb = brdf_surface(fine, x, y, z) + b.brdf_subsurface(x, y, z);
+        EXPECT_NEAR(fa, fb, 5e-3 * fb) << ti << " " << to << " " << phi;
+        EXPECT_NEAR(a.btdf(x, y, z), b.btdf(x, y, z), 5e-3 * b.btdf(x, y, z)) << ti << " " << to << " " << phi;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skinlayer
