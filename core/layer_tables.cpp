@@ -29,34 +29,33 @@ LayerTables::LayerTables(int grid_size, int modes, std::vector<double> reflectio
   }
 }
 
-double LayerTables::grid_spacing() const { return 0.5 * kPi / (grid_size_ - 1); }
+double LayerTables::grid_angle(int k, int grid_size) {
+  return 0.5 * kPi * std::sin(0.5 * kPi * k / (grid_size - 1));
+}
 
-// Tensor-product Catmull-Rom in (theta_i, theta_o). Beyond theta = 0 the table continues by the exact symmetry
-// S_m(-theta) = (-1)^m S_m(theta) (a direction at -theta is the one at theta with phi + pi); beyond pi/2 it is
-// extended by the quadratic through the last three samples.
+double LayerTables::grid_coordinate(double theta, int grid_size) {
+  const double s = std::clamp(theta / (0.5 * kPi), 0.0, 1.0);
+  return std::asin(s) / (0.5 * kPi) * (grid_size - 1);
+}
+
+// Tensor-product Catmull-Rom in the grid coordinates of (theta_i, theta_o), continued past both ends by the grid's
+// symmetries (see layer_tables.h).
 double LayerTables::interpolate(std::span<const double> table, int m, double theta_i, double theta_o) const {
   const int k = grid_size_;
-  const double h = grid_spacing();
   const double parity = azimuth_parity(m);
   const auto axis = [&](double theta, int index[4], double weight[4], double sign[4]) {
-    const double x = std::clamp(theta, 0.0, 0.5 * kPi) / h;
+    const double x = grid_coordinate(theta, k);
     const int cell = std::min(static_cast<int>(x), k - 2);
     catmull_rom_weights(x - cell, weight);
     for (int a = 0; a < 4; ++a) {
       index[a] = cell - 1 + a;
       sign[a] = 1.0;
     }
-    if (index[0] < 0) {
+    if (index[0] < 0) {  // x = -1 is theta_1 seen across the normal
       index[0] = 1;
       sign[0] = parity;
     }
-    if (index[3] > k - 1) {  // quadratic extension f(k) = 3 f(k-1) - 3 f(k-2) + f(k-3), folded onto the others
-      weight[2] += 3.0 * weight[3];
-      weight[1] -= 3.0 * weight[3];
-      weight[0] += weight[3];
-      weight[3] = 0.0;
-      index[3] = k - 1;
-    }
+    if (index[3] > k - 1) index[3] = k - 2;  // x = K is the same direction as x = K - 2
   };
   int ii[4], io[4];
   double wi[4], wo[4], si[4], so[4];

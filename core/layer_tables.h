@@ -5,7 +5,11 @@
 //   f_T  (theta_i, theta_o, phi) = sum_{m < M} B_m(theta_i, theta_o) cos(m phi)        [1/sr]
 //
 // Angles follow core/conventions.h (graphics convention; the (-1)^m parity is already folded into S_m and B_m).
-// Grid: theta_k = k * (pi/2) / (K - 1), k = 0..K-1, for both theta_i and theta_o.
+// Grid, the same for theta_i and theta_o: uniform in x in [0, 1] with theta = (pi/2) sin(pi x / 2), i.e.
+//   theta_k = (pi/2) sin((pi/2) k / (K - 1)),  k = 0..K-1,
+// nearly uniform in theta near the normal and ever finer toward grazing, where thin layers vary fastest
+// (e^{-tau/mu}). The map is odd about x = 0 and even about x = 1, so the spline continues exactly past both ends:
+// S_m(-theta) = (-1)^m S_m(theta), and x = 1 + d is the same direction as x = 1 - d.
 // Storage: coefficient (m, i, o) at index (m * K + i) * K + o.
 #pragma once
 
@@ -21,7 +25,10 @@ class LayerTables {
 
   int grid_size() const { return grid_size_; }
   int modes() const { return modes_; }
-  double grid_spacing() const;  // radians between grid angles
+
+  // theta_k of the grid above (radians), and its inverse: the continuous grid coordinate x (K - 1) of theta.
+  static double grid_angle(int k, int grid_size);
+  static double grid_coordinate(double theta, int grid_size);
 
   std::span<const double> reflection_coefficients() const { return reflection_; }
   std::span<const double> transmission_coefficients() const { return transmission_; }

@@ -22,7 +22,7 @@ namespace {
 constexpr double kMaxSolvedAlbedo = 1.0 - 1e-9;
 // Exterior cosines are kept off 0 (grazing) so that 1/mu stays finite; the tables' theta = 90 deg row is the limit.
 constexpr double kMinCosine = 1e-6;
-constexpr int kDefaultTableSize = 64;
+constexpr int kDefaultTableSize = 48;
 
 enum class Base { Rough, Open, Lambert };
 
@@ -336,7 +336,7 @@ LayerTables solve(const Material& material, const SolveOptions& options) {
   const int k = resolution.table_size;
   if (k < 4) throw ParameterError("table_size = " + std::to_string(k) + " is out of range; it must be at least 4");
   std::vector<double> grid(k);
-  for (int i = 0; i < k; ++i) grid[i] = std::cos(0.5 * kPi * i / (k - 1));
+  for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
   const LayerSolver solver(material, resolution, grid, grid);
 
   const std::size_t plane = static_cast<std::size_t>(k) * k;
