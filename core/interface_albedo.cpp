@@ -14,7 +14,10 @@ InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& w
   const double side = wi.z() > 0.0 ? 1.0 : -1.0;
   const double eta_t = side > 0.0 ? interface.eta : 1.0 / interface.eta;
   const QuadratureRule radial = gauss_legendre(radial_nodes, 0.0, 1.0);
-  const QuadratureRule azimuthal = gauss_legendre(azimuth_nodes, 0.0, 2.0 * kPi);
+  // wi lies in a plane containing the normal; the integrand is even in the slope azimuth about that plane, so
+  // integrate over [0, pi] and double.
+  const QuadratureRule azimuthal = gauss_legendre(azimuth_nodes, 0.0, kPi);
+  const double azimuth_of_wi = std::atan2(wi.y(), wi.x());
   const double sigma = interface.sigma;
   const double g1_in = smith_g1_beckmann(wi.z(), sigma);
   double reflectance = 0.0;
@@ -22,9 +25,9 @@ InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& w
   for (int a = 0; a < radial.size(); ++a) {
     const double r = sigma * std::sqrt(-std::log1p(-radial.nodes[a]));
     for (int b = 0; b < azimuthal.size(); ++b) {
-      const double weight = radial.weights[a] * azimuthal.weights[b] / (2.0 * kPi);
+      const double weight = radial.weights[a] * azimuthal.weights[b] / kPi;
       // Microfacet normal on wi's side: slopes (p, q) = r (cos psi, sin psi), h ~ (-p, -q, 1).
-      const double psi = azimuthal.nodes[b];
+      const double psi = azimuthal.nodes[b] + azimuth_of_wi;
       Vec3 h(-r * std::cos(psi), -r * std::sin(psi), 1.0);
       h.normalize();
       h *= side;

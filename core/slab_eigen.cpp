@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace skinlayer {
@@ -24,26 +25,40 @@ SlabEigenSolution slab_eigen(std::span<const double> nodes, std::span<const doub
 
   const Eigen::MatrixXd difference = alpha - beta;
   const Eigen::MatrixXd sum = alpha + beta;
-  const Eigen::LLT<Eigen::MatrixXd> cholesky(difference);
+  // Reduce with whichever of the two symmetric factors is positive definite: alpha + beta (robust as Omega -> 1)
+  // first, alpha - beta (robust when a coarse quadrature makes the phase function look like a forward delta, so
+  // that alpha + beta ~ (1 - Omega g) -> 0) second. Swapping the roles swaps S and D.
+  Eigen::LLT<Eigen::MatrixXd> cholesky(sum);
+  const bool sum_factored = cholesky.info() == Eigen::Success;
+  if (!sum_factored) cholesky.compute(difference);
   if (cholesky.info() != Eigen::Success) {
-    throw std::runtime_error("slab_eigen: alpha - beta is not positive definite (single-scattering albedo too close to 1)");
+    throw std::runtime_error("slab_eigen: the discrete transfer matrix has no real eigen-decomposition; use more "
+                             "ordinates for this phase function");
   }
   const Eigen::MatrixXd lower = cholesky.matrixL();
-  const Eigen::MatrixXd reduced = lower.transpose() * sum * lower;
+  const Eigen::MatrixXd reduced = lower.transpose() * (sum_factored ? difference : sum) * lower;
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(reduced);
   if (eigen.info() != Eigen::Success) throw std::runtime_error("slab_eigen: symmetric eigen-solve failed");
 
   SlabEigenSolution solution;
-  solution.k = eigen.eigenvalues().cwiseMax(1e-300).cwiseSqrt();
+  const double floor = std::numeric_limits<double>::epsilon() * eigen.eigenvalues().cwiseAbs().maxCoeff();
+  solution.k = eigen.eigenvalues().cwiseMax(floor).cwiseSqrt();
   const Eigen::MatrixXd& z = eigen.eigenvectors();
-  // S~ = L^-T z, D~ = -L z / k.
-  const Eigen::MatrixXd s = lower.transpose().triangularView<Eigen::Upper>().solve(z);
-  Eigen::MatrixXd d = -(lower * z);
-  for (Eigen::Index j = 0; j < n; ++j) d.col(j) /= solution.k(j);
-  // G = X^-1 (S~ +- D~) / 2.
+  // Factoring alpha + beta: D~ = L^-T z, S~ = -L z / k. Factoring alpha - beta: S~ = L^-T z, D~ = -L z / k.
+  const Eigen::MatrixXd inverse_transpose_z = lower.transpose().triangularView<Eigen::Upper>().solve(z);
+  Eigen::MatrixXd lz = -(lower * z);
+  for (Eigen::Index j = 0; j < n; ++j) lz.col(j) /= solution.k(j);
+  const Eigen::MatrixXd& s = sum_factored ? lz : inverse_transpose_z;
+  const Eigen::MatrixXd& d = sum_factored ? inverse_transpose_z : lz;
+  // G = X^-1 (S~ +- D~) / 2, each column pair scaled to unit norm.
   const Eigen::VectorXd inverse_x = x.cwiseInverse();
   solution.g_up = inverse_x.asDiagonal() * (0.5 * (s + d));
   solution.g_down = inverse_x.asDiagonal() * (0.5 * (s - d));
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double norm = std::hypot(solution.g_up.col(j).norm(), solution.g_down.col(j).norm());
+    solution.g_up.col(j) /= norm;
+    solution.g_down.col(j) /= norm;
+  }
   return solution;
 }
 

@@ -5,8 +5,13 @@
 //   alpha = M^-1 (I - s P++ A),   beta = M^-1 s P+- A,   d/dtau [u+; u-] = [[alpha, -beta], [beta, -alpha]] [u+; u-],
 // where u+ travels up and u- down, and tau increases downward. Eigenvalues come in pairs +-k. With S = G+ + G- and
 // D = G+ - G-, (alpha + beta)(alpha - beta) S = k^2 S and D = -(alpha - beta) S / k for the mode decaying downward.
-// With X = diag(sqrt(mu_i a_i)), X alpha X^-1 and X beta X^-1 are symmetric; Cholesky (X(alpha - beta)X^-1) = L L^T
-// turns the product into the symmetric problem L^T X(alpha + beta)X^-1 L z = k^2 z, S~ = L^-T z, D~ = -L z / k.
+// With X = diag(sqrt(mu_i a_i)), X alpha X^-1 and X beta X^-1 are symmetric. X(alpha + beta)X^-1 = L L^T is
+// positive definite for every albedo up to 1 (its scattering part holds only the odd, |g|-bounded moments), so
+// its Cholesky factor turns (alpha - beta)(alpha + beta) D = k^2 D into the symmetric semi-definite problem
+//   L^T X(alpha - beta)X^-1 L z = k^2 z,   D~ = L^-T z,   S~ = -L z / k,
+// which stays well conditioned as Omega -> 1, where one k -> 0 (conservative scattering, mode 0). If a coarse
+// quadrature makes a strongly peaked phase function act like a forward delta, alpha + beta loses definiteness and
+// the same reduction is made with the Cholesky factor of X(alpha - beta)X^-1 instead (S and D swap roles).
 #pragma once
 
 #include <Eigen/Core>
@@ -20,8 +25,9 @@ struct SlabEigenSolution {
   Eigen::MatrixXd g_down;  // column j: downward components of the mode exp(-k_j tau)
 };
 
-// same = P++ and opposite = P+- for this mode; scattering = Omega c_m. Requires Omega < 1 for mode 0 (the caller
-// clamps); throws std::runtime_error if the reduction is not positive definite.
+// same = P++ and opposite = P+- for this mode; scattering = Omega c_m, Omega < 1 (at Omega = 1 mode 0 has k = 0 and
+// a secular solution; the caller clamps). Each column (G+, G-) is scaled to unit norm. k^2 is floored at the
+// rounding level of the reduced matrix. Throws std::runtime_error if neither factor is positive definite.
 SlabEigenSolution slab_eigen(std::span<const double> nodes, std::span<const double> weights,
                              const Eigen::MatrixXd& same, const Eigen::MatrixXd& opposite, double scattering);
 

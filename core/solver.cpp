@@ -311,13 +311,20 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
   const double sigma_min =
       std::min(geometry.top_open ? 1.0 : material.sigma, geometry.base == Base::Rough ? material.bottom_sigma() : 1.0);
   Resolution resolution{};
+  // N >= 6/sigma keeps the node quadrature of the interface lobes energy-conserving (model-spec §4.1); half of
+  // layerlab's full-sphere HG heuristic 8.6/(1-g) - 0.2 resolves the phase function.
+  const int from_phase = ceil_to_int(0.5 * (8.6 / forwardness - 0.2));
+  const int from_surface = sigma_min < 1.0 ? ceil_to_int(6.0 / sigma_min) : 6;
   if (material.ordinates) {
+    // Fewer ordinates than this create energy (up to 4x at N = 4, sigma = 0.2) or lose the real eigen-structure.
+    const int minimum = std::max({4, from_surface, ceil_to_int(0.5 * from_phase)});
+    if (*material.ordinates < minimum) {
+      throw ParameterError("ordinates = " + std::to_string(*material.ordinates) + " is too few for this material; " +
+                           "valid range is [" + std::to_string(minimum) +
+                           ", 256] here (at least 6/sigma for the interfaces and (8.6/(1-|g|) - 0.2)/4 for g)");
+    }
     resolution.ordinates = *material.ordinates;
   } else {
-    // N >= 6/sigma for the interfaces (model-spec §4.1) and half of layerlab's full-sphere HG heuristic
-    // 8.6/(1-g) - 0.2; at least 16, at most 64.
-    const int from_phase = ceil_to_int(0.5 * (8.6 / forwardness - 0.2));
-    const int from_surface = ceil_to_int(6.0 / sigma_min);
     const int needed = std::max({16, from_phase, from_surface});
     resolution.ordinates = std::clamp((needed + 3) / 4 * 4, 16, 64);  // a multiple of 4 at or above the need
   }
@@ -327,7 +334,7 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
                                           16, 128);
   resolution.table_size = options.table_size > 0 ? options.table_size : kDefaultTableSize;
   resolution.interface_azimuths = std::max(2 * resolution.max_modes + 1, ceil_to_int(24.0 / sigma_min) + 1);
-  resolution.phase_azimuths = std::max(2 * resolution.max_modes + 1, ceil_to_int(30.0 / forwardness) + 1);
+  resolution.phase_azimuths = std::max(2 * resolution.max_modes + 1, ceil_to_int(20.0 / forwardness) + 1);
   return resolution;
 }
 
@@ -392,7 +399,11 @@ std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std:
     const double mu = q.nodes[j];
     const double sin_theta = std::sqrt(1.0 - mu * mu);
     if (!geometry.top_open) top_inside[j] = interface_albedo(geometry.top, Vec3(sin_theta, 0.0, -mu));
-    if (geometry.base == Base::Rough) bottom_inside[j] = interface_albedo(geometry.bottom, Vec3(sin_theta, 0.0, mu));
+    if (geometry.base == Base::Rough) {
+      bottom_inside[j] = geometry.bottom_mirrors_top && !geometry.top_open
+                             ? top_inside[j]
+                             : interface_albedo(geometry.bottom, Vec3(sin_theta, 0.0, mu));
+    }
   }
   const bool direct_path = geometry.top_open && !std::isinf(material.tau);
   std::vector<DirectionalAlbedo> rows;
