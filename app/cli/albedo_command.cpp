@@ -1,0 +1,100 @@
+#include "app/cli/albedo_command.h"
+
+#include <optional>
+#include <stdexcept>
+#include <vector>
+
+#include "app/cli/errors.h"
+#include "app/cli/flag_parser.h"
+#include "app/cli/material_flags.h"
+#include "app/cli/numbers.h"
+#include "app/cli/numeric_table.h"
+#include "app/cli/quoted.h"
+#include "core/conventions.h"
+#include "core/solver.h"
+
+namespace skinlayer::cli {
+namespace {
+
+constexpr std::string_view kThetaFlag = "theta-i";
+constexpr std::string_view kDefaultThetas = "0,30,60,80";
+
+std::vector<std::string_view> known_flags() {
+  const std::span<const std::string_view> material_flags = material_flag_names();
+  std::vector<std::string_view> flags(material_flags.begin(), material_flags.end());
+  flags.push_back(kThetaFlag);
+  return flags;
+}
+
+// The comma-separated list of incidence angles in degrees, each a number in [0, 90].
+std::vector<double> parse_theta_list(std::string_view list) {
+  std::vector<double> thetas;
+  while (true) {
+    const std::size_t comma = list.find(',');
+    const std::string_view item = list.substr(0, comma);
+    const std::optional<double> value = parse_number(item);
+    if (!value) {
+      throw UsageError(std::string(kThetaFlag) + " = " + quoted(item) +
+                       " is not a number; give a comma-separated list of angles in [0, 90] degrees, as in "
+                       "--theta-i 0,30,60,80");
+    }
+    if (!(*value >= 0.0 && *value <= 90.0)) {
+      throw UsageError(std::string(kThetaFlag) + " = " + format_number(*value) +
+                       " is out of range; valid range is [0, 90] (degrees)");
+    }
+    thetas.push_back(*value);
+    if (comma == std::string_view::npos) return thetas;
+    list.remove_prefix(comma + 1);
+  }
+}
+
+}  // namespace
+
+std::string albedo_usage() {
+  return "Usage: skinlayer albedo [material flags] [--theta-i LIST]\n"
+         "\n"
+         "Writes, one row per incidence angle, in the order given:\n"
+         "  theta_i,reflectance_surface,reflectance_subsurface,reflectance,transmittance,absorptance\n"
+         "Directional-hemispherical fractions of the incident flux: reflectance = reflectance_surface +\n"
+         "reflectance_subsurface, and reflectance + transmittance + absorptance = 1. transmittance includes any\n"
+         "unscattered beam.\n"
+         "\n"
+         "  --theta-i LIST\n"
+         "      comma-separated incidence angles in degrees from the normal, each in [0, 90]; default " +
+         std::string(kDefaultThetas) + ".\n\n" + material_flags_usage() +
+         "\n"
+         "Example:\n"
+         "  skinlayer albedo --albedo 0.9 --g 0.5 --bottom lambert:0.3 --theta-i 0,45,85\n";
+}
+
+int run_albedo_command(std::span<const std::string_view> arguments, std::ostream& out) {
+  if (wants_help(arguments)) {
+    out << albedo_usage();
+    return kExitSuccess;
+  }
+  const std::vector<std::string_view> flag_names = known_flags();
+  const ParsedFlags flags = ParsedFlags::parse(arguments, flag_names, "skinlayer albedo");
+  const Material material = material_from_flags(flags);
+  const std::vector<double> thetas_degrees = parse_theta_list(flags.value(kThetaFlag).value_or(kDefaultThetas));
+
+  std::vector<double> thetas_radians;
+  for (const double theta : thetas_degrees) thetas_radians.push_back(degrees_to_radians(theta));
+  const std::vector<DirectionalAlbedo> albedos = directional_albedo(material, thetas_radians);
+  if (albedos.size() != thetas_degrees.size()) {
+    throw std::runtime_error("the solver returned " + std::to_string(albedos.size()) + " albedo rows for " +
+                             std::to_string(thetas_degrees.size()) + " angles");
+  }
+
+  NumericTable table({"theta_i"},
+                     {"reflectance_surface", "reflectance_subsurface", "reflectance", "transmittance", "absorptance"});
+  for (std::size_t index = 0; index < albedos.size(); ++index) {
+    const DirectionalAlbedo& albedo = albedos[index];
+    table.add_row({thetas_degrees[index], albedo.reflectance_surface, albedo.reflectance_subsurface,
+                   albedo.reflectance(), albedo.transmittance, albedo.absorptance});
+  }
+  table.require_finite();
+  table.write_csv(out);
+  return kExitSuccess;
+}
+
+}  // namespace skinlayer::cli

@@ -1,0 +1,61 @@
+#include "app/cli/flag_parser.h"
+
+#include <algorithm>
+
+#include "app/cli/errors.h"
+#include "app/cli/quoted.h"
+
+namespace skinlayer::cli {
+namespace {
+
+constexpr std::string_view kFlagPrefix = "--";
+
+bool is_known(std::span<const std::string_view> known_flags, std::string_view name) {
+  return std::find(known_flags.begin(), known_flags.end(), name) != known_flags.end();
+}
+
+}  // namespace
+
+bool wants_help(std::span<const std::string_view> arguments) {
+  return std::any_of(arguments.begin(), arguments.end(),
+                     [](std::string_view argument) { return argument == "--help" || argument == "-h"; });
+}
+
+ParsedFlags ParsedFlags::parse(std::span<const std::string_view> arguments,
+                               std::span<const std::string_view> known_flags, std::string_view command) {
+  ParsedFlags flags;
+  for (std::size_t index = 0; index < arguments.size(); ++index) {
+    const std::string_view argument = arguments[index];
+    if (!argument.starts_with(kFlagPrefix) || argument.size() == kFlagPrefix.size()) {
+      throw UsageError("unexpected argument " + quoted(argument) + " for " + std::string(command) +
+                       "; flags are written --name value or --name=value");
+    }
+    const std::string_view body = argument.substr(kFlagPrefix.size());
+    const std::size_t equals = body.find('=');
+    const std::string_view name = body.substr(0, equals);
+    if (!is_known(known_flags, name)) {
+      throw UsageError("unknown flag " + quoted(argument.substr(0, kFlagPrefix.size() + name.size())) + " for " +
+                       std::string(command) + "; see " + std::string(command) + " --help");
+    }
+    std::string_view value;
+    if (equals != std::string_view::npos) {
+      value = body.substr(equals + 1);
+    } else if (index + 1 < arguments.size() && !arguments[index + 1].starts_with(kFlagPrefix)) {
+      value = arguments[++index];
+    } else {
+      throw UsageError("flag --" + std::string(name) + " needs a value");
+    }
+    if (flags.has(name)) throw UsageError("flag --" + std::string(name) + " is given more than once");
+    flags.values_.emplace_back(name, value);
+  }
+  return flags;
+}
+
+std::optional<std::string_view> ParsedFlags::value(std::string_view name) const {
+  for (const auto& [flag, value] : values_) {
+    if (flag == name) return value;
+  }
+  return std::nullopt;
+}
+
+}  // namespace skinlayer::cli

@@ -1,0 +1,32 @@
+// Command-line flags of the form "--name value" or "--name=value", checked against the flags a command accepts.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace skinlayer::cli {
+
+// True when any argument is "--help" or "-h".
+bool wants_help(std::span<const std::string_view> arguments);
+
+// The flags given to one command, each at most once, by name without the dashes.
+class ParsedFlags {
+ public:
+  // Throws UsageError, naming the argument, for: an argument that is not a flag, a flag not in known_flags, a flag
+  // with no value (end of arguments, or the next argument starts with "--"), or a flag given twice.
+  // command names the command in messages, e.g. "skinlayer eval".
+  static ParsedFlags parse(std::span<const std::string_view> arguments, std::span<const std::string_view> known_flags,
+                           std::string_view command);
+
+  bool has(std::string_view name) const { return value(name).has_value(); }
+  std::optional<std::string_view> value(std::string_view name) const;
+
+ private:
+  std::vector<std::pair<std::string, std::string>> values_;  // (name, value) in command-line order
+};
+
+}  // namespace skinlayer::cli

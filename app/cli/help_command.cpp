@@ -1,0 +1,45 @@
+#include "app/cli/help_command.h"
+
+#include "app/cli/albedo_command.h"
+#include "app/cli/errors.h"
+#include "app/cli/eval_command.h"
+#include "app/cli/quoted.h"
+
+namespace skinlayer::cli {
+
+std::string overview_usage() {
+  return "skinlayer: Stam's (2001) skin-layer illumination model: a rough dielectric surface over a scattering slab.\n"
+         "\n"
+         "Usage:\n"
+         "  skinlayer eval [material flags] < rows.csv\n"
+         "      BRDF and BTDF at direction pairs: CSV rows theta_i,theta_o,phi (degrees) in, values (1/sr) out.\n"
+         "  skinlayer albedo [material flags] [--theta-i LIST]\n"
+         "      reflectance, transmittance and absorptance for light from each incidence angle.\n"
+         "  skinlayer help [COMMAND], skinlayer COMMAND --help\n"
+         "      usage of a command, with every flag, its range and default.\n"
+         "  skinlayer --version\n"
+         "  skinlayer\n"
+         "      the interactive previewer (not built yet).\n"
+         "\n"
+         "Exit status: 0 success; 1 malformed input on stdin or a failed computation; 2 a bad command line or a\n"
+         "parameter out of range. Every error is one line on stderr.\n";
+}
+
+int run_help_command(std::span<const std::string_view> arguments, std::ostream& out) {
+  if (arguments.empty()) {
+    out << overview_usage();
+    return kExitSuccess;
+  }
+  if (arguments.size() > 1) throw UsageError("help takes at most one command name, as in skinlayer help eval");
+  const std::string_view command = arguments.front();
+  if (command == "eval") {
+    out << eval_usage();
+  } else if (command == "albedo") {
+    out << albedo_usage();
+  } else {
+    throw UsageError("unknown command " + quoted(command) + "; the commands are eval and albedo");
+  }
+  return kExitSuccess;
+}
+
+}  // namespace skinlayer::cli

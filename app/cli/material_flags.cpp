@@ -1,0 +1,125 @@
+#include "app/cli/material_flags.h"
+
+#include <array>
+#include <cmath>
+#include <optional>
+
+#include "app/cli/errors.h"
+#include "app/cli/numbers.h"
+#include "app/cli/quoted.h"
+
+namespace skinlayer::cli {
+namespace {
+
+// parameter_table() names the Lambertian base's albedo "lambert"; on the command line it is the A of
+// --bottom lambert:A.
+constexpr std::string_view kLambertParameter = "lambert";
+
+constexpr std::array<std::string_view, 10> kMaterialFlags = {
+    "sigma", "eta", "T", "tau", "albedo", "g", "bottom", "bottom-sigma", "bottom-eta", "ordinates",
+};
+
+std::string range_text(const ParameterInfo& info) {
+  std::string text = "[";
+  text.append(format_short(info.min)).append(", ").append(format_short(info.max)).append("]");
+  return text;
+}
+
+// The flag's value checked against its row of the parameter table, or nullopt when the flag is absent.
+std::optional<double> checked_number(const ParsedFlags& flags, std::string_view name) {
+  const std::optional<std::string_view> text = flags.value(name);
+  if (!text) return std::nullopt;
+  const ParameterInfo& info = parameter_info(name);
+  const std::optional<double> value = parse_number(*text);
+  if (!value) {
+    throw UsageError(std::string(name) + " = " + quoted(*text) + " is not a number; valid range is " +
+                     range_text(info) + " (" + std::string(info.description) + ")");
+  }
+  check_parameter(info, *value);
+  return value;
+}
+
+std::optional<int> checked_ordinates(const ParsedFlags& flags) {
+  const std::optional<double> value = checked_number(flags, "ordinates");
+  if (!value) return std::nullopt;
+  if (*value != std::floor(*value)) {
+    const ParameterInfo& info = parameter_info("ordinates");
+    throw UsageError("ordinates = " + format_number(*value) + " is not a whole number; valid range is " +
+                     range_text(info) + " (" + std::string(info.description) + ")");
+  }
+  return static_cast<int>(*value);
+}
+
+// One help entry: the flag as written, then its meaning, symbol, range and default.
+std::string usage_entry(const ParameterInfo& info) {
+  const std::string flag(info.flag);
+  const std::string meaning = std::string(info.description) + " (" + std::string(info.symbol) + ")";
+  const std::string range = "Range " + range_text(info);
+  const std::string default_number = format_short(info.default_value);
+  std::string spelling = "--" + flag + " X";
+  std::string body = meaning + ". " + range + "; default " + default_number + ".";
+  if (info.flag == kLambertParameter) {
+    spelling = "--bottom air|matched|lambert:A";
+    body =
+        "the layer's bottom; default air.\n"
+        "      air: a rough interface to the medium below (see --bottom-sigma, --bottom-eta);\n"
+        "      matched: an index-matched half-space below, no interface;\n"
+        "      lambert:A: a diffuse base; A = " +
+        meaning + ". " + range + ".";
+  } else if (info.flag == "T") {
+    body += " Not together with --tau.";
+  } else if (info.flag == "tau") {
+    body = meaning + ". " + range + "; default " + default_number +
+           " (T = " + format_short(parameter_info("T").default_value) + "). Not together with --T.";
+  } else if (info.flag == "bottom-sigma") {
+    body = meaning + ". " + range + "; default the top's --sigma. Only with --bottom air.";
+  } else if (info.flag == "bottom-eta") {
+    body = meaning + ". " + range + "; default the top's --eta. Only with --bottom air.";
+  } else if (info.flag == "ordinates") {
+    spelling = "--ordinates N";
+    body = meaning + ". A whole number. " + range + "; default automatic.";
+  }
+  return "  " + spelling + "\n      " + body + "\n";
+}
+
+}  // namespace
+
+std::span<const std::string_view> material_flag_names() { return kMaterialFlags; }
+
+Material material_from_flags(const ParsedFlags& flags) {
+  Material material;
+  if (flags.has("T") && flags.has("tau")) {
+    throw UsageError("flags --T and --tau both set the optical depth; give only one");
+  }
+  if (const auto value = checked_number(flags, "sigma")) material.sigma = *value;
+  if (const auto value = checked_number(flags, "eta")) material.eta = *value;
+  if (const auto value = checked_number(flags, "T")) material.tau = optical_depth_from_transparency(*value);
+  if (const auto value = checked_number(flags, "tau")) material.tau = *value;
+  if (const auto value = checked_number(flags, "albedo")) material.albedo = *value;
+  if (const auto value = checked_number(flags, "g")) material.g = *value;
+  if (const auto text = flags.value("bottom")) material.bottom = parse_bottom(*text);
+  for (const std::string_view bottom_flag : {"bottom-sigma", "bottom-eta"}) {
+    if (flags.has(bottom_flag) && material.bottom.kind != BottomKind::Air) {
+      throw UsageError("flag --" + std::string(bottom_flag) + " applies only to --bottom air, not --bottom " +
+                       format_bottom(material.bottom));
+    }
+  }
+  if (const auto value = checked_number(flags, "bottom-sigma")) material.bottom.sigma = *value;
+  if (const auto value = checked_number(flags, "bottom-eta")) material.bottom.eta = *value;
+  material.ordinates = checked_ordinates(flags);
+  validate(material);
+  return material;
+}
+
+std::string material_flags_usage() {
+  std::string text = "Material flags (--name value or --name=value; an omitted flag takes its default):\n";
+  for (const ParameterInfo& info : parameter_table()) {
+    // --bottom (the table's "lambert" row) is listed before the flags that qualify it.
+    if (info.flag == kLambertParameter) continue;
+    if (info.flag == "bottom-sigma") text += usage_entry(parameter_info(kLambertParameter));
+    text += usage_entry(info);
+  }
+  return text;
+}
+
+}  // namespace skinlayer::cli

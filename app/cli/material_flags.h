@@ -1,0 +1,28 @@
+// The material flags shared by the solving commands, read into a skinlayer::Material against core's parameter
+// table: --sigma --eta --T | --tau --albedo --g --bottom air|matched|lambert:A [--bottom-sigma --bottom-eta]
+// [--ordinates N].
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "app/cli/flag_parser.h"
+#include "core/material.h"
+
+namespace skinlayer::cli {
+
+// The material flag names, without dashes.
+std::span<const std::string_view> material_flag_names();
+
+// Builds the material from the flags; an omitted flag keeps skinlayer::Material{}'s default.
+// Throws skinlayer::ParameterError (core's check_parameter message: names the parameter and its range) for a value
+// out of range or NaN, and UsageError for a value that is not a number, --T together with --tau, --bottom-sigma or
+// --bottom-eta with a bottom other than air, or a non-integer --ordinates.
+Material material_from_flags(const ParsedFlags& flags);
+
+// Help text for the material flags: every flag with its meaning, symbol, range and default, from
+// skinlayer::parameter_table().
+std::string material_flags_usage();
+
+}  // namespace skinlayer::cli

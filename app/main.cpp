@@ -1,0 +1,37 @@
+// The skinlayer executable: dispatches to one command. Each command lives in app/cli/.
+#include <iostream>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "app/cli/albedo_command.h"
+#include "app/cli/error_report.h"
+#include "app/cli/errors.h"
+#include "app/cli/eval_command.h"
+#include "app/cli/help_command.h"
+#include "app/cli/previewer_placeholder.h"
+#include "app/cli/quoted.h"
+
+namespace {
+
+int dispatch(std::span<const std::string_view> arguments) {
+  using namespace skinlayer::cli;
+  if (arguments.empty()) return run_previewer_placeholder(std::cerr);
+  const std::string_view command = arguments.front();
+  const std::span<const std::string_view> rest = arguments.subspan(1);
+  if (command == "eval") return run_eval_command(rest, std::cin, std::cout);
+  if (command == "albedo") return run_albedo_command(rest, std::cout);
+  if (command == "help" || command == "--help" || command == "-h") return run_help_command(rest, std::cout);
+  if (command == "--version") {
+    std::cout << "skinlayer " << SKINLAYER_VERSION << '\n';
+    return kExitSuccess;
+  }
+  throw UsageError("unknown command " + quoted(command) + "; see skinlayer --help");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string_view> arguments(argv + 1, argv + argc);
+  return skinlayer::cli::run_reporting_errors(std::cerr, [&arguments] { return dispatch(arguments); });
+}

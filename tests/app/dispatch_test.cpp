@@ -1,0 +1,88 @@
+// Subcommand dispatch, help and version, on the real executable.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/material.h"
+#include "tests/app/error_expectations.h"
+#include "tests/app/process_runner.h"
+
+namespace skinlayer::test {
+namespace {
+
+std::string formatted(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.10g", value);
+  return buffer;
+}
+
+// Every parameter of core's table appears in the command's help, with its range.
+void expect_help_lists_every_parameter(const std::string& help) {
+  for (const ParameterInfo& info : parameter_table()) {
+    const std::string spelling = info.flag == "lambert" ? "lambert:A" : "--" + std::string(info.flag);
+    EXPECT_NE(help.find(spelling), std::string::npos) << spelling;
+    std::string range = "[";
+    range.append(formatted(info.min)).append(", ").append(formatted(info.max)).append("]");
+    EXPECT_NE(help.find(range), std::string::npos) << spelling << " range " << range;
+    EXPECT_NE(help.find(std::string(info.description)), std::string::npos) << spelling;
+  }
+  EXPECT_NE(help.find("--bottom air|matched|lambert:A"), std::string::npos);
+}
+
+TEST(CliDispatch, EvalHelpListsEveryFlag) {
+  const ProcessResult result = run_skinlayer({"eval", "--help"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.err, "");
+  EXPECT_NE(result.out.find("theta_i,theta_o,phi,brdf_surface,brdf_subsurface,brdf,btdf"), std::string::npos);
+  expect_help_lists_every_parameter(result.out);
+}
+
+TEST(CliDispatch, AlbedoHelpListsEveryFlag) {
+  const ProcessResult result = run_skinlayer({"albedo", "--help"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("--theta-i"), std::string::npos);
+  EXPECT_NE(result.out.find("theta_i,reflectance_surface,reflectance_subsurface,reflectance,transmittance,absorptance"),
+            std::string::npos);
+  expect_help_lists_every_parameter(result.out);
+}
+
+TEST(CliDispatch, HelpCommandMatchesCommandHelpFlag) {
+  EXPECT_EQ(run_skinlayer({"help", "eval"}).out, run_skinlayer({"eval", "--help"}).out);
+  EXPECT_EQ(run_skinlayer({"help", "albedo"}).out, run_skinlayer({"albedo", "-h"}).out);
+}
+
+TEST(CliDispatch, OverviewNamesTheCommands) {
+  for (const char* flag : {"--help", "-h", "help"}) {
+    const ProcessResult result = run_skinlayer({flag});
+    ASSERT_EQ(result.exit_code, 0) << flag;
+    EXPECT_NE(result.out.find("skinlayer eval"), std::string::npos) << flag;
+    EXPECT_NE(result.out.find("skinlayer albedo"), std::string::npos) << flag;
+  }
+}
+
+TEST(CliDispatch, VersionPrintsOneLine) {
+  const ProcessResult result = run_skinlayer({"--version"});
+  ASSERT_EQ(result.exit_code, 0);
+  EXPECT_TRUE(result.out.starts_with("skinlayer ")) << result.out;
+  EXPECT_EQ(result.out.find('\n'), result.out.size() - 1) << result.out;
+}
+
+TEST(CliDispatch, NoCommandSaysThePreviewerIsNotBuiltYet) {
+  const ProcessResult result = run_skinlayer({});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_EQ(result.out, "");
+  EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << result.err;
+  EXPECT_NE(result.err.find("skinlayer eval"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("skinlayer albedo"), std::string::npos) << result.err;
+}
+
+TEST(CliDispatch, UnknownCommandIsAUsageError) {
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"evaluate"}), 2, {"'evaluate'"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"--sigma", "0.3"}), 2, {"'--sigma'"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"help", "render"}), 2, {"'render'"}));
+}
+
+}  // namespace
+}  // namespace skinlayer::test
