@@ -330,18 +330,24 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
   }
   resolution.max_modes = options.max_modes > 0
                              ? options.max_modes
-                             : std::clamp(std::max({16, ceil_to_int(5.4 / forwardness) + 8, ceil_to_int(4.0 / sigma_min)}),
-                                          16, 128);
+                             : std::clamp(std::max({24, ceil_to_int(5.4 / forwardness) + 2, ceil_to_int(4.0 / sigma_min)}),
+                                          24, 128);
   resolution.table_size = options.table_size > 0 ? options.table_size : kDefaultTableSize;
-  resolution.interface_azimuths = std::max(2 * resolution.max_modes + 1, ceil_to_int(24.0 / sigma_min) + 1);
-  resolution.phase_azimuths = std::max(2 * resolution.max_modes + 1, ceil_to_int(20.0 / forwardness) + 1);
+  resolution.interface_azimuths = std::max({2 * resolution.max_modes + 1, ceil_to_int(24.0 / sigma_min) + 1, 49});
+  resolution.phase_azimuths = std::max({2 * resolution.max_modes + 1, ceil_to_int(20.0 / forwardness) + 1, 49});
   return resolution;
 }
 
-LayerTables solve(const Material& material, const SolveOptions& options) {
-  const Resolution resolution = choose_resolution(material, options);
+namespace {
+
+// The tables for one resolution; `converged` tells whether the Fourier series met its tolerance before the cap.
+struct TableSolve {
+  LayerTables tables;
+  bool converged;
+};
+
+TableSolve solve_tables(const Material& material, const Resolution& resolution, double tolerance) {
   const int k = resolution.table_size;
-  if (k < 4) throw ParameterError("table_size = " + std::to_string(k) + " is out of range; it must be at least 4");
   std::vector<double> grid(k);
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
   const LayerSolver solver(material, resolution, grid, grid);
@@ -370,11 +376,31 @@ LayerTables solve(const Material& material, const SolveOptions& options) {
       peak_reflection = r;
       peak_transmission = t;
     }
-    const bool quiet = r <= options.fourier_tolerance * peak_reflection && t <= options.fourier_tolerance * peak_transmission;
+    const bool quiet = r <= tolerance * peak_reflection && t <= tolerance * peak_transmission;
     quiet_modes = quiet ? quiet_modes + 1 : 0;
     modes = m + 1;
   }
-  return LayerTables(k, modes, std::move(reflection), std::move(transmission));
+  return {LayerTables(k, modes, std::move(reflection), std::move(transmission)), quiet_modes >= 2};
+}
+
+}  // namespace
+
+LayerTables solve(const Material& material, const SolveOptions& options) {
+  Resolution resolution = choose_resolution(material, options);
+  if (resolution.table_size < 4) {
+    throw ParameterError("table_size = " + std::to_string(resolution.table_size) +
+                         " is out of range; it must be at least 4");
+  }
+  // The automatic cap on Fourier modes suits most materials; thin, strongly forward-scattering layers seen near
+  // grazing need more, so an unconverged series is solved again with twice the cap (up to 256 modes).
+  TableSolve result = solve_tables(material, resolution, options.fourier_tolerance);
+  while (!result.converged && options.max_modes == 0 && resolution.max_modes < 256) {
+    SolveOptions doubled = options;
+    doubled.max_modes = 2 * resolution.max_modes;
+    resolution = choose_resolution(material, doubled);
+    result = solve_tables(material, resolution, options.fourier_tolerance);
+  }
+  return std::move(result.tables);
 }
 
 double brdf_surface(const Material& material, double theta_i, double theta_o, double phi) {
@@ -385,7 +411,9 @@ double brdf_surface(const Material& material, double theta_i, double theta_o, do
 
 std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std::span<const double> theta_i,
                                                   const SolveOptions& options) {
-  const Resolution resolution = choose_resolution(material, options);
+  SolveOptions mode_zero = options;
+  mode_zero.max_modes = 1;  // hemispherical fractions need only the azimuthal mean
+  const Resolution resolution = choose_resolution(material, mode_zero);
   std::vector<double> mu0(theta_i.size());
   for (std::size_t k = 0; k < theta_i.size(); ++k) mu0[k] = std::cos(theta_i[k]);
   const LayerSolver solver(material, resolution, mu0, {});
