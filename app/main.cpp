@@ -11,6 +11,7 @@
 #include "app/cli/help_command.h"
 #include "app/cli/previewer_placeholder.h"
 #include "app/cli/quoted.h"
+#include "app/cli/render_command.h"
 
 namespace {
 
@@ -21,6 +22,7 @@ int dispatch(std::span<const std::string_view> arguments) {
   const std::span<const std::string_view> rest = arguments.subspan(1);
   if (command == "eval") return run_eval_command(rest, std::cin, std::cout);
   if (command == "albedo") return run_albedo_command(rest, std::cout);
+  if (command == "render") return run_render_command(rest, std::cout);
   if (command == "help" || command == "--help" || command == "-h") return run_help_command(rest, std::cout);
   if (command == "--version") {
     std::cout << "skinlayer " << SKINLAYER_VERSION << '\n';

@@ -2,3 +2,23 @@
 # every library comes from its Debian package (installed by ../setup.sh). Included from the top-level
 # CMakeLists.txt so that the imported targets are visible everywhere.
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+
+# Previewer and headless rendering (see ../shared/docs/platform-notes.md).
+find_package(PkgConfig REQUIRED)
+find_package(glfw3 3.3 REQUIRED)
+find_package(OpenGL REQUIRED)
+pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+
+# Dear ImGui's GLFW and OpenGL3 backends, compiled from the sources that libimgui-dev ships (the prebuilt ones in
+# libimgui.a cannot load GL under OSMesa). They call gl* directly through <GL/glcorearb.h> prototypes and link no
+# GL library, so the executable decides: libGL for the window.
+set(SKINLAYER_IMGUI_BACKENDS "/usr/share/doc/libimgui-dev/examples/backends" CACHE PATH "ImGui backend sources")
+add_library(skinlayer_imgui_backends STATIC
+  ${SKINLAYER_IMGUI_BACKENDS}/imgui_impl_glfw.cpp
+  ${SKINLAYER_IMGUI_BACKENDS}/imgui_impl_opengl3.cpp)
+target_include_directories(skinlayer_imgui_backends PUBLIC ${SKINLAYER_IMGUI_BACKENDS})
+target_compile_definitions(skinlayer_imgui_backends PUBLIC IMGUI_IMPL_OPENGL_LOADER_CUSTOM GL_GLEXT_PROTOTYPES)
+target_compile_options(skinlayer_imgui_backends PRIVATE -include GL/glcorearb.h -w)
+target_link_libraries(skinlayer_imgui_backends PUBLIC PkgConfig::IMGUI glfw)

@@ -1,0 +1,35 @@
+// A material as the previewer shows it: the layer parameters with an RGB single-scattering albedo (skin is not
+// grey), solved one channel per distinct albedo value.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/layer_tables.h"
+#include "core/material.h"
+#include "core/solver.h"
+
+namespace skinlayer {
+
+struct ColorMaterial {
+  Material layer;                                  // layer.albedo is ignored; albedo_rgb is used instead
+  std::array<double, 3> albedo_rgb = {1.0, 1.0, 1.0};
+};
+
+struct ColorTables {
+  ColorMaterial material;
+  std::array<LayerTables, 3> channels;             // red, green, blue
+  std::array<DirectionalAlbedo, 3> albedo{};       // at albedo_theta_i, per channel
+  double albedo_theta_i = 0.0;
+  double solve_seconds = 0.0;
+};
+
+// Validates the material (every channel) and solves each distinct albedo value once; also the directional albedo
+// at theta_i (radians). Throws ParameterError for invalid parameters.
+ColorTables solve_color(const ColorMaterial& material, double theta_i = 0.0);
+
+// The surface term plus the subsurface BRDF of one channel, and the BTDF, in 1/sr (graphics convention, radians).
+double brdf_total(const ColorTables& tables, int channel, double theta_i, double theta_o, double phi);
+double btdf_total(const ColorTables& tables, int channel, double theta_i, double theta_o, double phi);
+
+}  // namespace skinlayer

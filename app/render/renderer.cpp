@@ -1,0 +1,107 @@
+#include "app/render/renderer.h"
+
+#include <algorithm>
+#include <string_view>
+#include <vector>
+
+#include "app/render/shader_sources.h"
+
+namespace skinlayer {
+namespace {
+
+constexpr std::string_view kVersion = "#version 330 core\n";
+
+gl::Program build(std::string_view fragment) {
+  const std::vector<std::string_view> vertex = {kVersion, shader_source("fullscreen.vert")};
+  const std::vector<std::string_view> pieces = {kVersion, shader_source("table_layout.h"), shader_source("common.glsl"),
+                                                shader_source("tables.glsl"), shader_source(fragment)};
+  return gl::link_program(vertex, pieces);
+}
+
+GLint location(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+
+void upload_array(GLuint texture, int size, int modes, const std::vector<float>& texels) {
+  glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
+  glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, size, size, std::max(modes, 1), 0, GL_RGBA, GL_FLOAT,
+               texels.empty() ? nullptr : texels.data());
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+}
+
+}  // namespace
+
+std::array<double, 2> view_extent(const Viewport& viewport, double margin) {
+  const double shorter = std::max(1, std::min(viewport.width, viewport.height));
+  return {margin * viewport.width / shorter, margin * viewport.height / shorter};
+}
+
+Renderer::Renderer()
+    : sphere_(build("sphere.frag")),
+      lobe_(build("lobe.frag")),
+      vertex_array_(gl::create_vertex_array()),
+      reflection_(gl::create_texture()),
+      transmission_(gl::create_texture()) {
+  upload(TableTextureData{2, 0, std::vector<float>(16, 0.0f), std::vector<float>(16, 0.0f)});
+  gl::check_errors("Renderer()");
+}
+
+void Renderer::upload(const TableTextureData& tables) {
+  upload_array(reflection_.get(), tables.size, tables.modes, tables.reflection);
+  upload_array(transmission_.get(), tables.size, tables.modes, tables.transmission);
+  modes_ = tables.modes;
+  gl::check_errors("Renderer::upload");
+}
+
+void Renderer::bind_tables(GLuint program) const {
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, reflection_.get());
+  glActiveTexture(GL_TEXTURE1);
+  glBindTexture(GL_TEXTURE_2D_ARRAY, transmission_.get());
+  glUniform1i(location(program, "u_reflection"), 0);
+  glUniform1i(location(program, "u_transmission"), 1);
+  glUniform1i(location(program, "u_modes"), modes_);
+}
+
+void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport) const {
+  const GLuint program = sphere_.get();
+  glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
+  glUseProgram(program);
+  bind_tables(program);
+  const std::array<double, 2> extent = view_extent(viewport, kSphereMargin);
+  glUniform2f(location(program, "u_extent"), static_cast<float>(extent[0]), static_cast<float>(extent[1]));
+  glUniform3f(location(program, "u_light"), static_cast<float>(view.light[0]), static_cast<float>(view.light[1]),
+              static_cast<float>(view.light[2]));
+  glUniform1f(location(program, "u_irradiance"), static_cast<float>(view.irradiance));
+  glUniform1f(location(program, "u_exposure"), static_cast<float>(view.exposure));
+  glUniform1f(location(program, "u_eta"), static_cast<float>(surface.eta));
+  glUniform1f(location(program, "u_sigma"), static_cast<float>(surface.sigma));
+  glUniform1i(location(program, "u_output_linear"), view.linear_output ? 1 : 0);
+  glUniform3f(location(program, "u_background"), 0.02f, 0.02f, 0.025f);
+  glBindVertexArray(vertex_array_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::check_errors("Renderer::draw_sphere");
+}
+
+void Renderer::draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport) const {
+  const GLuint program = lobe_.get();
+  glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
+  glUseProgram(program);
+  bind_tables(program);
+  const std::array<double, 2> extent = view_extent(viewport, kLobeMargin);
+  glUniform2f(location(program, "u_extent"), static_cast<float>(extent[0]), static_cast<float>(extent[1]));
+  glUniform1f(location(program, "u_theta_i"), static_cast<float>(view.theta_i));
+  glUniform1f(location(program, "u_eta"), static_cast<float>(surface.eta));
+  glUniform1f(location(program, "u_sigma"), static_cast<float>(surface.sigma));
+  glUniform1i(location(program, "u_log_scale"), view.log_scale ? 1 : 0);
+  glUniform1f(location(program, "u_peak"), static_cast<float>(view.peak));
+  glUniform1f(location(program, "u_decades"), static_cast<float>(view.decades));
+  glUniform1i(location(program, "u_output_linear"), view.linear_output ? 1 : 0);
+  glBindVertexArray(vertex_array_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  gl::check_errors("Renderer::draw_lobes");
+}
+
+}  // namespace skinlayer

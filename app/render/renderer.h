@@ -1,0 +1,67 @@
+// The one GL renderer of the previewer: the same code draws into a GLFW window and into an OSMesa context; only
+// context creation differs. It owns the shader programs and the table textures; a GL 3.3+ core context must be
+// current when it is created, used and destroyed.
+#pragma once
+
+#include <array>
+
+#include "app/gl/gl_objects.h"
+#include "app/render/table_textures.h"
+
+namespace skinlayer {
+
+struct Viewport {
+  int x = 0;
+  int y = 0;  // from the bottom, as glViewport
+  int width = 0;
+  int height = 0;
+};
+
+struct SurfaceParams {
+  double eta = 1.4;
+  double sigma = 0.5;
+};
+
+struct SphereView {
+  std::array<double, 3> light = {0.0, 0.0, 1.0};  // unit vector toward the light; camera frame, +z toward viewer
+  double irradiance = 3.141592653589793;           // E on a plane normal to the beam (pi: white Lambert -> cos)
+  double exposure = 1.0;                           // linear multiplier before the exponential tone map
+  bool linear_output = false;                      // write linear radiance (float targets, tests)
+};
+
+struct LobeView {
+  double theta_i = 0.7853981633974483;  // incident angle, radians
+  bool log_scale = false;
+  double peak = 1.0;     // BSDF value [1/sr] drawn at the outer circle
+  double decades = 3.0;  // log scale: decades between the outer circle and the centre
+  bool linear_output = false;  // write (total radius, subsurface radius, pixel radius) in RGB (tests)
+};
+
+// Half-size of a view in units of the sphere radius / plot radius: the larger axis shows `margin` radii.
+std::array<double, 2> view_extent(const Viewport& viewport, double margin);
+
+class Renderer {
+ public:
+  Renderer();
+
+  void upload(const TableTextureData& tables);
+  bool has_tables() const { return modes_ > 0; }
+
+  void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport) const;
+  void draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport) const;
+
+  static constexpr double kSphereMargin = 1.08;
+  static constexpr double kLobeMargin = 1.1;
+
+ private:
+  void bind_tables(GLuint program) const;
+
+  gl::Program sphere_;
+  gl::Program lobe_;
+  gl::VertexArray vertex_array_;
+  gl::Texture reflection_;
+  gl::Texture transmission_;
+  int modes_ = 0;
+};
+
+}  // namespace skinlayer

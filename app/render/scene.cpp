@@ -1,0 +1,60 @@
+#include "app/render/scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "app/gl/gl_api.h"
+#include "core/conventions.h"
+
+namespace skinlayer {
+
+std::array<double, 3> light_direction(double theta, double phi) {
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, double light_phi, double exposure,
+                 bool log_scale) {
+  Scene scene;
+  scene.view = view;
+  scene.surface = {tables.material.layer.eta, tables.material.layer.sigma};
+  scene.sphere.light = light_direction(light_theta, light_phi);
+  scene.sphere.exposure = exposure;
+  scene.lobes.theta_i = light_theta;
+  scene.lobes.log_scale = log_scale;
+  double peak = 0.0;
+  for (int k = 0; k <= 180; ++k) {
+    const double theta_o = 0.5 * kPi * k / 180.0;
+    for (double phi : {0.0, kPi}) {
+      double reflected = 0.0, transmitted = 0.0;
+      for (int c = 0; c < 3; ++c) {
+        reflected += brdf_total(tables, c, light_theta, theta_o, phi) / 3.0;
+        transmitted += btdf_total(tables, c, light_theta, theta_o, phi) / 3.0;
+      }
+      peak = std::max({peak, reflected, transmitted});
+    }
+  }
+  scene.lobes.peak = peak > 0.0 ? peak : 1.0;
+  return scene;
+}
+
+std::vector<Viewport> scene_viewports(ViewKind view, int width, int height) {
+  if (view != ViewKind::Both) return {{0, 0, width, height}};
+  const int half = width / 2;
+  return {{0, 0, half, height}, {half, 0, width - half, height}};
+}
+
+void draw_scene(const Renderer& renderer, const Scene& scene, int width, int height) {
+  glViewport(0, 0, width, height);
+  glDisable(GL_DEPTH_TEST);
+  glClearColor(0.02f, 0.02f, 0.025f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  const std::vector<Viewport> viewports = scene_viewports(scene.view, width, height);
+  if (scene.view == ViewKind::Sphere) renderer.draw_sphere(scene.sphere, scene.surface, viewports[0]);
+  if (scene.view == ViewKind::Polar) renderer.draw_lobes(scene.lobes, scene.surface, viewports[0]);
+  if (scene.view == ViewKind::Both) {
+    renderer.draw_sphere(scene.sphere, scene.surface, viewports[0]);
+    renderer.draw_lobes(scene.lobes, scene.surface, viewports[1]);
+  }
+}
+
+}  // namespace skinlayer

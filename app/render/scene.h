@@ -1,0 +1,35 @@
+// What one picture shows: the sphere, the polar lobes, or both side by side, and how the views share the frame.
+#pragma once
+
+#include <vector>
+
+#include "app/render/material_solve.h"
+#include "app/render/renderer.h"
+
+namespace skinlayer {
+
+enum class ViewKind { Sphere, Polar, Both };
+
+struct Scene {
+  ViewKind view = ViewKind::Both;
+  SphereView sphere;
+  LobeView lobes;
+  SurfaceParams surface;
+};
+
+// A light at polar angle theta from the view direction and azimuth phi (radians), as a unit vector in the camera
+// frame (+z toward the viewer, +x right, +y up).
+std::array<double, 3> light_direction(double theta, double phi);
+
+// The scene for a solved material: light, exposure, and the lobe plot scaled so that its largest value (BRDF or
+// BTDF in the plane of incidence, from the CPU evaluation) reaches the outer circle.
+Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, double light_phi, double exposure,
+                 bool log_scale);
+
+// Viewports of the scene's views in a width x height frame (sphere left, polar right for Both).
+std::vector<Viewport> scene_viewports(ViewKind view, int width, int height);
+
+// Clears the bound framebuffer and draws every view of the scene.
+void draw_scene(const Renderer& renderer, const Scene& scene, int width, int height);
+
+}  // namespace skinlayer

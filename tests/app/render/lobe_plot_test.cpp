@@ -1,0 +1,101 @@
+// The polar lobe plot as the GPU draws it, against the CPU evaluation: along rays in the plane of incidence the
+// plotted radius of the total lobe equals f / peak (linear) or 1 + log10(f / peak) / decades (log), with f from
+// core's BRDF and the solver's tables; and in the picture the filled lobe ends where that radius says.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "app/gl/osmesa_context.h"
+#include "app/render/material_solve.h"
+#include "app/render/render_target.h"
+#include "app/render/renderer.h"
+#include "app/render/scene.h"
+#include "app/render/table_textures.h"
+#include "core/conventions.h"
+
+namespace skinlayer {
+namespace {
+
+constexpr int kSize = 400;
+
+double cpu_lobe_value(const ColorTables& tables, double theta_i, double angle_from_up) {
+  const bool reflection = std::abs(angle_from_up) < 0.5 * kPi;
+  const double theta_o = reflection ? std::abs(angle_from_up) : kPi - std::abs(angle_from_up);
+  const double phi = angle_from_up >= 0.0 ? kPi : 0.0;  // right side = forward
+  double f = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    f += (reflection ? brdf_total(tables, c, theta_i, theta_o, phi) : btdf_total(tables, c, theta_i, theta_o, phi)) / 3;
+  }
+  return f;
+}
+
+// The pixel (x right, y down from the top) at plot radius r along a ray at `angle` from the upward normal.
+std::array<int, 2> pixel_at(double angle, double r) {
+  const std::array<double, 2> extent = view_extent({0, 0, kSize, kSize}, Renderer::kLobeMargin);
+  const double px = r * std::sin(angle), py = r * std::cos(angle);
+  return {static_cast<int>((px / extent[0] + 1.0) * 0.5 * kSize), static_cast<int>((1.0 - py / extent[1]) * 0.5 * kSize)};
+}
+
+class LobePlot : public ::testing::TestWithParam<bool> {};
+
+TEST_P(LobePlot, RadiusAlongRaysMatchesCpu) {
+  const bool log_scale = GetParam();
+  ColorMaterial material;
+  material.layer.tau = optical_depth_from_transparency(0.3);
+  const double theta_i = degrees_to_radians(50.0);
+  const ColorTables tables = solve_color(material, theta_i);
+  gl::OsmesaContext context(kSize, kSize);
+  Renderer renderer;
+  renderer.upload(make_table_textures(tables));
+  Scene scene = make_scene(tables, ViewKind::Polar, theta_i, 0.0, 1.0, log_scale);
+  scene.lobes.linear_output = true;
+  RenderTarget target(kSize, kSize, PixelFormat::Rgba32F);
+  target.bind();
+  draw_scene(renderer, scene, kSize, kSize);
+  RenderTarget::unbind();
+  const std::vector<float> radii = target.read_rgba32f();
+  int checked = 0;
+  for (double degrees : {-80.0, -45.0, -10.0, 20.0, 50.0, 75.0, 110.0, 150.0, 170.0, -150.0}) {
+    const double angle = degrees_to_radians(degrees);
+    const double f = cpu_lobe_value(tables, theta_i, angle);
+    double expected = f / scene.lobes.peak;
+    if (log_scale) expected = std::max(0.0, 1.0 + std::log10(f / scene.lobes.peak) / scene.lobes.decades);
+    const auto [x, y] = pixel_at(angle, 0.6);
+    const float gpu = radii[(static_cast<std::size_t>(y) * kSize + x) * 4];
+    // The pixel centre lies within half a pixel of the ray; allow for that angular offset and float evaluation.
+    EXPECT_NEAR(gpu, expected, 1e-2 * expected + 2e-3) << "ray at " << degrees << " degrees";
+    ++checked;
+  }
+  EXPECT_EQ(checked, 10);
+
+  // The drawn picture: along each ray the lobe fill ends within two pixels of the CPU radius.
+  scene.lobes.linear_output = false;
+  RenderTarget picture(kSize, kSize, PixelFormat::Rgba8);
+  picture.bind();
+  draw_scene(renderer, scene, kSize, kSize);
+  RenderTarget::unbind();
+  const std::vector<std::uint8_t> rgba = picture.read_rgba8();
+  const std::array<double, 2> extent = view_extent({0, 0, kSize, kSize}, Renderer::kLobeMargin);
+  const double pixel = 2.0 * extent[0] / kSize;
+  for (double degrees : {-60.0, 30.0, 65.0, 135.0}) {
+    const double angle = degrees_to_radians(degrees);
+    const double f = cpu_lobe_value(tables, theta_i, angle);
+    const double expected = log_scale ? std::max(0.0, 1.0 + std::log10(f / scene.lobes.peak) / scene.lobes.decades)
+                                      : f / scene.lobes.peak;
+    if (expected < 0.1) continue;
+    double last_filled = 0.0;
+    for (double r = 0.02; r < 1.05; r += 0.25 * pixel) {
+      const auto [x, y] = pixel_at(angle, r);
+      const std::uint8_t* p = &rgba[(static_cast<std::size_t>(y) * kSize + x) * 4];
+      const bool background = std::abs(p[0] - p[2]) < 40 && std::abs(p[0] - p[1]) < 40;  // grey grid or backdrop
+      if (!background) last_filled = r;
+    }
+    EXPECT_NEAR(last_filled, expected, 2.5 * pixel) << "ray at " << degrees << " degrees";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scales, LobePlot, ::testing::Values(false, true));
+
+}  // namespace
+}  // namespace skinlayer

@@ -1,0 +1,68 @@
+// skinlayer render writes a PNG that decodes at the requested size and is not blank; a path that cannot be written
+// is a clear one-line error.
+#include <gtest/gtest.h>
+#include <stb_image.h>  // libstb.so holds the implementation
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace skinlayer {
+namespace {
+
+struct CommandResult {
+  int status;
+  std::string err;
+};
+
+CommandResult run_skinlayer(const std::string& arguments) {
+  const std::filesystem::path err = std::filesystem::temp_directory_path() / "skinlayer_render_test.err";
+  const std::string command = std::string(SKINLAYER_EXECUTABLE) + " " + arguments + " > /dev/null 2> " + err.string();
+  const int status = std::system(command.c_str());
+  std::ifstream in(err);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WEXITSTATUS(status), text.str()};
+}
+
+TEST(PngExport, RenderWritesADecodablePictureOfTheRequestedSize) {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "skinlayer_render_test.png";
+  std::filesystem::remove(out);
+  const CommandResult result = run_skinlayer("render --size 300x200 --albedo 0.9,0.6,0.5 --light-theta 30 -o " + out.string());
+  ASSERT_EQ(result.status, 0) << result.err;
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(out.c_str(), &width, &height, &channels, 4);
+  ASSERT_NE(pixels, nullptr);
+  EXPECT_EQ(width, 300);
+  EXPECT_EQ(height, 200);
+  double sum = 0.0, sum2 = 0.0;
+  const int count = width * height;
+  for (int k = 0; k < count; ++k) {
+    const double luma = pixels[4 * k] + pixels[4 * k + 1] + pixels[4 * k + 2];
+    sum += luma;
+    sum2 += luma * luma;
+  }
+  stbi_image_free(pixels);
+  const double variance = sum2 / count - (sum / count) * (sum / count);
+  EXPECT_GT(variance, 100.0);  // not blank
+}
+
+TEST(PngExport, UnwritablePathIsAClearError) {
+  const CommandResult result = run_skinlayer("render --size 64x64 -o /nonexistent-folder/x.png");
+  EXPECT_NE(result.status, 0);
+  EXPECT_NE(result.err.find("/nonexistent-folder/x.png"), std::string::npos) << result.err;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+}
+
+TEST(PngExport, BadRenderFlagsNameTheFlag) {
+  EXPECT_NE(run_skinlayer("render --size 10x10 -o /tmp/x.png").err.find("size"), std::string::npos);
+  EXPECT_NE(run_skinlayer("render --view cube -o /tmp/x.png").err.find("view"), std::string::npos);
+  EXPECT_NE(run_skinlayer("render --albedo 0.5,2,0.5 -o /tmp/x.png").err.find("albedo"), std::string::npos);
+  EXPECT_NE(run_skinlayer("render").err.find("-o"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace skinlayer
