@@ -16,7 +16,7 @@ struct InterfaceAlbedo {
 // into  F-or-(1-F) * G1(wi) G1(wo) * |wi.h| / (|wi.n| h.n)  (Walter et al. 2007, eqs. 14 and 17), so the
 // integration is smooth apart from the visibility cut-offs. Gauss-Legendre in u = 1 - exp(-r^2/sigma^2) and in the
 // slope azimuth (over half the circle: the integrand is mirror-symmetric about wi's plane of incidence). At eta = 1 the interface is absent: reflectance 0, transmittance 1.
-InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& wi, int radial_nodes = 96,
-                                 int azimuth_nodes = 96);
+InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& wi, int radial_nodes = 48,
+                                 int azimuth_nodes = 48);
 
 }  // namespace skinlayer

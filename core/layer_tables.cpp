@@ -71,6 +71,65 @@ double LayerTables::interpolate(std::span<const double> table, int m, double the
   return value;
 }
 
+LayerTables LayerTables::refined(int factor) const {
+  if (factor < 1) throw std::invalid_argument("LayerTables::refined: factor must be at least 1");
+  const int k = grid_size_;
+  const int fine = factor * (k - 1) + 1;
+  // On the shared map, fine sample j sits at coarse coordinate j / factor: cell j / factor, fraction (j % factor) /
+  // factor. Its four taps and weights are those of interpolate(), with the same continuation past both ends.
+  struct Taps {
+    int index[4];
+    double weight[4];
+    double parity_sign[4];  // 1, or (-1)^m for the tap continued across the normal
+  };
+  std::vector<Taps> taps(fine);
+  for (int j = 0; j < fine; ++j) {
+    const int cell = std::min(j / factor, k - 2);
+    Taps& t = taps[j];
+    catmull_rom_weights(static_cast<double>(j - cell * factor) / factor, t.weight);
+    for (int a = 0; a < 4; ++a) {
+      t.index[a] = cell - 1 + a;
+      t.parity_sign[a] = 0.0;
+    }
+    if (t.index[0] < 0) {
+      t.index[0] = 1;
+      t.parity_sign[0] = 1.0;
+    }
+    if (t.index[3] > k - 1) t.index[3] = k - 2;
+  }
+  const auto refine = [&](std::span<const double> table) {
+    std::vector<double> result(static_cast<std::size_t>(modes_) * fine * fine);
+    std::vector<double> rows(static_cast<std::size_t>(k) * fine);  // coarse theta_i x fine theta_o
+    for (int m = 0; m < modes_; ++m) {
+      const double parity = azimuth_parity(m);
+      const double* base = table.data() + static_cast<std::size_t>(m) * k * k;
+      for (int i = 0; i < k; ++i) {
+        for (int o = 0; o < fine; ++o) {
+          double value = 0.0;
+          for (int a = 0; a < 4; ++a) {
+            const double sign = taps[o].parity_sign[a] != 0.0 ? parity : 1.0;
+            value += taps[o].weight[a] * sign * base[i * k + taps[o].index[a]];
+          }
+          rows[static_cast<std::size_t>(i) * fine + o] = value;
+        }
+      }
+      double* out = result.data() + static_cast<std::size_t>(m) * fine * fine;
+      for (int i = 0; i < fine; ++i) {
+        for (int o = 0; o < fine; ++o) {
+          double value = 0.0;
+          for (int a = 0; a < 4; ++a) {
+            const double sign = taps[i].parity_sign[a] != 0.0 ? parity : 1.0;
+            value += taps[i].weight[a] * sign * rows[static_cast<std::size_t>(taps[i].index[a]) * fine + o];
+          }
+          out[static_cast<std::size_t>(i) * fine + o] = value;
+        }
+      }
+    }
+    return result;
+  };
+  return LayerTables(fine, modes_, refine(reflection_), refine(transmission_));
+}
+
 double LayerTables::sum_modes(std::span<const double> table, double theta_i, double theta_o, double phi) const {
   double value = 0.0;
   for (int m = 0; m < modes_; ++m) value += interpolate(table, m, theta_i, theta_o) * std::cos(m * phi);

@@ -37,6 +37,11 @@ class LayerTables {
   double brdf_subsurface(double theta_i, double theta_o, double phi) const;
   double btdf(double theta_i, double theta_o, double phi) const;
 
+  // The same tables on a grid `factor` times finer, K' = factor (K - 1) + 1 points on the same map: every value is
+  // this table's spline at the finer grid angle, so a bilinear lookup of the result approximates the spline to
+  // O((h/factor)^2). Built separably: one 1-D Catmull-Rom pass per axis.
+  LayerTables refined(int factor) const;
+
   // The m-th azimuthal coefficient, spline-interpolated.
   double reflection_mode(int m, double theta_i, double theta_o) const;
   double transmission_mode(int m, double theta_i, double theta_o) const;

@@ -42,12 +42,16 @@ Geometry classify(const Material& material) {
     case BottomKind::Air:
       geometry.base = material.bottom_eta() == 1.0 ? Base::Open : Base::Rough;
       break;
-    case BottomKind::Matched: geometry.base = Base::Open; break;
-    case BottomKind::Lambert: geometry.base = Base::Lambert; break;
+    case BottomKind::Matched:
+      geometry.base = Base::Open;
+      break;
+    case BottomKind::Lambert:
+      geometry.base = Base::Lambert;
+      break;
   }
   geometry.bottom = {1.0 / material.bottom_eta(), material.bottom_sigma()};
-  geometry.bottom_mirrors_top =
-      geometry.base == Base::Rough && material.bottom_eta() == material.eta && material.bottom_sigma() == material.sigma;
+  geometry.bottom_mirrors_top = geometry.base == Base::Rough && material.bottom_eta() == material.eta &&
+                                material.bottom_sigma() == material.sigma;
   return geometry;
 }
 
@@ -83,7 +87,8 @@ class LayerSolver {
     Eigen::MatrixXd transmission;  // K_out x K_in
     NodeField field;
   };
-  ModeResult solve_mode(int m) const;
+  // Mode m for single-scattering albedo `albedo` (everything projected at construction is albedo-independent).
+  ModeResult solve_mode(int m, double albedo) const;
 
   const QuadratureRule& quadrature() const { return quadrature_; }
   const Geometry& geometry() const { return geometry_; }
@@ -94,9 +99,7 @@ class LayerSolver {
 
   Geometry geometry_;
   double tau_;
-  double albedo_;
   double lambert_;
-  bool conservative_;  // Omega = 1
   QuadratureRule quadrature_;
   std::vector<double> mu_in_, mu_out_;
   Eigen::VectorXd beam_attenuation_;  // e^{-tau/mu0} per incident direction
@@ -112,9 +115,7 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
                          std::span<const double> mu_out)
     : geometry_(classify(material)),
       tau_(material.tau),
-      albedo_(std::min(material.albedo, kMaxSolvedAlbedo)),
       lambert_(material.bottom.lambert_albedo),
-      conservative_(material.albedo == 1.0),
       quadrature_(double_gauss_half_range(resolution.ordinates)),
       mu_in_(mu_in.begin(), mu_in.end()),
       mu_out_(mu_out.begin(), mu_out.end()),
@@ -122,7 +123,8 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
   for (double& mu : mu_in_) mu = std::max(mu, kMinCosine);
   for (double& mu : mu_out_) mu = std::max(mu, kMinCosine);
   beam_attenuation_ = attenuation(mu_in_, tau_);
-  beam_flux_ = Eigen::Map<const Eigen::VectorXd>(mu_in_.data(), static_cast<Eigen::Index>(mu_in_.size())).cwiseInverse();
+  beam_flux_ =
+      Eigen::Map<const Eigen::VectorXd>(mu_in_.data(), static_cast<Eigen::Index>(mu_in_.size())).cwiseInverse();
 
   const CosineProjector surface(resolution.max_modes, resolution.interface_azimuths);
   const CosineProjector phase(resolution.max_modes, resolution.phase_azimuths);
@@ -192,15 +194,17 @@ Eigen::MatrixXd LayerSolver::lambert_reflection() const {
   return row.replicate(n, 1);
 }
 
-LayerSolver::ModeResult LayerSolver::solve_mode(int m) const {
+LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
+  const bool conservative = albedo == 1.0;
+  const double solved_albedo = std::min(albedo, kMaxSolvedAlbedo);
   const std::span<const double> nodes = quadrature_.nodes;
   const std::span<const double> weights = quadrature_.weights;
   const Eigen::Index n = quadrature_.size();
   const Eigen::Index count_in = static_cast<Eigen::Index>(mu_in_.size());
   const Eigen::Index count_out = static_cast<Eigen::Index>(mu_out_.size());
-  const double scattering = albedo_ * fourier_azimuth_weight(m);
+  const double scattering = solved_albedo * fourier_azimuth_weight(m);
   SlabEigenSolution eigen = slab_eigen(nodes, weights, phase_.same[m], phase_.opposite[m], scattering);
-  if (m == 0 && conservative_ && std::isinf(tau_)) {
+  if (m == 0 && conservative && std::isinf(tau_)) {
     // Conservative scattering in a semi-infinite slab: the slowest mode of the clamped albedo tends to the exact
     // bounded solution k = 0, u = constant (exact on the quadrature, since mode 0's phase matrix conserves energy).
     eigen.k(0) = 0.0;
@@ -228,8 +232,8 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m) const {
   }
   BeamParticular beam;
   if (geometry_.top_open) {
-    Eigen::MatrixXd source_up = albedo_ * beam_up_nodes_[m] * beam_flux_.asDiagonal();
-    Eigen::MatrixXd source_down = albedo_ * beam_down_nodes_[m] * beam_flux_.asDiagonal();
+    Eigen::MatrixXd source_up = solved_albedo * beam_up_nodes_[m] * beam_flux_.asDiagonal();
+    Eigen::MatrixXd source_down = solved_albedo * beam_down_nodes_[m] * beam_flux_.asDiagonal();
     if (m == 0) {
       // Scale the beam's first-scattering source so that the quadrature scatters exactly the energy it removes:
       // c_0 sum_j a_j (p^0(mu_j, -mu0) + p^0(-mu_j, -mu0)) = 1, as mode 0's phase matrix does between nodes.
@@ -264,7 +268,8 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m) const {
   } else {
     Eigen::MatrixXd upward_at_bottom;
     if (!infinite && geometry_.base == Base::Rough) {
-      upward_at_bottom = r_bottom_rows_[m] * field.down_bottom + r_bottom_beam_rows_[m] * beam_attenuation_.asDiagonal();
+      upward_at_bottom =
+          r_bottom_rows_[m] * field.down_bottom + r_bottom_beam_rows_[m] * beam_attenuation_.asDiagonal();
     } else if (!infinite && lambert_mode) {
       Eigen::RowVectorXd flux(count_in);  // diffuse plus direct flux reaching the base
       for (Eigen::Index k = 0; k < count_in; ++k) {
@@ -274,7 +279,7 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m) const {
       }
       upward_at_bottom = (lambert_ * kInvPi) * flux.replicate(count_out, 1);
     }
-    exit.beam_row = albedo_ * beam_rows_up_[m] * beam_flux_.asDiagonal();
+    exit.beam_row = solved_albedo * beam_rows_up_[m] * beam_flux_.asDiagonal();
     result.reflection = upward_radiance_at_top(problem, field, exit, upward_at_bottom);
   }
 
@@ -289,7 +294,7 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m) const {
     if (!geometry_.top_open) {
       downward_at_top = t_source_exterior_[m] + r_top_rows_[m] * field.up_top;
     } else {
-      exit.beam_row = albedo_ * beam_rows_down_[m] * beam_flux_.asDiagonal();
+      exit.beam_row = solved_albedo * beam_rows_down_[m] * beam_flux_.asDiagonal();
     }
     if (!geometry_.top_open) exit.beam_row.resize(0, 0);
     result.transmission = downward_radiance_at_bottom(problem, field, exit, downward_at_top);
@@ -328,10 +333,10 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
     const int needed = std::max({16, from_phase, from_surface});
     resolution.ordinates = std::clamp((needed + 3) / 4 * 4, 16, 64);  // a multiple of 4 at or above the need
   }
-  resolution.max_modes = options.max_modes > 0
-                             ? options.max_modes
-                             : std::clamp(std::max({24, ceil_to_int(5.4 / forwardness) + 2, ceil_to_int(4.0 / sigma_min)}),
-                                          24, 128);
+  resolution.max_modes =
+      options.max_modes > 0
+          ? options.max_modes
+          : std::clamp(std::max({24, ceil_to_int(5.4 / forwardness) + 2, ceil_to_int(4.0 / sigma_min)}), 24, 128);
   resolution.table_size = options.table_size > 0 ? options.table_size : kDefaultTableSize;
   resolution.interface_azimuths = std::max({2 * resolution.max_modes + 1, ceil_to_int(24.0 / sigma_min) + 1, 49});
   resolution.phase_azimuths = std::max({2 * resolution.max_modes + 1, ceil_to_int(20.0 / forwardness) + 1, 49});
@@ -340,52 +345,64 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
 
 namespace {
 
-// The tables for one resolution; `converged` tells whether the Fourier series met its tolerance before the cap.
+// The tables for one resolution and several albedos (the projections are shared); `converged` tells whether every
+// Fourier series met its tolerance before the cap.
 struct TableSolve {
-  LayerTables tables;
+  std::vector<LayerTables> tables;
   bool converged;
 };
 
-TableSolve solve_tables(const Material& material, const Resolution& resolution, double tolerance) {
+TableSolve solve_tables(const Material& material, std::span<const double> albedos, const Resolution& resolution,
+                        double tolerance) {
   const int k = resolution.table_size;
   std::vector<double> grid(k);
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
   const LayerSolver solver(material, resolution, grid, grid);
 
   const std::size_t plane = static_cast<std::size_t>(k) * k;
-  std::vector<double> reflection, transmission;
-  reflection.reserve(plane * resolution.max_modes);
-  transmission.reserve(plane * resolution.max_modes);
-  double peak_reflection = 0.0, peak_transmission = 0.0;
-  int quiet_modes = 0;
-  int modes = 0;
-  for (int m = 0; m < resolution.max_modes && quiet_modes < 2; ++m) {
-    const LayerSolver::ModeResult mode = solver.solve_mode(m);
-    for (int i = 0; i < k; ++i) {
-      for (int o = 0; o < k; ++o) {
-        reflection.push_back(mode.reflection(o, i));
-        transmission.push_back(mode.transmission(o, i));
+  TableSolve result{{}, true};
+  for (const double albedo : albedos) {
+    std::vector<double> reflection, transmission;
+    reflection.reserve(plane * resolution.max_modes);
+    transmission.reserve(plane * resolution.max_modes);
+    double peak_reflection = 0.0, peak_transmission = 0.0;
+    int quiet_modes = 0;
+    int modes = 0;
+    for (int m = 0; m < resolution.max_modes && quiet_modes < 2; ++m) {
+      const LayerSolver::ModeResult mode = solver.solve_mode(m, albedo);
+      for (int i = 0; i < k; ++i) {
+        for (int o = 0; o < k; ++o) {
+          reflection.push_back(mode.reflection(o, i));
+          transmission.push_back(mode.transmission(o, i));
+        }
       }
+      const double r = mode.reflection.cwiseAbs().maxCoeff();
+      const double t = mode.transmission.cwiseAbs().maxCoeff();
+      if (!std::isfinite(r) || !std::isfinite(t)) {
+        throw std::runtime_error("solve: Fourier mode " + std::to_string(m) + " is not finite");
+      }
+      if (m == 0) {
+        peak_reflection = r;
+        peak_transmission = t;
+      }
+      const bool quiet = r <= tolerance * peak_reflection && t <= tolerance * peak_transmission;
+      quiet_modes = quiet ? quiet_modes + 1 : 0;
+      modes = m + 1;
     }
-    const double r = mode.reflection.cwiseAbs().maxCoeff();
-    const double t = mode.transmission.cwiseAbs().maxCoeff();
-    if (!std::isfinite(r) || !std::isfinite(t)) {
-      throw std::runtime_error("solve: Fourier mode " + std::to_string(m) + " is not finite");
-    }
-    if (m == 0) {
-      peak_reflection = r;
-      peak_transmission = t;
-    }
-    const bool quiet = r <= tolerance * peak_reflection && t <= tolerance * peak_transmission;
-    quiet_modes = quiet ? quiet_modes + 1 : 0;
-    modes = m + 1;
+    result.converged = result.converged && quiet_modes >= 2;
+    result.tables.emplace_back(k, modes, std::move(reflection), std::move(transmission));
   }
-  return {LayerTables(k, modes, std::move(reflection), std::move(transmission)), quiet_modes >= 2};
+  return result;
+}
+
+void check_albedos(std::span<const double> albedos) {
+  for (const double albedo : albedos) check_parameter(parameter_info("albedo"), albedo);
 }
 
 }  // namespace
 
-LayerTables solve(const Material& material, const SolveOptions& options) {
+std::vector<LayerTables> solve(const Material& material, std::span<const double> albedos, const SolveOptions& options) {
+  check_albedos(albedos);
   Resolution resolution = choose_resolution(material, options);
   if (resolution.table_size < 4) {
     throw ParameterError("table_size = " + std::to_string(resolution.table_size) +
@@ -393,14 +410,18 @@ LayerTables solve(const Material& material, const SolveOptions& options) {
   }
   // The automatic cap on Fourier modes suits most materials; thin, strongly forward-scattering layers seen near
   // grazing need more, so an unconverged series is solved again with twice the cap (up to 256 modes).
-  TableSolve result = solve_tables(material, resolution, options.fourier_tolerance);
+  TableSolve result = solve_tables(material, albedos, resolution, options.fourier_tolerance);
   while (!result.converged && options.max_modes == 0 && resolution.max_modes < 256) {
     SolveOptions doubled = options;
     doubled.max_modes = 2 * resolution.max_modes;
     resolution = choose_resolution(material, doubled);
-    result = solve_tables(material, resolution, options.fourier_tolerance);
+    result = solve_tables(material, albedos, resolution, options.fourier_tolerance);
   }
   return std::move(result.tables);
+}
+
+LayerTables solve(const Material& material, const SolveOptions& options) {
+  return std::move(solve(material, std::span<const double>(&material.albedo, 1), options).front());
 }
 
 double brdf_surface(const Material& material, double theta_i, double theta_o, double phi) {
@@ -409,15 +430,17 @@ double brdf_surface(const Material& material, double theta_i, double theta_o, do
   return microfacet_brdf({material.eta, material.sigma}, wi, wo);
 }
 
-std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std::span<const double> theta_i,
-                                                  const SolveOptions& options) {
+std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& material,
+                                                               std::span<const double> theta_i,
+                                                               std::span<const double> albedos,
+                                                               const SolveOptions& options) {
+  check_albedos(albedos);
   SolveOptions mode_zero = options;
   mode_zero.max_modes = 1;  // hemispherical fractions need only the azimuthal mean
   const Resolution resolution = choose_resolution(material, mode_zero);
   std::vector<double> mu0(theta_i.size());
   for (std::size_t k = 0; k < theta_i.size(); ++k) mu0[k] = std::cos(theta_i[k]);
   const LayerSolver solver(material, resolution, mu0, {});
-  const LayerSolver::ModeResult mode = solver.solve_mode(0);
   const Geometry& geometry = solver.geometry();
   const QuadratureRule& q = solver.quadrature();
 
@@ -434,44 +457,59 @@ std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std:
     }
   }
   const bool direct_path = geometry.top_open && !std::isinf(material.tau);
-  std::vector<DirectionalAlbedo> rows;
-  for (std::size_t k = 0; k < theta_i.size(); ++k) {
-    const Eigen::Index col = static_cast<Eigen::Index>(k);
-    const Vec3 wi = direction_from_angles(theta_i[k], 0.0);
-    DirectionalAlbedo row{};
-    row.theta_i = theta_i[k];
-    const InterfaceAlbedo entry = interface_albedo(geometry.top, wi);
-    row.reflectance_surface = entry.reflectance;
-    row.interface_loss = entry.loss();
-    double up = 0.0, down = 0.0;
-    for (int j = 0; j < q.size(); ++j) {
-      const double flux_weight = 2.0 * kPi * q.nodes[j] * q.weights[j];
-      const double up_flux = flux_weight * mode.field.up_top(j, col);
-      const double down_flux = flux_weight * mode.field.down_bottom(j, col);
-      up += up_flux * top_inside[j].transmittance;
-      down += down_flux * bottom_inside[j].transmittance;
-      row.interface_loss += up_flux * top_inside[j].loss();
-      if (geometry.base == Base::Rough) row.interface_loss += down_flux * bottom_inside[j].loss();
-    }
-    row.reflectance_subsurface = up;
-    const double direct = direct_path ? std::exp(-material.tau / std::max(mu0[k], kMinCosine)) : 0.0;
-    switch (geometry.base) {
-      case Base::Lambert: row.transmittance = 0.0; break;
-      case Base::Open: row.transmittance = down + direct; break;
-      case Base::Rough: {
-        const double sin0 = std::sqrt(std::max(0.0, 1.0 - mu0[k] * mu0[k]));
-        const InterfaceAlbedo beam_exit =
-            direct > 0.0 ? interface_albedo(geometry.bottom, Vec3(sin0, 0.0, mu0[k])) : InterfaceAlbedo{0.0, 0.0};
-        row.transmittance = down + direct * beam_exit.transmittance;
-        row.interface_loss += direct * (direct > 0.0 ? beam_exit.loss() : 0.0);
-        break;
+  std::vector<std::vector<DirectionalAlbedo>> result;
+  for (const double albedo : albedos) {
+    const LayerSolver::ModeResult mode = solver.solve_mode(0, albedo);
+    std::vector<DirectionalAlbedo> rows;
+    for (std::size_t k = 0; k < theta_i.size(); ++k) {
+      const Eigen::Index col = static_cast<Eigen::Index>(k);
+      const Vec3 wi = direction_from_angles(theta_i[k], 0.0);
+      DirectionalAlbedo row{};
+      row.theta_i = theta_i[k];
+      const InterfaceAlbedo entry = interface_albedo(geometry.top, wi);
+      row.reflectance_surface = entry.reflectance;
+      row.interface_loss = entry.loss();
+      double up = 0.0, down = 0.0;
+      for (int j = 0; j < q.size(); ++j) {
+        const double flux_weight = 2.0 * kPi * q.nodes[j] * q.weights[j];
+        const double up_flux = flux_weight * mode.field.up_top(j, col);
+        const double down_flux = flux_weight * mode.field.down_bottom(j, col);
+        up += up_flux * top_inside[j].transmittance;
+        down += down_flux * bottom_inside[j].transmittance;
+        row.interface_loss += up_flux * top_inside[j].loss();
+        if (geometry.base == Base::Rough) row.interface_loss += down_flux * bottom_inside[j].loss();
       }
+      row.reflectance_subsurface = up;
+      const double direct = direct_path ? std::exp(-material.tau / std::max(mu0[k], kMinCosine)) : 0.0;
+      switch (geometry.base) {
+        case Base::Lambert:
+          row.transmittance = 0.0;
+          break;
+        case Base::Open:
+          row.transmittance = down + direct;
+          break;
+        case Base::Rough: {
+          const double sin0 = std::sqrt(std::max(0.0, 1.0 - mu0[k] * mu0[k]));
+          const InterfaceAlbedo beam_exit =
+              direct > 0.0 ? interface_albedo(geometry.bottom, Vec3(sin0, 0.0, mu0[k])) : InterfaceAlbedo{0.0, 0.0};
+          row.transmittance = down + direct * beam_exit.transmittance;
+          row.interface_loss += direct * (direct > 0.0 ? beam_exit.loss() : 0.0);
+          break;
+        }
+      }
+      if (std::isinf(material.tau)) row.transmittance = 0.0;
+      row.absorptance = 1.0 - row.reflectance() - row.transmittance;
+      rows.push_back(row);
     }
-    if (std::isinf(material.tau)) row.transmittance = 0.0;
-    row.absorptance = 1.0 - row.reflectance() - row.transmittance;
-    rows.push_back(row);
+    result.push_back(std::move(rows));
   }
-  return rows;
+  return result;
+}
+
+std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std::span<const double> theta_i,
+                                                  const SolveOptions& options) {
+  return std::move(
+      directional_albedo(material, theta_i, std::span<const double>(&material.albedo, 1), options).front());
 }
 
 }  // namespace skinlayer

@@ -33,6 +33,12 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
 // Solves the layer. Throws ParameterError for an invalid material.
 LayerTables solve(const Material& material, const SolveOptions& options = {});
 
+// Solves the layer once per single-scattering albedo in `albedos` (material.albedo is ignored), sharing every
+// albedo-independent step (interface and phase-function projections): an RGB albedo costs far less than three
+// solves. One LayerTables per albedo, in order.
+std::vector<LayerTables> solve(const Material& material, std::span<const double> albedos,
+                               const SolveOptions& options = {});
+
 // The surface term: the top interface's rough-dielectric BRDF (Fresnel x Beckmann x Smith), in 1/sr.
 double brdf_surface(const Material& material, double theta_i, double theta_o, double phi);
 
@@ -48,5 +54,11 @@ struct DirectionalAlbedo {
 };
 std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std::span<const double> theta_i,
                                                   const SolveOptions& options = {});
+
+// The same for several albedos at once (material.albedo is ignored): one row list per albedo, in order.
+std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& material,
+                                                               std::span<const double> theta_i,
+                                                               std::span<const double> albedos,
+                                                               const SolveOptions& options = {});
 
 }  // namespace skinlayer

@@ -11,4 +11,4 @@
 //                  and the texture coordinate is (x (size - 1) + 0.5) / size
 // size             SKINLAYER_TABLE_UPSAMPLE (K - 1) + 1 texels per axis, resampled from the K-point spline tables
 // channels         R, G, B: the layer solved with the red, green and blue single-scattering albedo; A unused
-#define SKINLAYER_TABLE_UPSAMPLE 4
+#define SKINLAYER_TABLE_UPSAMPLE 2

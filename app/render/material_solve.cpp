@@ -1,5 +1,6 @@
 #include "app/render/material_solve.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace skinlayer {
@@ -9,20 +10,20 @@ ColorTables solve_color(const ColorMaterial& material, double theta_i) {
   ColorTables result;
   result.material = material;
   result.albedo_theta_i = theta_i;
+  // One solve for the distinct albedo values; the channels index into it.
+  std::vector<double> distinct;
+  std::array<std::size_t, 3> index{};
   for (int c = 0; c < 3; ++c) {
-    int same = -1;
-    for (int d = 0; d < c; ++d) {
-      if (material.albedo_rgb[d] == material.albedo_rgb[c]) same = d;
-    }
-    if (same >= 0) {
-      result.channels[c] = result.channels[same];
-      result.albedo[c] = result.albedo[same];
-      continue;
-    }
-    Material layer = material.layer;
-    layer.albedo = material.albedo_rgb[c];
-    result.channels[c] = solve(layer);
-    result.albedo[c] = directional_albedo(layer, std::vector<double>{theta_i})[0];
+    const auto found = std::find(distinct.begin(), distinct.end(), material.albedo_rgb[c]);
+    index[c] = static_cast<std::size_t>(found - distinct.begin());
+    if (found == distinct.end()) distinct.push_back(material.albedo_rgb[c]);
+  }
+  const std::vector<LayerTables> tables = solve(material.layer, distinct);
+  const std::vector<std::vector<DirectionalAlbedo>> albedo =
+      directional_albedo(material.layer, std::vector<double>{theta_i}, distinct);
+  for (int c = 0; c < 3; ++c) {
+    result.channels[c] = tables[index[c]];
+    result.albedo[c] = albedo[index[c]].front();
   }
   result.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

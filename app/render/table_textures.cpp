@@ -1,42 +1,35 @@
 #include "app/render/table_textures.h"
 
 #include <algorithm>
-#include <cmath>
+#include <array>
+#include <span>
 
-#include "core/conventions.h"
 #include "table_layout.h"
 
 namespace skinlayer {
 
 TableTextureData make_table_textures(const ColorTables& tables) {
   TableTextureData data;
-  const int grid = tables.channels[0].grid_size();
-  data.size = SKINLAYER_TABLE_UPSAMPLE * (grid - 1) + 1;
   for (const LayerTables& channel : tables.channels) data.modes = std::max(data.modes, channel.modes());
-  const std::size_t size = static_cast<std::size_t>(data.size);
-  data.reflection.assign(static_cast<std::size_t>(data.modes) * size * size * 4, 0.0f);
-  data.transmission.assign(data.reflection.size(), 0.0f);
-  std::vector<double> theta(size);
-  for (std::size_t j = 0; j < size; ++j) {
-    const double x = static_cast<double>(j) / static_cast<double>(size - 1);
-    theta[j] = 0.5 * kPi * std::sin(0.5 * kPi * x);
-  }
+  std::vector<LayerTables> distinct;  // channels with equal albedo share one refined table
+  std::array<std::size_t, 3> source{};
   for (int c = 0; c < 3; ++c) {
-    const LayerTables& channel = tables.channels[c];
-    const int same = c > 0 && tables.material.albedo_rgb[c] == tables.material.albedo_rgb[c - 1] ? c - 1 : -1;
-    for (int m = 0; m < data.modes; ++m) {
-      for (std::size_t i = 0; i < size; ++i) {
-        for (std::size_t o = 0; o < size; ++o) {
-          const std::size_t texel = ((static_cast<std::size_t>(m) * size + i) * size + o) * 4;
-          if (same >= 0) {
-            data.reflection[texel + c] = data.reflection[texel + same];
-            data.transmission[texel + c] = data.transmission[texel + same];
-          } else if (m < channel.modes()) {
-            data.reflection[texel + c] = static_cast<float>(channel.reflection_mode(m, theta[i], theta[o]));
-            data.transmission[texel + c] = static_cast<float>(channel.transmission_mode(m, theta[i], theta[o]));
-          }
-        }
-      }
+    const bool same = c > 0 && tables.material.albedo_rgb[c] == tables.material.albedo_rgb[c - 1];
+    if (!same) distinct.push_back(tables.channels[c].refined(SKINLAYER_TABLE_UPSAMPLE));
+    source[c] = distinct.size() - 1;
+  }
+  data.size = distinct.front().grid_size();
+  const std::size_t plane = static_cast<std::size_t>(data.size) * data.size;
+  data.reflection.assign(static_cast<std::size_t>(data.modes) * plane * 4, 0.0f);
+  data.transmission.assign(data.reflection.size(), 0.0f);
+  for (int c = 0; c < 3; ++c) {
+    const LayerTables& refined = distinct[source[c]];
+    const std::span<const double> reflection = refined.reflection_coefficients();
+    const std::span<const double> transmission = refined.transmission_coefficients();
+    const std::size_t values = static_cast<std::size_t>(refined.modes()) * plane;  // [mode][row][column]
+    for (std::size_t v = 0; v < values; ++v) {
+      data.reflection[4 * v + c] = static_cast<float>(reflection[v]);
+      data.transmission[4 * v + c] = static_cast<float>(transmission[v]);
     }
   }
   return data;

@@ -68,3 +68,33 @@ TEST(LayerTables, SplineBetweenGridAnglesMatchesAFinerSolve) {
 
 }  // namespace
 }  // namespace skinlayer
+
+namespace skinlayer {
+namespace {
+
+TEST(LayerTables, RefinedTablesHoldTheSplineAtTheFinerGridAngles) {
+  Material m;
+  m.bottom = parse_bottom("matched");
+  SolveOptions options;
+  options.table_size = 12;
+  const LayerTables coarse = solve(m, options);
+  const LayerTables fine = coarse.refined(3);
+  ASSERT_EQ(fine.grid_size(), 34);
+  ASSERT_EQ(fine.modes(), coarse.modes());
+  for (int m_index : {0, 1, 2}) {
+    for (int i = 0; i < fine.grid_size(); i += 5) {
+      for (int o = 0; o < fine.grid_size(); o += 3) {
+        const double ti = LayerTables::grid_angle(i, fine.grid_size());
+        const double to = LayerTables::grid_angle(o, fine.grid_size());
+        const double expected_r = coarse.reflection_mode(m_index, ti, to);
+        const double expected_t = coarse.transmission_mode(m_index, ti, to);
+        const std::size_t index = (static_cast<std::size_t>(m_index) * fine.grid_size() + i) * fine.grid_size() + o;
+        EXPECT_NEAR(fine.reflection_coefficients()[index], expected_r, 1e-12 * (1.0 + std::abs(expected_r)));
+        EXPECT_NEAR(fine.transmission_coefficients()[index], expected_t, 1e-12 * (1.0 + std::abs(expected_t)));
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skinlayer

@@ -1,0 +1,67 @@
+// Headless frame time and parameter-change latency through OSMesa (llvmpipe), the renderer the window uses too.
+// Run: cmake --build build --target bench && build/tests/bench/bench_render
+#include <benchmark/benchmark.h>
+
+#include "app/gl/gl_api.h"
+#include "app/gl/osmesa_context.h"
+#include "app/render/material_solve.h"
+#include "app/render/render_target.h"
+#include "app/render/renderer.h"
+#include "app/render/scene.h"
+#include "app/render/table_textures.h"
+
+namespace {
+
+using namespace skinlayer;
+
+// One frame of the previewer's picture (sphere and lobes side by side) at N x N, finished (glFinish).
+void BM_HeadlessFrame(benchmark::State& state) {
+  const int size = static_cast<int>(state.range(0));
+  gl::OsmesaContext context(size, size);
+  Renderer renderer;
+  const ColorTables tables = solve_color(ColorMaterial{}, 0.785);
+  renderer.upload(make_table_textures(tables));
+  const Scene scene = make_scene(tables, ViewKind::Both, 0.785, 3.14159, 1.0, false);
+  RenderTarget target(size, size, PixelFormat::Rgba8);
+  target.bind();
+  for (auto _ : state) {
+    draw_scene(renderer, scene, size, size);
+    glFinish();
+  }
+  state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_HeadlessFrame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// From a parameter change to a finished frame that shows it, at the paper's default material with an RGB albedo
+// (three channel solves), at 512 x 512: solve, texture resampling, upload and draw.
+void BM_ParameterChangeLatency(benchmark::State& state) {
+  const int size = 512;
+  gl::OsmesaContext context(size, size);
+  Renderer renderer;
+  RenderTarget target(size, size, PixelFormat::Rgba8);
+  target.bind();
+  ColorMaterial material;
+  const bool color = state.range(0) == 1;
+  if (color) material.albedo_rgb = {0.95, 0.8, 0.7};
+  double g = 0.8;
+  for (auto _ : state) {
+    g = g == 0.8 ? 0.79 : 0.8;  // a slider step
+    material.layer.g = g;
+    const ColorTables tables = solve_color(material, 0.785);
+    renderer.upload(make_table_textures(tables));
+    draw_scene(renderer, make_scene(tables, ViewKind::Both, 0.785, 3.14159, 1.0, false), size, size);
+    glFinish();
+  }
+}
+BENCHMARK(BM_ParameterChangeLatency)->Arg(0)->Arg(1)->ArgNames({"rgb"})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The CPU resampling of solved tables into the GPU layout.
+void BM_TableTextures(benchmark::State& state) {
+  const ColorTables tables = solve_color(ColorMaterial{}, 0.785);
+  for (auto _ : state) benchmark::DoNotOptimize(make_table_textures(tables));
+}
+BENCHMARK(BM_TableTextures)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
