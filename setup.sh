@@ -2,7 +2,8 @@
 # Installs the Debian 12 packages skinlayer needs, then builds it.
 #
 #   ./setup.sh         install the packages only
-#   ./setup.sh run     install, configure, build and start the previewer (build/skinlayer)
+#   ./setup.sh run     install, configure, build and start the previewer (build/skinlayer; without a display it
+#                      says so and points to the headless `skinlayer render`)
 #   ./setup.sh test    install, configure, build everything and run every test
 #
 # Idempotent: apt is skipped when every package is already installed, and an existing build folder is reused.
@@ -12,7 +13,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 readonly packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev libglm-dev libglfw3-dev libosmesa6-dev libimgui-dev libstb-dev
-  libgtest-dev libbenchmark-dev xvfb xauth
+  libgtest-dev libbenchmark-dev xvfb xauth fonts-dejavu-core
 )
 readonly build_dir=build
 
@@ -51,7 +52,7 @@ case "${1:-}" in
     ;;
   run)
     configure
-    cmake --build "$build_dir" -j2 --target skinlayer
+    cmake --build "$build_dir" -j2 --target skinlayer skinlayer-window
     exec "$build_dir/skinlayer" "${@:2}"
     ;;
   test)

@@ -9,15 +9,15 @@
 #include "app/cli/errors.h"
 #include "app/cli/eval_command.h"
 #include "app/cli/help_command.h"
-#include "app/cli/previewer_placeholder.h"
+#include "app/cli/previewer_launcher.h"
 #include "app/cli/quoted.h"
 #include "app/cli/render_command.h"
 
 namespace {
 
-int dispatch(std::span<const std::string_view> arguments) {
+int dispatch(std::span<const std::string_view> arguments, int argc, char** argv) {
   using namespace skinlayer::cli;
-  if (arguments.empty()) return run_previewer_placeholder(std::cerr);
+  if (is_previewer_invocation(arguments)) exec_previewer(argc, argv);  // returns only by throwing
   const std::string_view command = arguments.front();
   const std::span<const std::string_view> rest = arguments.subspan(1);
   if (command == "eval") return run_eval_command(rest, std::cin, std::cout);
@@ -35,5 +35,6 @@ int dispatch(std::span<const std::string_view> arguments) {
 
 int main(int argc, char** argv) {
   const std::vector<std::string_view> arguments(argv + 1, argv + argc);
-  return skinlayer::cli::run_reporting_errors(std::cerr, [&arguments] { return dispatch(arguments); });
+  return skinlayer::cli::run_reporting_errors(std::cerr,
+                                             [&arguments, argc, argv] { return dispatch(arguments, argc, argv); });
 }

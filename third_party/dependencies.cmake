@@ -18,7 +18,8 @@ set(SKINLAYER_IMGUI_BACKENDS "/usr/share/doc/libimgui-dev/examples/backends" CAC
 add_library(skinlayer_imgui_backends STATIC
   ${SKINLAYER_IMGUI_BACKENDS}/imgui_impl_glfw.cpp
   ${SKINLAYER_IMGUI_BACKENDS}/imgui_impl_opengl3.cpp)
-target_include_directories(skinlayer_imgui_backends PUBLIC ${SKINLAYER_IMGUI_BACKENDS})
+# The backends' headers are packaged apart from their sources, in <includedir>/backends.
+target_include_directories(skinlayer_imgui_backends PUBLIC ${SKINLAYER_IMGUI_BACKENDS} ${IMGUI_INCLUDEDIR}/backends)
 target_compile_definitions(skinlayer_imgui_backends PUBLIC IMGUI_IMPL_OPENGL_LOADER_CUSTOM GL_GLEXT_PROTOTYPES)
 target_compile_options(skinlayer_imgui_backends PRIVATE -include GL/glcorearb.h -w)
 target_link_libraries(skinlayer_imgui_backends PUBLIC PkgConfig::IMGUI glfw)

@@ -4,6 +4,7 @@
 #include "app/cli/errors.h"
 #include "app/cli/eval_command.h"
 #include "app/cli/quoted.h"
+#include "app/cli/render_command.h"
 
 namespace skinlayer::cli {
 
@@ -15,11 +16,14 @@ std::string overview_usage() {
          "      BRDF and BTDF at direction pairs: CSV rows theta_i,theta_o,phi (degrees) in, values (1/sr) out.\n"
          "  skinlayer albedo [material flags] [--theta-i LIST]\n"
          "      reflectance, transmittance and absorptance for light from each incidence angle.\n"
+         "  skinlayer render [material flags] [--albedo A | r,g,b] [view flags] -o FILE.png\n"
+         "      the previewer's sphere and polar lobes, rendered offscreen (no display needed) to a PNG.\n"
          "  skinlayer help [COMMAND], skinlayer COMMAND --help\n"
          "      usage of a command, with every flag, its range and default.\n"
          "  skinlayer --version\n"
-         "  skinlayer\n"
-         "      the interactive previewer (not built yet).\n"
+         "  skinlayer [--capture FILE.png [material flags]]\n"
+         "      the interactive previewer (a window; F1 lists its keys). --capture opens it, saves a screenshot of\n"
+         "      the whole window and exits. Without a display it says so: use skinlayer render instead.\n"
          "\n"
          "Exit status: 0 success; 1 malformed input on stdin or a failed computation; 2 a bad command line or a\n"
          "parameter out of range. Every error is one line on stderr.\n";
@@ -36,8 +40,10 @@ int run_help_command(std::span<const std::string_view> arguments, std::ostream& 
     out << eval_usage();
   } else if (command == "albedo") {
     out << albedo_usage();
+  } else if (command == "render") {
+    out << render_usage();
   } else {
-    throw UsageError("unknown command " + quoted(command) + "; the commands are eval and albedo");
+    throw UsageError("unknown command " + quoted(command) + "; the commands are eval, albedo and render");
   }
   return kExitSuccess;
 }

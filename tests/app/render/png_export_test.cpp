@@ -19,7 +19,9 @@ struct CommandResult {
 };
 
 CommandResult run_skinlayer(const std::string& arguments) {
-  const std::filesystem::path err = std::filesystem::temp_directory_path() / "skinlayer_render_test.err";
+  // One stderr file per test: ctest runs the tests of this file in parallel.
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::filesystem::path err = std::filesystem::temp_directory_path() / ("skinlayer_render_" + test + ".err");
   const std::string command = std::string(SKINLAYER_EXECUTABLE) + " " + arguments + " > /dev/null 2> " + err.string();
   const int status = std::system(command.c_str());
   std::ifstream in(err);

@@ -1,0 +1,59 @@
+// The previewer's value state: everything the user can change in the window, as plain values. The UI edits a copy
+// each frame; the solver sees only the part that needs a solve (solve_request(): the material and the light's
+// polar angle, at which the directional albedo is reported).
+#pragma once
+
+#include <string>
+
+#include "app/preview/solve_request.h"
+#include "app/render/material_solve.h"
+#include "app/render/scene.h"
+
+namespace skinlayer {
+
+// What a screenshot holds: the whole window (UI included, at framebuffer resolution), or one view's picture as the
+// renderer drew it (without the UI's labels).
+enum class ExportTarget { Window, Sphere, Plots };
+
+struct LightState {
+  double theta_degrees = 45.0;  // from the view direction, in [0, kMaxLightThetaDegrees]
+  double phi_degrees = 180.0;   // azimuth in the picture plane, in [-180, 180]; 180 = light from the left
+};
+
+struct ViewOptions {
+  ViewKind view = ViewKind::Both;  // which views share the picture area
+  bool log_lobes = false;          // lobe radius: linear in the BSDF, or log over LobeView::decades decades
+  double exposure_stops = 0.0;     // the tone map's linear exposure is 2^stops; in [kMinStops, kMaxStops]
+};
+
+struct ExportOptions {
+  ExportTarget target = ExportTarget::Window;
+  std::string path;  // empty: a timestamped name in the current folder (timestamped_png_name()) at each save
+};
+
+// The paper's default material (σ 0.5, η 1.4, T 0.2, Ω 1 in every channel, g 0.8, bottom air), from core's
+// parameter table.
+ColorMaterial paper_default_material();
+
+struct PreviewState {
+  ColorMaterial material = paper_default_material();
+  LightState light;
+  ViewOptions view;
+  ExportOptions export_options;
+  bool show_help = false;  // the F1 overlay
+};
+
+inline constexpr double kMaxLightThetaDegrees = 89.9;  // as `skinlayer render --light-theta`
+inline constexpr double kMinStops = -8.0;
+inline constexpr double kMaxStops = 8.0;
+
+// The state with the material reset to the paper's default; light, view and export settings are kept.
+PreviewState reset_material(PreviewState state);
+
+// The request the solver needs for this state: the material, and the light's polar angle in radians.
+SolveRequest solve_request(const PreviewState& state);
+
+// 2^stops.
+double exposure_multiplier(const ViewOptions& view);
+
+}  // namespace skinlayer

@@ -1,0 +1,82 @@
+// The previewer's background solver: one std::jthread that turns SolveRequests into fitted tables and their GPU
+// texture data (solve_color + make_table_textures), so the UI thread never waits on a solve.
+//
+// Contract:
+//  - submit() and poll() only lock a mutex around a move of a small struct: they never wait for a solve.
+//  - Newest parameters win. At most one request is pending: a submit replaces a pending one that has not started
+//    (coalescing). A solve cannot be interrupted (core has no cancellation point), so a request that was superseded
+//    while it was being solved runs to completion and its result is discarded; the worker then takes the newest.
+//  - poll() hands out the result of the newest submission once it is finished, exactly once. Results only ever
+//    come out in increasing generation order.
+//  - Destruction requests stop and joins the thread; a solve in progress is finished first (it is not published).
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <stop_token>
+#include <string>
+#include <thread>
+
+#include "app/preview/solve_request.h"
+#include "app/render/material_solve.h"
+#include "app/render/table_textures.h"
+
+namespace skinlayer {
+
+struct SolveResult {
+  std::uint64_t generation = 0;  // the value submit() returned for the request this answers
+  SolveRequest request;
+  ColorTables tables;         // empty when error is set
+  TableTextureData textures;  // the tables in the GPU layout (shaders/table_layout.h); empty when error is set
+  std::string error;          // non-empty: the request was rejected (ParameterError's message) or the solve failed
+  double seconds = 0.0;       // wall time of the solve and the texture build
+};
+
+// How many solves ran and how many of their results were discarded as stale (for tests and diagnostics).
+struct SolveWorkerStats {
+  std::uint64_t solved = 0;
+  std::uint64_t discarded = 0;
+};
+
+class SolveWorker {
+ public:
+  // on_published is called on the worker thread, without the lock held, each time a result becomes available to
+  // poll() (the window passes glfwPostEmptyEvent to wake its event loop). It must not call back into the worker.
+  explicit SolveWorker(std::function<void()> on_published = {});
+  ~SolveWorker() = default;  // the jthread member requests stop and joins
+
+  SolveWorker(const SolveWorker&) = delete;
+  SolveWorker& operator=(const SolveWorker&) = delete;
+
+  // Queues the request, replacing any pending one, and returns its generation (1, 2, 3, ...).
+  std::uint64_t submit(SolveRequest request);
+
+  // The newest finished result not yet polled, if any. Never blocks on a solve.
+  std::optional<SolveResult> poll();
+
+  // True while the newest submission has not been published yet (pending or being solved).
+  bool busy() const;
+
+  SolveWorkerStats stats() const;
+
+ private:
+  void run(std::stop_token stop);
+
+  std::function<void()> on_published_;
+  mutable std::mutex mutex_;
+  std::condition_variable_any wake_;
+  std::optional<SolveRequest> pending_;  // the newest request, not started yet
+  std::uint64_t submitted_ = 0;          // generation of the newest submit()
+  std::uint64_t published_ = 0;          // generation of the newest result made available to poll()
+  std::optional<SolveResult> finished_;  // published, not yet polled
+  SolveWorkerStats stats_;
+  std::jthread thread_;  // last: started after every member above exists, joined before they go
+};
+
+// Runs one request on the calling thread: what the worker does for each job. Exceptions become SolveResult::error.
+SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation);
+
+}  // namespace skinlayer

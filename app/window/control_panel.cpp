@@ -1,0 +1,135 @@
+#include "app/window/control_panel.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <array>
+#include <string>
+
+#include "app/preview/params_ui.h"
+#include "core/conventions.h"
+
+namespace skinlayer {
+namespace {
+
+const ImVec4 kErrorColor{1.0f, 0.45f, 0.4f, 1.0f};
+const ImVec4 kBusyColor{1.0f, 0.85f, 0.4f, 1.0f};
+const ImVec4 kDimColor{0.7f, 0.7f, 0.7f, 1.0f};
+
+// Directional reflectance (of which surface), transmittance and absorptance per channel, from ColorTables::albedo.
+void energy_readout(const SolveResult& shown, bool unicode) {
+  const ColorTables& tables = shown.tables;
+  ImGui::TextColored(
+      kDimColor,
+      unicode ? "fractions of the incident flux at θi = %.1f°" : "fractions of the incident flux at theta_i = %.1f deg",
+      radians_to_degrees(tables.albedo_theta_i));
+  constexpr ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV;
+  if (!ImGui::BeginTable("energy", 4, flags)) return;
+  ImGui::TableSetupColumn("");
+  ImGui::TableSetupColumn("R");
+  ImGui::TableSetupColumn("G");
+  ImGui::TableSetupColumn("B");
+  ImGui::TableHeadersRow();
+  struct Row {
+    const char* name;
+    double (*value)(const DirectionalAlbedo&);
+  };
+  constexpr std::array kRows = {
+      Row{"reflectance", [](const DirectionalAlbedo& a) { return a.reflectance(); }},
+      Row{"  surface", [](const DirectionalAlbedo& a) { return a.reflectance_surface; }},
+      Row{"  subsurface", [](const DirectionalAlbedo& a) { return a.reflectance_subsurface; }},
+      Row{"transmittance", [](const DirectionalAlbedo& a) { return a.transmittance; }},
+      Row{"absorptance", [](const DirectionalAlbedo& a) { return a.absorptance; }},
+  };
+  for (const Row& row : kRows) {
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextUnformatted(row.name);
+    for (int c = 0; c < 3; ++c) {
+      ImGui::TableSetColumnIndex(c + 1);
+      ImGui::Text("%.4f", row.value(tables.albedo[c]));
+    }
+  }
+  ImGui::EndTable();
+}
+
+// Target and path on one line, then the Save button with the last export's outcome beside it.
+bool screenshot_controls(ExportOptions& options, const std::string& last_export) {
+  constexpr std::array<const char*, 3> kTargets = {"window", "sphere", "plots"};
+  int target = static_cast<int>(options.target);
+  ImGui::SetNextItemWidth(ImGui::CalcTextSize("window").x * 2.2f);
+  if (ImGui::Combo("##target", &target, kTargets.data(), static_cast<int>(kTargets.size()))) {
+    options.target = static_cast<ExportTarget>(target);
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::InputTextWithHint("##path", "path.png (empty: timestamped name)", &options.path);
+  const bool save = ImGui::Button("Save PNG (S)");
+  if (!last_export.empty()) {
+    ImGui::SameLine();
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kDimColor, "%s", last_export.c_str());
+    ImGui::PopTextWrapPos();
+  }
+  return save;
+}
+
+// The header's status: "solving…" while newer parameters are in flight, and the last result's solve time.
+void status_line(const PanelStatus& status) {
+  if (status.solving) {
+    ImGui::TextColored(kBusyColor, "%s", status.unicode ? "solving…" : "solving...");
+    ImGui::SameLine();
+  }
+  if (status.shown != nullptr) {
+    ImGui::TextColored(kDimColor, "last solve %.0f ms", 1000.0 * status.shown->seconds);
+  } else if (!status.solving) {
+    ImGui::TextColored(kDimColor, "no result yet");
+  }
+}
+
+}  // namespace
+
+PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelStatus& status) {
+  PanelActions actions;
+  ImGui::SetNextWindowPos(ImVec2(rect.x, rect.y));
+  ImGui::SetNextWindowSize(ImVec2(rect.width, rect.height));
+  constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                                     ImGuiWindowFlags_NoCollapse;
+  ImGui::Begin("##controls", nullptr, flags);
+
+  ImGui::TextUnformatted("skinlayer");
+  ImGui::SameLine();
+  status_line(status);
+  ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::CalcTextSize("Help (F1)").x -
+                  2.0f * ImGui::GetStyle().FramePadding.x);
+  if (ImGui::SmallButton("Help (F1)")) state.show_help = !state.show_help;
+  if (!status.error.empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kErrorColor, "not solved: %s", status.error.c_str());
+    ImGui::PopTextWrapPos();
+  }
+
+  if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
+    material_controls(state.material, status.unicode);
+    actions.reset_material = ImGui::Button("Reset to the paper's default (R)");
+  }
+  if (ImGui::CollapsingHeader("Light and view", ImGuiTreeNodeFlags_DefaultOpen)) {
+    light_controls(state.light, status.unicode);
+    view_controls(state.view);
+  }
+  if (ImGui::CollapsingHeader("Energy", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (status.shown != nullptr) {
+      energy_readout(*status.shown, status.unicode);
+    } else {
+      ImGui::TextColored(kDimColor, "waiting for the first solve");
+    }
+  }
+  if (ImGui::CollapsingHeader("Screenshot", ImGuiTreeNodeFlags_DefaultOpen)) {
+    actions.save_screenshot = screenshot_controls(state.export_options, status.last_export);
+  }
+  ImGui::End();
+  return actions;
+}
+
+}  // namespace skinlayer

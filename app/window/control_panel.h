@@ -1,0 +1,29 @@
+// The control panel on the left of the window: the material, light and view controls (params_ui), the energy
+// readout at the light's angle, the screenshot settings, and the status line.
+#pragma once
+
+#include <string>
+
+#include "app/preview/preview_state.h"
+#include "app/preview/solve_worker.h"
+#include "app/preview/view_layout.h"
+
+namespace skinlayer {
+
+struct PanelStatus {
+  const SolveResult* shown = nullptr;  // the result on screen; null before the first one
+  bool solving = false;                // newer parameters than the shown ones are in flight
+  std::string error;                   // why the newest parameters could not be solved; empty if they could
+  std::string last_export;             // the last screenshot's outcome ("saved …" or the error)
+  bool unicode = false;                // the font has Greek letters and symbols
+};
+
+struct PanelActions {
+  bool save_screenshot = false;
+  bool reset_material = false;
+};
+
+// Draws the panel in rect (ImGui must be inside a frame) and edits state.
+PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelStatus& status);
+
+}  // namespace skinlayer

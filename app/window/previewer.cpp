@@ -1,0 +1,256 @@
+#include "app/window/previewer.h"
+
+#include <imgui.h>
+
+#include <chrono>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/gl/gl_api.h"
+#include "app/preview/preview_state.h"
+#include "app/preview/solve_worker.h"
+#include "app/preview/view_layout.h"
+#include "app/render/renderer.h"
+#include "app/render/scene.h"
+#include "app/window/control_panel.h"
+#include "app/window/glfw_window.h"
+#include "app/window/help_overlay.h"
+#include "app/window/imgui_session.h"
+#include "app/window/screenshot.h"
+#include "app/window/shortcuts.h"
+#include "app/window/view_overlays.h"
+#include "core/conventions.h"
+
+namespace skinlayer {
+namespace {
+
+constexpr int kWindowWidth = 1280;  // screen coordinates at content scale 1
+constexpr int kWindowHeight = 720;
+constexpr float kPanelWidth = 390.0f;    // ImGui units at content scale 1
+constexpr int kCaptureSettleFrames = 3;  // frames drawn with the final result before a capture (>= 2: ImGui
+                                         // hides auto-sized windows on their first frame)
+constexpr double kCaptureTimeoutSeconds = 300.0;
+constexpr double kIdleWaitSeconds = 0.1;  // event wait when nothing moves; events and results wake it at once
+constexpr double kCaptureWaitSeconds = 1.0 / 60.0;
+constexpr int kEagerFrames = 3;                    // frames drawn at full rate after any activity
+constexpr double kEagerWaitSeconds = 1.0 / 120.0;  // caps the full rate where vsync does not (e.g. under Xvfb)
+
+class Previewer {
+ public:
+  Previewer(const WindowOptions& options, std::ostream& out)
+      : out_(out),
+        capture_path_(options.capture_path),
+        window_(kWindowWidth, kWindowHeight, "skinlayer"),
+        imgui_(window_.handle(), window_.content_scale()),
+        worker_(post_empty_event) {
+    state_.material = options.material;
+  }
+
+  int run() {
+    const auto start = std::chrono::steady_clock::now();
+    double timeout = 0.0;
+    while (!window_.should_close() && !captured_) {
+      wait_events(timeout);
+      timeout = frame();
+      if (capture_path_ &&
+          std::chrono::steady_clock::now() - start > std::chrono::duration<double>(kCaptureTimeoutSeconds)) {
+        throw std::runtime_error("capture: the material was not solved within " +
+                                 std::to_string(static_cast<int>(kCaptureTimeoutSeconds)) + " s");
+      }
+    }
+    return 0;
+  }
+
+ private:
+  // One frame; returns how long the loop may wait for events before the next one.
+  double frame() {
+    bool activity = take_result();
+    const std::array<int, 2> framebuffer = window_.framebuffer_size();
+    if (framebuffer[0] < 1 || framebuffer[1] < 1) return kIdleWaitSeconds;  // minimized: nothing to draw
+    update_scene();
+    imgui_.new_frame();
+    const std::array<int, 2> size = window_.window_size();
+    const PreviewLayout layout = layout_preview(static_cast<float>(size[0]), static_cast<float>(size[1]),
+                                                kPanelWidth * imgui_.scale(), state_.view.view);
+    PreviewState edited = state_;
+    ViewOverlayInput overlay{layout, shown_ ? &shown_->tables : nullptr, scene_.lobes, imgui_.unicode_labels()};
+    activity |= view_overlays(overlay, edited.light);
+    const PanelActions panel = control_panel(layout.panel, edited, panel_status());
+    bool save = panel.save_screenshot;
+    bool reset = panel.reset_material;
+    const std::vector<GlfwWindow::KeyPress> presses = window_.take_key_presses();
+    for (const Action action : pressed_actions(presses, ImGui::GetIO().WantTextInput)) {
+      activity = true;
+      switch (action) {
+        case Action::SaveScreenshot:
+          save = true;
+          break;
+        case Action::ResetMaterial:
+          reset = true;
+          break;
+        case Action::ToggleLogScale:
+          edited.view.log_lobes = !edited.view.log_lobes;
+          break;
+        case Action::ToggleHelp:
+          edited.show_help = !edited.show_help;
+          break;
+        case Action::CloseHelp:
+          edited.show_help = false;
+          break;
+        case Action::Quit:
+          window_.request_close();
+          break;
+      }
+    }
+    draw_help_overlay(edited.show_help);
+    if (reset) edited = reset_material(edited);
+    state_ = edited;
+    submit_if_needed();
+
+    const ImGuiIO& io = ImGui::GetIO();
+    activity |= save || reset || ImGui::IsAnyItemActive() || io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f ||
+                ImGui::IsAnyMouseDown();
+
+    const std::array<float, 2> scale = {static_cast<float>(framebuffer[0]) / static_cast<float>(std::max(size[0], 1)),
+                                        static_cast<float>(framebuffer[1]) / static_cast<float>(std::max(size[1], 1))};
+    draw_views(layout, scale, framebuffer);
+    const ExportTarget target = state_.export_options.target;
+    if (save && target != ExportTarget::Window) {
+      const Rect& rect = target == ExportTarget::Sphere ? layout.sphere : layout.plots;
+      if (rect.empty() || !shown_) {
+        last_export_ = "nothing saved: that view is not on screen";
+      } else {
+        export_picture(to_viewport(rect, scale, framebuffer[1]), state_.export_options.path);
+      }
+    }
+    imgui_.render();
+    if (save && target == ExportTarget::Window) {
+      export_picture(Viewport{0, 0, framebuffer[0], framebuffer[1]}, state_.export_options.path);
+    }
+    capture_if_ready(framebuffer);
+    window_.swap_buffers();
+
+    eager_frames_ = activity ? kEagerFrames : std::max(eager_frames_ - 1, 0);
+    if (capture_path_) return kCaptureWaitSeconds;
+    return eager_frames_ > 0 ? kEagerWaitSeconds : kIdleWaitSeconds;
+  }
+
+  // Uploads a newly finished result; returns true if there was one.
+  bool take_result() {
+    std::optional<SolveResult> result = worker_.poll();
+    if (!result) return false;
+    if (!result->error.empty()) {
+      error_ = result->error;
+      return true;
+    }
+    renderer_.upload(result->textures);
+    result->textures = TableTextureData{};  // on the GPU now
+    error_.clear();
+    shown_ = std::move(result);
+    return true;
+  }
+
+  // The newest parameters go to the worker once it has finished the previous ones, so that while a slider is
+  // dragged every solve is shown (at the solver's pace) and the final parameters always win.
+  void submit_if_needed() {
+    const SolveRequest request = solve_request(state_);
+    if (submitted_ && same_request(*submitted_, request)) return;
+    if (worker_.busy()) return;
+    worker_.submit(request);
+    submitted_ = request;
+  }
+
+  bool solving() const { return worker_.busy() || !submitted_ || !same_request(*submitted_, solve_request(state_)); }
+
+  PanelStatus panel_status() const {
+    return PanelStatus{shown_ ? &*shown_ : nullptr, solving(), error_, last_export_, imgui_.unicode_labels()};
+  }
+
+  // The scene of the shown result under the current light and view; the lobe scale (a CPU pass over the BSDF) is
+  // recomputed only when the result or the light's polar angle changes.
+  void update_scene() {
+    if (!shown_) return;
+    const double theta = degrees_to_radians(state_.light.theta_degrees);
+    const double phi = degrees_to_radians(state_.light.phi_degrees);
+    if (scene_generation_ != shown_->generation || scene_theta_ != theta) {
+      scene_ = make_scene(shown_->tables, state_.view.view, theta, phi, 1.0, false);
+      scene_generation_ = shown_->generation;
+      scene_theta_ = theta;
+    }
+    scene_.view = state_.view.view;
+    scene_.sphere.light = light_direction(theta, phi);
+    scene_.sphere.exposure = exposure_multiplier(state_.view);
+    scene_.lobes.log_scale = state_.view.log_lobes;
+  }
+
+  void draw_views(const PreviewLayout& layout, std::array<float, 2> scale, std::array<int, 2> framebuffer) const {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, framebuffer[0], framebuffer[1]);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    glClearColor(0.02f, 0.02f, 0.025f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!shown_) return;
+    if (!layout.sphere.empty()) {
+      renderer_.draw_sphere(scene_.sphere, scene_.surface, to_viewport(layout.sphere, scale, framebuffer[1]));
+    }
+    if (!layout.plots.empty()) {
+      renderer_.draw_lobes(scene_.lobes, scene_.surface, to_viewport(layout.plots, scale, framebuffer[1]));
+    }
+  }
+
+  // Saves a region of the back buffer; failures are shown in the panel (and thrown in capture mode).
+  void export_picture(const Viewport& region, const std::string& path) {
+    try {
+      const SavedScreenshot saved = save_screenshot(region, path);
+      out_ << "wrote " << saved.path << " (" << saved.width << "x" << saved.height << ")\n" << std::flush;
+      last_export_ =
+          "saved " + saved.path + " (" + std::to_string(saved.width) + "x" + std::to_string(saved.height) + ")";
+    } catch (const std::exception& error) {
+      if (capture_path_) throw;
+      last_export_ = error.what();
+    }
+  }
+
+  // --capture: once the shown result answers the final parameters and a few frames have shown it, save the whole
+  // window through the same export path as the S key, and finish.
+  void capture_if_ready(std::array<int, 2> framebuffer) {
+    if (!capture_path_) return;
+    const bool final_result = submitted_ && !worker_.busy();
+    if (final_result && !error_.empty()) throw std::runtime_error(error_);
+    if (!final_result || !shown_ || !same_request(shown_->request, *submitted_)) return;
+    if (++settled_frames_ < kCaptureSettleFrames) return;
+    export_picture(Viewport{0, 0, framebuffer[0], framebuffer[1]}, *capture_path_);
+    captured_ = true;
+  }
+
+  std::ostream& out_;
+  std::optional<std::string> capture_path_;
+  GlfwWindow window_;
+  ImGuiSession imgui_;
+  Renderer renderer_;
+  PreviewState state_;
+  std::optional<SolveResult> shown_;       // on screen: its tables are uploaded to renderer_
+  std::optional<SolveRequest> submitted_;  // the newest request given to the worker
+  std::string error_;                      // the newest result's error, if it failed
+  std::string last_export_;
+  Scene scene_;
+  std::uint64_t scene_generation_ = 0;
+  double scene_theta_ = -1.0;
+  int eager_frames_ = kEagerFrames;
+  int settled_frames_ = 0;
+  bool captured_ = false;
+  SolveWorker worker_;  // last: destroyed (joined) first, while GLFW, which it wakes, is still initialized
+};
+
+}  // namespace
+
+int run_previewer(const WindowOptions& options, std::ostream& out) {
+  Previewer previewer(options, out);
+  return previewer.run();
+}
+
+}  // namespace skinlayer

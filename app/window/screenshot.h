@@ -1,0 +1,22 @@
+// The previewer's one export path: read a rectangle of the bound framebuffer (the window's back buffer, before the
+// swap) and write it as PNG. The S key, the Save button and --capture all go through save_screenshot().
+#pragma once
+
+#include <string>
+
+#include "app/render/renderer.h"
+
+namespace skinlayer {
+
+struct SavedScreenshot {
+  std::string path;
+  int width = 0;  // framebuffer pixels
+  int height = 0;
+};
+
+// Reads `region` (framebuffer pixels, origin bottom-left) of the bound framebuffer and writes it to path, or to
+// timestamped_png_name() in the current folder when path is empty. Throws std::runtime_error naming the path if
+// it cannot be written.
+SavedScreenshot save_screenshot(const Viewport& region, const std::string& path);
+
+}  // namespace skinlayer

@@ -1,0 +1,35 @@
+// Every keyboard shortcut and mouse gesture of the previewer, in one table: the key handler reads it and the F1
+// help overlay lists it, so the two cannot disagree.
+#pragma once
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "app/window/glfw_window.h"
+
+namespace skinlayer {
+
+enum class Action { SaveScreenshot, ResetMaterial, ToggleLogScale, ToggleHelp, CloseHelp, Quit };
+
+struct Shortcut {
+  int key;                // GLFW key code
+  bool needs_ctrl;        // only with Ctrl held; otherwise with or without Ctrl
+  std::string_view keys;  // as the help shows it
+  std::string_view meaning;
+  Action action;
+};
+
+struct Gesture {
+  std::string_view what;  // e.g. "Ctrl-click a slider"
+  std::string_view meaning;
+};
+
+std::span<const Shortcut> shortcuts();
+std::span<const Gesture> gestures();
+
+// The actions of these key presses, in order. None while a text field has the keyboard (typing), so typing a file
+// name never triggers a shortcut.
+std::vector<Action> pressed_actions(std::span<const GlfwWindow::KeyPress> presses, bool typing);
+
+}  // namespace skinlayer

@@ -1,0 +1,45 @@
+#include "app/window/window_options.h"
+
+#include <vector>
+
+#include "app/cli/errors.h"
+#include "app/cli/flag_parser.h"
+#include "app/cli/material_flags.h"
+#include "core/solver.h"
+
+namespace skinlayer {
+
+WindowOptions parse_window_options(std::span<const std::string_view> arguments) {
+  WindowOptions options;
+  if (cli::wants_help(arguments)) {
+    options.help = true;
+    return options;
+  }
+  const std::span<const std::string_view> material_flags = cli::material_flag_names();
+  std::vector<std::string_view> known(material_flags.begin(), material_flags.end());
+  known.push_back("capture");
+  const cli::ParsedFlags flags = cli::ParsedFlags::parse(arguments, known, "skinlayer");
+  options.material.layer = cli::material_from_flags(flags);
+  if (options.material.layer.ordinates) choose_resolution(options.material.layer);  // checks the material's minimum
+  const double albedo = options.material.layer.albedo;
+  options.material.albedo_rgb = {albedo, albedo, albedo};
+  if (const std::optional<std::string_view> path = flags.value("capture")) {
+    if (path->empty()) throw cli::UsageError("capture needs a file name, as in --capture shot.png");
+    options.capture_path = std::string(*path);
+  }
+  return options;
+}
+
+std::string window_usage() {
+  return "Usage: skinlayer [--capture FILE.png] [material flags]\n"
+         "\n"
+         "Opens the previewer: a lit sphere of the material beside polar plots of its BRDF and BTDF, with controls\n"
+         "for every parameter (press F1 in the window for the keys). Needs a display; without one, use\n"
+         "`skinlayer render -o out.png`.\n"
+         "  --capture FILE.png   render until the material is solved, save a screenshot of the whole window\n"
+         "                       (framebuffer resolution) to FILE.png, print its size and exit\n"
+         "\n" +
+         cli::material_flags_usage();
+}
+
+}  // namespace skinlayer

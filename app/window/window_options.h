@@ -1,0 +1,26 @@
+// skinlayer-window's command line: [--capture FILE.png] [material flags]. `skinlayer` (no command, or --capture)
+// runs skinlayer-window with its own arguments unchanged, so these are also skinlayer's previewer arguments.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "app/render/material_solve.h"
+
+namespace skinlayer {
+
+struct WindowOptions {
+  ColorMaterial material;                   // from the material flags; --albedo sets all three channels
+  std::optional<std::string> capture_path;  // --capture: save the whole window there once solved, then exit
+  bool help = false;                        // --help or -h
+};
+
+// Throws cli::UsageError or ParameterError (exit status 2) for a bad command line, naming the flag at fault; an
+// --ordinates below the material's minimum is caught here too, before a window opens.
+WindowOptions parse_window_options(std::span<const std::string_view> arguments);
+
+std::string window_usage();
+
+}  // namespace skinlayer

@@ -1,0 +1,177 @@
+// The previewer's solve worker: newest parameters win, stale results never come out, the calling (UI) thread never
+// waits on a solve, and shutdown never deadlocks.
+#include "app/preview/solve_worker.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <thread>
+#include <vector>
+
+#include "app/render/table_textures.h"
+#include "core/conventions.h"
+
+namespace skinlayer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using namespace std::chrono_literals;
+
+constexpr double kMaxCallMilliseconds = 5.0;  // the most a submit() or poll() may take on the UI thread
+
+// The k-th of a sequence of parameter sets that all differ: sigma, g, the RGB albedo, the bottom and the angle.
+SolveRequest request_number(int k) {
+  SolveRequest request;
+  Material& layer = request.material.layer;
+  layer.sigma = 0.3 + 0.4 * (k % 97) / 96.0;
+  layer.g = 0.4 + 0.4 * (k % 13) / 12.0;
+  layer.tau = optical_depth_from_transparency(0.1 + 0.5 * (k % 11) / 10.0);
+  if (k % 3 == 1) layer.bottom.kind = BottomKind::Matched;
+  if (k % 3 == 2) {
+    layer.bottom.kind = BottomKind::Lambert;
+    layer.bottom.lambert_albedo = 0.5;
+  }
+  request.material.albedo_rgb = {0.95 - 0.2 * (k % 7) / 6.0, 0.8, 0.55 + 0.1 * (k % 5) / 4.0};
+  request.theta_i = degrees_to_radians(k % 80);
+  return request;
+}
+
+double milliseconds(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
+
+// Polls until a result of `generation` comes out (every result must be at most that new and newer than the last).
+SolveResult wait_for(SolveWorker& worker, std::uint64_t generation, std::chrono::seconds timeout) {
+  const auto deadline = Clock::now() + timeout;
+  std::uint64_t last = 0;
+  while (Clock::now() < deadline) {
+    if (std::optional<SolveResult> result = worker.poll()) {
+      EXPECT_GT(result->generation, last);
+      EXPECT_LE(result->generation, generation);
+      last = result->generation;
+      if (result->generation == generation) return std::move(*result);
+    }
+    std::this_thread::sleep_for(1ms);
+  }
+  ADD_FAILURE() << "no result for generation " << generation << " within " << timeout.count() << " s";
+  return {};
+}
+
+void expect_same_tables(const ColorTables& shown, const ColorTables& direct) {
+  EXPECT_EQ(shown.material.albedo_rgb, direct.material.albedo_rgb);
+  EXPECT_EQ(shown.albedo_theta_i, direct.albedo_theta_i);
+  for (int c = 0; c < 3; ++c) {
+    const LayerTables& a = shown.channels[c];
+    const LayerTables& b = direct.channels[c];
+    EXPECT_EQ(a.grid_size(), b.grid_size()) << "channel " << c;
+    EXPECT_EQ(a.modes(), b.modes()) << "channel " << c;
+    EXPECT_TRUE(std::ranges::equal(a.reflection_coefficients(), b.reflection_coefficients())) << "channel " << c;
+    EXPECT_TRUE(std::ranges::equal(a.transmission_coefficients(), b.transmission_coefficients())) << "channel " << c;
+    EXPECT_EQ(shown.albedo[c].reflectance_surface, direct.albedo[c].reflectance_surface) << "channel " << c;
+    EXPECT_EQ(shown.albedo[c].reflectance_subsurface, direct.albedo[c].reflectance_subsurface) << "channel " << c;
+    EXPECT_EQ(shown.albedo[c].transmittance, direct.albedo[c].transmittance) << "channel " << c;
+    EXPECT_EQ(shown.albedo[c].absorptance, direct.albedo[c].absorptance) << "channel " << c;
+  }
+}
+
+TEST(SolveWorker, AThousandRapidChangesEndOnTheFinalParametersWithoutStalls) {
+  SolveWorker worker;
+  double longest_submit = 0.0, longest_poll = 0.0;
+  std::uint64_t last_generation = 0, last_seen = 0;
+  int results_seen = 0;
+  constexpr int kChanges = 1000;
+  for (int k = 0; k < kChanges; ++k) {
+    const SolveRequest request = request_number(k);
+    const auto submit_start = Clock::now();
+    last_generation = worker.submit(request);
+    longest_submit = std::max(longest_submit, milliseconds(Clock::now() - submit_start));
+
+    const auto poll_start = Clock::now();
+    std::optional<SolveResult> result = worker.poll();
+    longest_poll = std::max(longest_poll, milliseconds(Clock::now() - poll_start));
+    if (result) {
+      EXPECT_GT(result->generation, last_seen) << "results come out newest-last, each once";
+      last_seen = result->generation;
+      ++results_seen;
+    }
+    std::this_thread::sleep_for(300us);  // a fast drag: a change every third of a millisecond (~0.4 s in all)
+  }
+  EXPECT_EQ(last_generation, static_cast<std::uint64_t>(kChanges));
+
+  const SolveResult final_result = wait_for(worker, last_generation, 120s);
+  ASSERT_EQ(final_result.generation, last_generation);
+  ASSERT_EQ(final_result.error, "");
+  EXPECT_TRUE(same_request(final_result.request, request_number(kChanges - 1)));
+  EXPECT_FALSE(worker.busy());
+  EXPECT_FALSE(worker.poll().has_value()) << "a result comes out once";
+
+  const SolveRequest final_request = request_number(kChanges - 1);
+  const ColorTables direct = solve_color(final_request.material, final_request.theta_i);
+  expect_same_tables(final_result.tables, direct);
+  const TableTextureData textures = make_table_textures(direct);
+  EXPECT_EQ(final_result.textures.size, textures.size);
+  EXPECT_EQ(final_result.textures.modes, textures.modes);
+  EXPECT_EQ(final_result.textures.reflection, textures.reflection);
+  EXPECT_EQ(final_result.textures.transmission, textures.transmission);
+
+  const SolveWorkerStats stats = worker.stats();
+  std::printf(
+      "[ worker  ] %d submits: longest submit() %.3f ms, longest poll() %.3f ms; %llu solves, %llu stale "
+      "results discarded, %d intermediate results polled; final solve %.1f ms\n",
+      kChanges, longest_submit, longest_poll, static_cast<unsigned long long>(stats.solved),
+      static_cast<unsigned long long>(stats.discarded), results_seen, 1000.0 * final_result.seconds);
+  RecordProperty("longest_submit_ms", std::to_string(longest_submit));
+  RecordProperty("longest_poll_ms", std::to_string(longest_poll));
+  EXPECT_LT(longest_submit, kMaxCallMilliseconds);
+  EXPECT_LT(longest_poll, kMaxCallMilliseconds);
+  EXPECT_LT(stats.solved, static_cast<std::uint64_t>(kChanges)) << "pending requests are coalesced";
+}
+
+TEST(SolveWorker, ASupersededRequestNeverComesOut) {
+  SolveWorker worker;
+  SolveRequest slow = request_number(0);
+  slow.material.layer.ordinates = 64;  // long enough to be superseded while it is solved
+  const std::uint64_t first = worker.submit(slow);
+  std::this_thread::sleep_for(5ms);  // let the worker start it
+  const std::uint64_t second = worker.submit(request_number(1));
+  ASSERT_GT(second, first);
+  const SolveResult result = wait_for(worker, second, 120s);  // fails on any result of `first`
+  EXPECT_EQ(result.generation, second);
+  EXPECT_TRUE(same_request(result.request, request_number(1)));
+}
+
+TEST(SolveWorker, AnInvalidMaterialComesBackAsAnError) {
+  SolveWorker worker;
+  SolveRequest request;
+  request.material.layer.sigma = 7.0;
+  const std::uint64_t generation = worker.submit(request);
+  const SolveResult result = wait_for(worker, generation, 60s);
+  EXPECT_NE(result.error.find("sigma"), std::string::npos) << result.error;
+  EXPECT_EQ(result.textures.modes, 0);
+}
+
+TEST(SolveWorker, PublishingWakesTheOwner) {
+  std::atomic<int> wakes = 0;
+  {
+    SolveWorker worker([&wakes] { ++wakes; });
+    const std::uint64_t generation = worker.submit(SolveRequest{});
+    wait_for(worker, generation, 60s);
+  }
+  EXPECT_EQ(wakes.load(), 1);
+}
+
+TEST(SolveWorker, DestroyingItDuringASolveReturns) {
+  const auto start = Clock::now();
+  {
+    SolveWorker worker;
+    worker.submit(request_number(5));
+    std::this_thread::sleep_for(2ms);
+    worker.submit(request_number(6));  // pending while the first is solved: dropped at shutdown
+  }
+  std::printf("[ worker  ] shutdown with a solve in flight took %.1f ms\n", milliseconds(Clock::now() - start));
+  SUCCEED();
+}
+
+}  // namespace
+}  // namespace skinlayer

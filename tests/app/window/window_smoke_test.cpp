@@ -1,0 +1,88 @@
+// The GLFW window path, end to end: `skinlayer --capture FILE` under Xvfb (start, render, screenshot through the
+// app's own export, exit), and the one-line error without a display.
+#include <gtest/gtest.h>
+#include <stb_image.h>  // libstb.so holds the implementation: no STB_IMAGE_IMPLEMENTATION here
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <regex>
+#include <string>
+
+#include "tests/app/window/child_process.h"
+
+namespace skinlayer::test {
+namespace {
+
+std::filesystem::path temporary_png(const std::string& stem) {
+  return std::filesystem::temp_directory_path() / (stem + "-" + std::to_string(::getpid()) + ".png");
+}
+
+bool one_line(const std::string& text) { return !text.empty() && text.find('\n') == text.size() - 1; }
+
+TEST(WindowSmoke, CaptureUnderXvfbWritesTheWholeWindow) {
+  const std::optional<std::string> xvfb_run = find_in_path("xvfb-run");
+  if (!xvfb_run)
+    GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth); the window smoke test needs it";
+  const std::filesystem::path png = temporary_png("skinlayer-window-capture");
+  std::filesystem::remove(png);
+
+  const ChildResult result = run_child({*xvfb_run, "-a", "-s", "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE,
+                                        "--capture", png.string(), "--sigma", "0.3"});
+  ASSERT_EQ(result.exit_code, 0) << "stdout: " << result.out << "\nstderr: " << result.err;
+
+  // "wrote FILE (WxH)": the framebuffer size the window reported.
+  const std::regex wrote("wrote (.+) \\((\\d+)x(\\d+)\\)\n");
+  std::smatch match;
+  ASSERT_TRUE(std::regex_search(result.out, match, wrote)) << result.out;
+  EXPECT_EQ(match[1].str(), png.string());
+  const int framebuffer_width = std::stoi(match[2].str());
+  const int framebuffer_height = std::stoi(match[3].str());
+  EXPECT_GT(framebuffer_width, 0);
+  EXPECT_LE(framebuffer_width, 1280);  // the Xvfb screen
+  EXPECT_LE(framebuffer_height, 720);
+
+  int width = 0, height = 0, channels = 0;
+  const std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load(png.c_str(), &width, &height, &channels, 4),
+                                                               stbi_image_free);
+  ASSERT_NE(pixels, nullptr) << "the capture does not decode as PNG: " << png;
+  EXPECT_EQ(width, framebuffer_width);
+  EXPECT_EQ(height, framebuffer_height);
+
+  // Not blank: the luminance varies, and the picture has the sphere's shading and the UI's many colors.
+  double sum = 0.0, sum_squares = 0.0;
+  const std::size_t count = static_cast<std::size_t>(width) * height;
+  for (std::size_t k = 0; k < count; ++k) {
+    const unsigned char* p = pixels.get() + 4 * k;
+    const double luminance = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+    sum += luminance;
+    sum_squares += luminance * luminance;
+  }
+  const double mean = sum / static_cast<double>(count);
+  const double variance = sum_squares / static_cast<double>(count) - mean * mean;
+  std::printf("[ capture ] %dx%d, luminance mean %.1f, variance %.1f\n", width, height, mean, variance);
+  EXPECT_GT(variance, 0.0);
+  std::filesystem::remove(png);
+}
+
+TEST(WindowSmoke, WithoutADisplayOneLinePointsToRender) {
+  const ChildResult result = run_child({"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", SKINLAYER_EXECUTABLE});
+  EXPECT_NE(result.exit_code, 0);
+  EXPECT_EQ(result.out, "");
+  EXPECT_TRUE(one_line(result.err)) << result.err;
+  EXPECT_NE(result.err.find("skinlayer render"), std::string::npos) << result.err;
+  EXPECT_TRUE(result.err.starts_with("skinlayer: error: ")) << result.err;
+}
+
+TEST(WindowSmoke, CaptureFlagsAreCheckedBeforeAWindowOpens) {
+  const ChildResult result = run_child(
+      {"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", SKINLAYER_EXECUTABLE, "--capture", "x.png", "--sigma", "7"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_TRUE(one_line(result.err)) << result.err;
+  EXPECT_NE(result.err.find("sigma"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace skinlayer::test
