@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -70,7 +71,8 @@ class SpawnFileActions {
 
 }  // namespace
 
-ProcessResult run_skinlayer(const std::vector<std::string>& arguments, std::string_view stdin_text) {
+ProcessResult run_process(const std::vector<std::string>& argv, std::string_view stdin_text) {
+  if (argv.empty()) throw std::invalid_argument("run_process: no program");
   const TempFile in;
   const TempFile out;
   const TempFile err;
@@ -81,16 +83,15 @@ ProcessResult run_skinlayer(const std::vector<std::string>& arguments, std::stri
   actions.redirect(out.fd(), STDOUT_FILENO);
   actions.redirect(err.fd(), STDERR_FILENO);
 
-  std::string executable = SKINLAYER_EXECUTABLE;
-  std::vector<std::string> argument_storage = arguments;
-  std::vector<char*> argv = {executable.data()};
-  for (std::string& argument : argument_storage) argv.push_back(argument.data());
-  argv.push_back(nullptr);
+  std::vector<std::string> storage = argv;
+  std::vector<char*> pointers;
+  for (std::string& argument : storage) pointers.push_back(argument.data());
+  pointers.push_back(nullptr);
 
   pid_t pid = 0;
-  const int spawn_error = ::posix_spawn(&pid, executable.c_str(), actions.get(), nullptr, argv.data(), environ);
+  const int spawn_error = ::posix_spawnp(&pid, storage.front().c_str(), actions.get(), nullptr, pointers.data(), environ);
   if (spawn_error != 0) {
-    throw std::runtime_error("cannot start " + executable + ": " + std::strerror(spawn_error));
+    throw std::runtime_error("cannot start " + storage.front() + ": " + std::strerror(spawn_error));
   }
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
@@ -101,6 +102,21 @@ ProcessResult run_skinlayer(const std::vector<std::string>& arguments, std::stri
   result.out = out.read_all();
   result.err = err.read_all();
   return result;
+}
+
+std::optional<std::string> find_in_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (path == nullptr) return std::nullopt;
+  std::string_view rest = path;
+  while (!rest.empty()) {
+    const std::size_t colon = rest.find(':');
+    const std::string_view folder = rest.substr(0, colon);
+    rest = colon == std::string_view::npos ? std::string_view() : rest.substr(colon + 1);
+    if (folder.empty()) continue;
+    const std::filesystem::path candidate = std::filesystem::path(folder) / program;
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
+  }
+  return std::nullopt;
 }
 
 }  // namespace skinlayer::test

@@ -1,7 +1,9 @@
-// Runs the real skinlayer executable (path from the SKINLAYER_EXECUTABLE compile definition) as a child process,
-// with the given text on stdin, and captures its exit status, stdout and stderr.
+// Runs a program as a child process with the given text on stdin, and captures its exit status, stdout and stderr.
+// run_skinlayer runs the real skinlayer executable (path from the SKINLAYER_EXECUTABLE compile definition of the
+// test target that includes this header).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,7 +16,18 @@ struct ProcessResult {
   std::string err;
 };
 
-// Throws std::runtime_error if the process cannot be started.
-ProcessResult run_skinlayer(const std::vector<std::string>& arguments, std::string_view stdin_text = "");
+// argv[0] is the program, looked up in PATH when it has no slash. Throws std::runtime_error if it cannot be started.
+ProcessResult run_process(const std::vector<std::string>& argv, std::string_view stdin_text = "");
+
+// The program's full path if an executable of that name is in PATH.
+std::optional<std::string> find_in_path(const std::string& program);
+
+#ifdef SKINLAYER_EXECUTABLE
+inline ProcessResult run_skinlayer(const std::vector<std::string>& arguments, std::string_view stdin_text = "") {
+  std::vector<std::string> argv = {SKINLAYER_EXECUTABLE};
+  argv.insert(argv.end(), arguments.begin(), arguments.end());
+  return run_process(argv, stdin_text);
+}
+#endif
 
 }  // namespace skinlayer::test

@@ -3,38 +3,28 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>  // libstb.so holds the implementation
 
-#include <cstdio>
-#include <cstdlib>
+#include "tests/app/process_runner.h"
+
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 
-namespace skinlayer {
+namespace skinlayer::test {
 namespace {
 
-struct CommandResult {
-  int status;
-  std::string err;
-};
-
-CommandResult run_skinlayer(const std::string& arguments) {
-  // One stderr file per test: ctest runs the tests of this file in parallel.
-  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  const std::filesystem::path err = std::filesystem::temp_directory_path() / ("skinlayer_render_" + test + ".err");
-  const std::string command = std::string(SKINLAYER_EXECUTABLE) + " " + arguments + " > /dev/null 2> " + err.string();
-  const int status = std::system(command.c_str());
-  std::ifstream in(err);
-  std::stringstream text;
-  text << in.rdbuf();
-  return {WEXITSTATUS(status), text.str()};
+// skinlayer render with space-separated arguments.
+ProcessResult run_render(const std::string& arguments) {
+  std::vector<std::string> argv;
+  std::istringstream words(arguments);
+  for (std::string word; words >> word;) argv.push_back(word);
+  return run_skinlayer(argv);
 }
 
 TEST(PngExport, RenderWritesADecodablePictureOfTheRequestedSize) {
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "skinlayer_render_test.png";
   std::filesystem::remove(out);
-  const CommandResult result = run_skinlayer("render --size 300x200 --albedo 0.9,0.6,0.5 --light-theta 30 -o " + out.string());
-  ASSERT_EQ(result.status, 0) << result.err;
+  const ProcessResult result = run_render("render --size 300x200 --albedo 0.9,0.6,0.5 --light-theta 30 -o " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
   int width = 0, height = 0, channels = 0;
   unsigned char* pixels = stbi_load(out.c_str(), &width, &height, &channels, 4);
   ASSERT_NE(pixels, nullptr);
@@ -53,18 +43,18 @@ TEST(PngExport, RenderWritesADecodablePictureOfTheRequestedSize) {
 }
 
 TEST(PngExport, UnwritablePathIsAClearError) {
-  const CommandResult result = run_skinlayer("render --size 64x64 -o /nonexistent-folder/x.png");
-  EXPECT_NE(result.status, 0);
+  const ProcessResult result = run_render("render --size 64x64 -o /nonexistent-folder/x.png");
+  EXPECT_NE(result.exit_code, 0);
   EXPECT_NE(result.err.find("/nonexistent-folder/x.png"), std::string::npos) << result.err;
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
 }
 
 TEST(PngExport, BadRenderFlagsNameTheFlag) {
-  EXPECT_NE(run_skinlayer("render --size 10x10 -o /tmp/x.png").err.find("size"), std::string::npos);
-  EXPECT_NE(run_skinlayer("render --view cube -o /tmp/x.png").err.find("view"), std::string::npos);
-  EXPECT_NE(run_skinlayer("render --albedo 0.5,2,0.5 -o /tmp/x.png").err.find("albedo"), std::string::npos);
-  EXPECT_NE(run_skinlayer("render").err.find("-o"), std::string::npos);
+  EXPECT_NE(run_render("render --size 10x10 -o /tmp/x.png").err.find("size"), std::string::npos);
+  EXPECT_NE(run_render("render --view cube -o /tmp/x.png").err.find("view"), std::string::npos);
+  EXPECT_NE(run_render("render --albedo 0.5,2,0.5 -o /tmp/x.png").err.find("albedo"), std::string::npos);
+  EXPECT_NE(run_render("render").err.find("-o"), std::string::npos);
 }
 
 }  // namespace
-}  // namespace skinlayer
+}  // namespace skinlayer::test

@@ -11,7 +11,7 @@
 #include <regex>
 #include <string>
 
-#include "tests/app/window/child_process.h"
+#include "tests/app/process_runner.h"
 
 namespace skinlayer::test {
 namespace {
@@ -29,7 +29,7 @@ TEST(WindowSmoke, CaptureUnderXvfbWritesTheWholeWindow) {
   const std::filesystem::path png = temporary_png("skinlayer-window-capture");
   std::filesystem::remove(png);
 
-  const ChildResult result = run_child({*xvfb_run, "-a", "-s", "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE,
+  const ProcessResult result = run_process({*xvfb_run, "-a", "-s", "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE,
                                         "--capture", png.string(), "--sigma", "0.3"});
   ASSERT_EQ(result.exit_code, 0) << "stdout: " << result.out << "\nstderr: " << result.err;
 
@@ -68,7 +68,7 @@ TEST(WindowSmoke, CaptureUnderXvfbWritesTheWholeWindow) {
 }
 
 TEST(WindowSmoke, WithoutADisplayOneLinePointsToRender) {
-  const ChildResult result = run_child({"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", SKINLAYER_EXECUTABLE});
+  const ProcessResult result = run_process({"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", SKINLAYER_EXECUTABLE});
   EXPECT_NE(result.exit_code, 0);
   EXPECT_EQ(result.out, "");
   EXPECT_TRUE(one_line(result.err)) << result.err;
@@ -77,7 +77,7 @@ TEST(WindowSmoke, WithoutADisplayOneLinePointsToRender) {
 }
 
 TEST(WindowSmoke, CaptureFlagsAreCheckedBeforeAWindowOpens) {
-  const ChildResult result = run_child(
+  const ProcessResult result = run_process(
       {"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", SKINLAYER_EXECUTABLE, "--capture", "x.png", "--sigma", "7"});
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_TRUE(one_line(result.err)) << result.err;
