@@ -10,26 +10,22 @@ void delete_framebuffer(GLuint name) { glDeleteFramebuffers(1, &name); }
 void delete_renderbuffer(GLuint name) { glDeleteRenderbuffers(1, &name); }
 void delete_vertex_array(GLuint name) { glDeleteVertexArrays(1, &name); }
 
-Texture create_texture() {
+namespace {
+
+// One new name from a glGen* function, owned by the handle type H.
+template <class H, void (*Generate)(GLsizei, GLuint*)>
+H generate() {
   GLuint name = 0;
-  glGenTextures(1, &name);
-  return Texture(name);
+  Generate(1, &name);
+  return H(name);
 }
-Framebuffer create_framebuffer() {
-  GLuint name = 0;
-  glGenFramebuffers(1, &name);
-  return Framebuffer(name);
-}
-Renderbuffer create_renderbuffer() {
-  GLuint name = 0;
-  glGenRenderbuffers(1, &name);
-  return Renderbuffer(name);
-}
-VertexArray create_vertex_array() {
-  GLuint name = 0;
-  glGenVertexArrays(1, &name);
-  return VertexArray(name);
-}
+
+}  // namespace
+
+Texture create_texture() { return generate<Texture, glGenTextures>(); }
+Framebuffer create_framebuffer() { return generate<Framebuffer, glGenFramebuffers>(); }
+Renderbuffer create_renderbuffer() { return generate<Renderbuffer, glGenRenderbuffers>(); }
+VertexArray create_vertex_array() { return generate<VertexArray, glGenVertexArrays>(); }
 
 namespace {
 

@@ -65,19 +65,24 @@ void Renderer::bind_tables(GLuint program) const {
   glUniform1i(location(program, "u_modes"), modes_);
 }
 
-void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport) const {
-  const GLuint program = sphere_.get();
+GLuint Renderer::begin_view(GLuint program, const SurfaceParams& surface, const Viewport& viewport,
+                            double margin) const {
   glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
   glUseProgram(program);
   bind_tables(program);
-  const std::array<double, 2> extent = view_extent(viewport, kSphereMargin);
+  const std::array<double, 2> extent = view_extent(viewport, margin);
   glUniform2f(location(program, "u_extent"), static_cast<float>(extent[0]), static_cast<float>(extent[1]));
+  glUniform1f(location(program, "u_eta"), static_cast<float>(surface.eta));
+  glUniform1f(location(program, "u_sigma"), static_cast<float>(surface.sigma));
+  return program;
+}
+
+void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport) const {
+  const GLuint program = begin_view(sphere_.get(), surface, viewport, kSphereMargin);
   glUniform3f(location(program, "u_light"), static_cast<float>(view.light[0]), static_cast<float>(view.light[1]),
               static_cast<float>(view.light[2]));
   glUniform1f(location(program, "u_irradiance"), static_cast<float>(view.irradiance));
   glUniform1f(location(program, "u_exposure"), static_cast<float>(view.exposure));
-  glUniform1f(location(program, "u_eta"), static_cast<float>(surface.eta));
-  glUniform1f(location(program, "u_sigma"), static_cast<float>(surface.sigma));
   glUniform1i(location(program, "u_output_linear"), view.linear_output ? 1 : 0);
   glUniform3f(location(program, "u_background"), 0.02f, 0.02f, 0.025f);
   glBindVertexArray(vertex_array_.get());
@@ -86,15 +91,8 @@ void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface,
 }
 
 void Renderer::draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport) const {
-  const GLuint program = lobe_.get();
-  glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
-  glUseProgram(program);
-  bind_tables(program);
-  const std::array<double, 2> extent = view_extent(viewport, kLobeMargin);
-  glUniform2f(location(program, "u_extent"), static_cast<float>(extent[0]), static_cast<float>(extent[1]));
+  const GLuint program = begin_view(lobe_.get(), surface, viewport, kLobeMargin);
   glUniform1f(location(program, "u_theta_i"), static_cast<float>(view.theta_i));
-  glUniform1f(location(program, "u_eta"), static_cast<float>(surface.eta));
-  glUniform1f(location(program, "u_sigma"), static_cast<float>(surface.sigma));
   glUniform1i(location(program, "u_log_scale"), view.log_scale ? 1 : 0);
   glUniform1f(location(program, "u_peak"), static_cast<float>(view.peak));
   glUniform1f(location(program, "u_decades"), static_cast<float>(view.decades));

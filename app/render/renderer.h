@@ -55,6 +55,8 @@ class Renderer {
 
  private:
   void bind_tables(GLuint program) const;
+  // Uses the program on the viewport with the tables, the view extent and the surface parameters set; returns it.
+  GLuint begin_view(GLuint program, const SurfaceParams& surface, const Viewport& viewport, double margin) const;
 
   gl::Program sphere_;
   gl::Program lobe_;
