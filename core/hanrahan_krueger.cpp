@@ -27,7 +27,6 @@ double phase(const Material& material, double mu_i, double mu_o, double phi) {
 }  // namespace
 
 double hanrahan_krueger_brdf_subsurface(const Material& material, double theta_i, double theta_o, double phi) {
-  validate(material);
   const double eta = material.eta;
   const double mu_i = refracted_cosine(theta_i, eta);
   const double mu_o = refracted_cosine(theta_o, eta);
@@ -39,7 +38,6 @@ double hanrahan_krueger_brdf_subsurface(const Material& material, double theta_i
 }
 
 double hanrahan_krueger_btdf(const Material& material, double theta_i, double theta_o, double phi) {
-  validate(material);
   if (material.bottom.kind == BottomKind::Lambert || std::isinf(material.tau)) return 0.0;
   const double eta = material.eta;
   const double eta_3 = material.bottom.kind == BottomKind::Air ? material.bottom_eta() : 1.0;

@@ -10,7 +10,8 @@
 //   f_t = Omega T12(theta_i) T23(theta_o') p (e^{-tau/mu_i'} - e^{-tau/mu_o'}) / (eta_3^2 (mu_i' - mu_o'))
 // where eta_3 = n_layer / n_below (1 for a matched bottom; a Lambertian bottom transmits nothing). In the
 // index-matched limit f_r is the exact single-scattering BRDF of the slab. The surface term is the caller's
-// (the same rough-dielectric term as the layer model). Angles: core/conventions.h.
+// (the same rough-dielectric term as the layer model). Angles: core/conventions.h. The material must be valid
+// (validate() in material.h); these are evaluated per sample and do not check it.
 #pragma once
 
 #include "core/material.h"

@@ -6,14 +6,16 @@
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
+#include "app/cli/model_flag.h"
 #include "app/cli/numeric_table.h"
 #include "core/conventions.h"
 #include "core/solver.h"
+#include "core/subsurface_model.h"
 
 namespace skinlayer::cli {
 
 std::string eval_usage() {
-  return "Usage: skinlayer eval [material flags] < rows.csv\n"
+  return "Usage: skinlayer eval [material flags] [--model stam|lambert|hk] < rows.csv\n"
          "\n"
          "Reads CSV rows theta_i,theta_o,phi from stdin and writes, one row per input row, in order:\n"
          "  theta_i,theta_o,phi,brdf_surface,brdf_subsurface,brdf,btdf\n"
@@ -22,6 +24,8 @@ std::string eval_usage() {
          "theta_o lie in [0, 90]; phi is any finite number. The first line may be the header theta_i,theta_o,phi.\n"
          "BSDFs are plain (not cosine-weighted), in 1/sr; brdf = brdf_surface + brdf_subsurface; btdf is the\n"
          "radiance BSDF into the medium below without the unscattered beam (0 for --bottom lambert:A).\n"
+         "--model picks the subsurface model (the surface term is the same): stam, the layer model (default);\n"
+         "lambert, A/pi with the layer's albedo at normal incidence; hk, Hanrahan-Krueger single scattering.\n"
          "\n" +
          material_flags_usage() +
          "\n"
@@ -34,8 +38,11 @@ int run_eval_command(std::span<const std::string_view> arguments, std::istream& 
     out << eval_usage();
     return kExitSuccess;
   }
-  const Material material = material_from_flags(ParsedFlags::parse(arguments, material_flag_names(), "skinlayer eval"));
-  const LayerTables tables = solve(material);
+  std::vector<std::string_view> known(material_flag_names().begin(), material_flag_names().end());
+  known.push_back(kModelFlag);
+  const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer eval");
+  const Material material = material_from_flags(flags);
+  const LayerTables tables = solve_model(material, model_from_flags(flags));
   const std::vector<AngleRow> rows = read_angle_rows(in);
 
   NumericTable table({"theta_i", "theta_o", "phi"}, {"brdf_surface", "brdf_subsurface", "brdf", "btdf"});

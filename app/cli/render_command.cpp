@@ -7,6 +7,7 @@
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
+#include "app/cli/model_flag.h"
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/gl/osmesa_context.h"
@@ -25,7 +26,9 @@ constexpr int kMaxSide = 8192;
 std::vector<std::string_view> known_flags() {
   const std::span<const std::string_view> material_flags = material_flag_names();
   std::vector<std::string_view> flags(material_flags.begin(), material_flags.end());
-  for (std::string_view flag : {"light-theta", "light-phi", "view", "size", "exposure", "scale", "output"}) {
+  for (std::string_view flag : {kModelFlag, std::string_view("light-theta"), std::string_view("light-phi"),
+                                std::string_view("view"), std::string_view("size"), std::string_view("exposure"),
+                                std::string_view("scale"), std::string_view("output")}) {
     flags.push_back(flag);
   }
   return flags;
@@ -88,13 +91,14 @@ ViewKind parse_view(std::string_view text) {
 }  // namespace
 
 std::string render_usage() {
-  return "Usage: skinlayer render [material flags] [--albedo A | r,g,b] [--light-theta D] [--light-phi D]\n"
+  return "Usage: skinlayer render [material flags] [--albedo A | r,g,b] [--model M] [--light-theta D] [--light-phi D]\n"
          "                        [--view sphere|polar|both] [--size WxH] [--exposure E] [--scale linear|log]\n"
          "                        -o FILE.png\n"
          "\n"
          "Renders the previewer's picture offscreen (OSMesa, no display needed) with the same renderer as the\n"
          "window and writes it as PNG.\n"
          "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in [0, 1] (default 1)\n"
+         "  --model M            subsurface model: stam (default), lambert or hk (Hanrahan-Krueger)\n"
          "  --light-theta D      light angle from the view direction, degrees in [0, 89.9] (default 45)\n"
          "  --light-phi D        light azimuth in the picture plane, degrees (default 180: from the left)\n"
          "  --view V             sphere, polar (lobes in the plane of incidence) or both (default both)\n"
@@ -130,7 +134,7 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
   }
   const std::vector<std::string_view> known = known_flags();
   const ParsedFlags flags = ParsedFlags::parse(rewritten, known, "skinlayer render");
-  ColorMaterial material{material_from_flags(flags), albedo_rgb};
+  ColorMaterial material{material_from_flags(flags), albedo_rgb, model_from_flags(flags)};
   const std::optional<std::string_view> output = flags.value("output");
   if (!output) throw UsageError("render needs -o FILE.png (the picture to write)");
   const ViewKind view = parse_view(flags.value("view").value_or("both"));

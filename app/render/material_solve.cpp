@@ -2,8 +2,35 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+
+#include "core/conventions.h"
+#include "core/quadrature.h"
 
 namespace skinlayer {
+
+namespace {
+
+// A comparison model's directional albedo: its tables' mode 0 integrated over the outgoing hemisphere,
+//   R_sub = 2 pi int_0^{pi/2} S_0(theta_i, theta) cos(theta) sin(theta) d theta  (likewise T from B_0),
+// with the layer's surface reflectance (the surface term is shared) and interface loss left out.
+DirectionalAlbedo model_albedo(const LayerTables& tables, const DirectionalAlbedo& layer) {
+  const QuadratureRule theta = gauss_legendre(64, 0.0, 0.5 * kPi);
+  DirectionalAlbedo row = layer;
+  row.reflectance_subsurface = 0.0;
+  row.transmittance = 0.0;
+  for (int a = 0; a < theta.size(); ++a) {
+    const double t = theta.nodes[a];
+    const double weight = 2.0 * kPi * theta.weights[a] * std::cos(t) * std::sin(t);
+    row.reflectance_subsurface += weight * tables.reflection_mode(0, layer.theta_i, t);
+    row.transmittance += weight * tables.transmission_mode(0, layer.theta_i, t);
+  }
+  row.interface_loss = 0.0;
+  row.absorptance = 1.0 - row.reflectance() - row.transmittance;
+  return row;
+}
+
+}  // namespace
 
 ColorTables solve_color(const ColorMaterial& material, double theta_i) {
   const auto start = std::chrono::steady_clock::now();
@@ -18,12 +45,24 @@ ColorTables solve_color(const ColorMaterial& material, double theta_i) {
     index[c] = static_cast<std::size_t>(found - distinct.begin());
     if (found == distinct.end()) distinct.push_back(material.albedo_rgb[c]);
   }
-  const std::vector<LayerTables> tables = solve(material.layer, distinct);
-  const std::vector<std::vector<DirectionalAlbedo>> albedo =
+  std::vector<LayerTables> tables;
+  std::vector<DirectionalAlbedo> albedo;
+  const std::vector<std::vector<DirectionalAlbedo>> layer_albedo =
       directional_albedo(material.layer, std::vector<double>{theta_i}, distinct);
+  if (material.model == SubsurfaceModel::Stam) {
+    tables = solve(material.layer, distinct);
+    for (const std::vector<DirectionalAlbedo>& rows : layer_albedo) albedo.push_back(rows.front());
+  } else {
+    for (std::size_t d = 0; d < distinct.size(); ++d) {
+      Material layer = material.layer;
+      layer.albedo = distinct[d];
+      tables.push_back(solve_model(layer, material.model));
+      albedo.push_back(model_albedo(tables.back(), layer_albedo[d].front()));
+    }
+  }
   for (int c = 0; c < 3; ++c) {
     result.channels[c] = tables[index[c]];
-    result.albedo[c] = albedo[index[c]].front();
+    result.albedo[c] = albedo[index[c]];
   }
   result.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

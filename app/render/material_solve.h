@@ -8,12 +8,14 @@
 #include "core/layer_tables.h"
 #include "core/material.h"
 #include "core/solver.h"
+#include "core/subsurface_model.h"
 
 namespace skinlayer {
 
 struct ColorMaterial {
   Material layer;                                  // layer.albedo is ignored; albedo_rgb is used instead
   std::array<double, 3> albedo_rgb = {1.0, 1.0, 1.0};
+  SubsurfaceModel model = SubsurfaceModel::Stam;  // the comparison models share the surface term
 };
 
 struct ColorTables {
@@ -25,7 +27,8 @@ struct ColorTables {
 };
 
 // Validates the material (every channel) and solves each distinct albedo value once; also the directional albedo
-// at theta_i (radians). Throws ParameterError for invalid parameters.
+// at theta_i (radians): the layer's from the solver, or for a comparison model its tables integrated over the
+// hemisphere (with the same surface reflectance). Throws ParameterError for invalid parameters.
 ColorTables solve_color(const ColorMaterial& material, double theta_i = 0.0);
 
 // The surface term plus the subsurface BRDF of one channel, and the BTDF, in 1/sr (graphics convention, radians).

@@ -8,6 +8,9 @@
 #include "tests/app/csv_output.h"
 #include "tests/app/error_expectations.h"
 #include "tests/app/process_runner.h"
+#include "core/conventions.h"
+#include "core/hanrahan_krueger.h"
+#include "core/lambert_model.h"
 
 namespace skinlayer::test {
 namespace {
@@ -186,6 +189,31 @@ TEST(CliEval, BadFlagFailsBeforeReadingStdin) {
 
 TEST(CliEval, RejectsTheAlbedoOnlyFlag) {
   EXPECT_TRUE(failed_with_one_line(eval({"--theta-i", "30"}, "0,0,0\n"), 2, {"--theta-i"}));
+}
+
+// --model: the comparison models keep the same surface term; lambert is A/pi with no transmission; hk is
+// Hanrahan-Krueger's closed form (within the tables' 0.5% spline and truncation tolerance).
+TEST(CliEval, ModelFlagSelectsTheComparisonModels) {
+  const ProcessResult stam = eval({}, angles_csv(false, "\n"));
+  const ProcessResult lambert = eval({"--model", "lambert"}, angles_csv(false, "\n"));
+  const ProcessResult hk = eval({"--model=hk"}, angles_csv(false, "\n"));
+  ASSERT_EQ(stam.exit_code, 0) << stam.err;
+  ASSERT_EQ(lambert.exit_code, 0) << lambert.err;
+  ASSERT_EQ(hk.exit_code, 0) << hk.err;
+  const CsvOutput s = parse_csv_output(stam.out), l = parse_csv_output(lambert.out), h = parse_csv_output(hk.out);
+  const Material material;
+  const double diffuse = lambert_model_for(material).brdf_subsurface();
+  for (std::size_t r = 0; r < kAngles.size(); ++r) {
+    EXPECT_EQ(l.rows[r][kBrdfSurface], s.rows[r][kBrdfSurface]);
+    EXPECT_EQ(h.rows[r][kBrdfSurface], s.rows[r][kBrdfSurface]);
+    EXPECT_NEAR(l.rows[r][kBrdfSubsurface], diffuse, 1e-12);
+    EXPECT_EQ(l.rows[r][kBtdf], 0.0);
+    const double ti = degrees_to_radians(kAngles[r][0]), to = degrees_to_radians(kAngles[r][1]);
+    const double phi = degrees_to_radians(kAngles[r][2]);
+    const double expected = hanrahan_krueger_brdf_subsurface(material, ti, to, phi);
+    EXPECT_NEAR(h.rows[r][kBrdfSubsurface], expected, 5e-3 * expected) << "row " << r;
+  }
+  EXPECT_TRUE(failed_with_one_line(eval({"--model", "phong"}, angles_csv(false, "\n")), 2, {"model", "'phong'"}));
 }
 
 }  // namespace

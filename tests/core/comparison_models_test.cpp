@@ -11,6 +11,7 @@
 #include "core/lambert_model.h"
 #include "core/quadrature.h"
 #include "core/solver.h"
+#include "core/subsurface_model.h"
 
 namespace skinlayer {
 namespace {
@@ -116,6 +117,37 @@ TEST(LambertModel, TotalBrdfIsReciprocal) {
       EXPECT_NEAR(forward, backward, 1e-12 * forward);
     }
   }
+}
+
+}  // namespace
+}  // namespace skinlayer
+
+namespace skinlayer {
+namespace {
+
+// Every model as tables: the same evaluation path as the layer's, within the spline and truncation tolerance.
+TEST(SubsurfaceModel, TablesReproduceEachModel) {
+  Material m;
+  m.g = 0.5;
+  const LayerTables hk = solve_model(m, SubsurfaceModel::HanrahanKrueger);
+  const LayerTables lambert = solve_model(m, SubsurfaceModel::Lambert);
+  const double diffuse = lambert_model_for(m).brdf_subsurface();
+  for (double ti : {0.0, 0.4, 0.9, 1.3}) {
+    for (double to : {0.1, 0.6, 1.1}) {
+      for (double phi : {0.0, 1.0, 2.0, kPi}) {
+        const double expected_r = hanrahan_krueger_brdf_subsurface(m, ti, to, phi);
+        const double expected_t = hanrahan_krueger_btdf(m, ti, to, phi);
+        EXPECT_NEAR(hk.brdf_subsurface(ti, to, phi), expected_r, 5e-3 * expected_r);
+        EXPECT_NEAR(hk.btdf(ti, to, phi), expected_t, 5e-3 * expected_t);
+        EXPECT_NEAR(lambert.brdf_subsurface(ti, to, phi), diffuse, 1e-12);
+        EXPECT_EQ(lambert.btdf(ti, to, phi), 0.0);
+      }
+    }
+  }
+  EXPECT_EQ(parse_subsurface_model("hk"), SubsurfaceModel::HanrahanKrueger);
+  EXPECT_EQ(parse_subsurface_model("lambert"), SubsurfaceModel::Lambert);
+  EXPECT_EQ(parse_subsurface_model("stam"), SubsurfaceModel::Stam);
+  EXPECT_FALSE(parse_subsurface_model("phong").has_value());
 }
 
 }  // namespace

@@ -1,0 +1,22 @@
+#include "app/cli/model_flag.h"
+
+#include <optional>
+#include <string>
+
+#include "app/cli/errors.h"
+#include "app/cli/quoted.h"
+
+namespace skinlayer::cli {
+
+SubsurfaceModel model_from_flags(const ParsedFlags& flags) {
+  const std::optional<std::string_view> text = flags.value(kModelFlag);
+  if (!text) return SubsurfaceModel::Stam;
+  const std::optional<SubsurfaceModel> model = parse_subsurface_model(*text);
+  if (!model) {
+    throw UsageError("model = " + quoted(*text) +
+                     " is not one of stam (the layer model), lambert, hk (Hanrahan-Krueger single scattering)");
+  }
+  return *model;
+}
+
+}  // namespace skinlayer::cli

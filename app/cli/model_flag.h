@@ -1,0 +1,16 @@
+// --model stam|lambert|hk: which subsurface model a command evaluates (core/subsurface_model.h). Default stam.
+#pragma once
+
+#include <string_view>
+
+#include "app/cli/flag_parser.h"
+#include "core/subsurface_model.h"
+
+namespace skinlayer::cli {
+
+inline constexpr std::string_view kModelFlag = "model";
+
+// Throws UsageError naming the flag and its choices for an unknown model.
+SubsurfaceModel model_from_flags(const ParsedFlags& flags);
+
+}  // namespace skinlayer::cli
