@@ -82,10 +82,9 @@ std::pair<int, int> parse_size(std::string_view text) {
 }
 
 ViewKind parse_view(std::string_view text) {
-  if (text == "sphere") return ViewKind::Sphere;
-  if (text == "polar") return ViewKind::Polar;
-  if (text == "both") return ViewKind::Both;
-  throw UsageError("view = " + quoted(text) + " is not one of sphere, polar, both");
+  const std::optional<ViewKind> view = parse_view_kind(text);
+  if (!view) throw UsageError("view = " + quoted(text) + " is not one of sphere, polar, both, compare");
+  return *view;
 }
 
 }  // namespace
@@ -101,8 +100,9 @@ std::string render_usage() {
          "  --model M            subsurface model: stam (default), lambert or hk (Hanrahan-Krueger)\n"
          "  --light-theta D      light angle from the view direction, degrees in [0, 89.9] (default 45)\n"
          "  --light-phi D        light azimuth in the picture plane, degrees (default 180: from the left)\n"
-         "  --view V             sphere, polar (lobes in the plane of incidence) or both (default both)\n"
-         "  --size WxH           pixels (default 1024x512 for both, 512x512 otherwise)\n"
+         "  --view V             sphere, polar (lobes in the plane of incidence), both, or compare: three\n"
+         "                       spheres, Lambert | Hanrahan-Krueger | the layer model (default both)\n"
+         "  --size WxH           pixels (default 1024x512 for both, 1200x400 for compare, 512x512 otherwise)\n"
          "  --exposure E         linear exposure before the exponential tone map, in (0, 1000] (default 1)\n"
          "  --scale S            lobe radius linear or log (3 decades) (default linear)\n"
          "  -o, --output FILE    the PNG to write (required)\n"
@@ -138,7 +138,10 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
   const std::optional<std::string_view> output = flags.value("output");
   if (!output) throw UsageError("render needs -o FILE.png (the picture to write)");
   const ViewKind view = parse_view(flags.value("view").value_or("both"));
-  const auto [width, height] = parse_size(flags.value("size").value_or(view == ViewKind::Both ? "1024x512" : "512x512"));
+  const std::string_view default_size = view == ViewKind::Both      ? "1024x512"
+                                        : view == ViewKind::Compare ? "1200x400"
+                                                                    : "512x512";
+  const auto [width, height] = parse_size(flags.value("size").value_or(default_size));
   const double light_theta = degrees_to_radians(number_in(flags, "light-theta", 45.0, 0.0, 89.9, " (degrees)"));
   const double light_phi = degrees_to_radians(number_in(flags, "light-phi", 180.0, -360.0, 360.0, " (degrees)"));
   const double exposure = number_in(flags, "exposure", 1.0, 1e-6, 1000.0, "");
@@ -149,6 +152,13 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
   gl::OsmesaContext context(width, height);
   Renderer renderer;
   renderer.upload(make_table_textures(tables));
+  if (view == ViewKind::Compare) {  // slot 0 holds the layer model; the comparison models go to their slots
+    for (std::size_t k = 0; k < kCompareSlots.size(); ++k) {
+      ColorMaterial compared = material;
+      compared.model = kCompareModels[k];
+      renderer.upload(make_table_textures(solve_color(compared, light_theta)), kCompareSlots[k]);
+    }
+  }
   const Scene scene = make_scene(tables, view, light_theta, light_phi, exposure, scale == "log");
   RenderTarget target(width, height, PixelFormat::Rgba8);
   target.bind();

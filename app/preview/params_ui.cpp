@@ -127,6 +127,20 @@ bool bottom_controls(Material& layer, bool unicode) {
   return changed;
 }
 
+// The subsurface model of the sphere and plots (the surface term is shared); the compare view shows all three.
+bool model_controls(SubsurfaceModel& model) {
+  constexpr std::array<const char*, 3> kModels = {"layer (Stam 2001)", "Lambert (same albedo at normal)",
+                                                  "Hanrahan-Krueger (single scattering)"};
+  int index = static_cast<int>(model);
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted("model");
+  ImGui::SameLine(label_column());
+  ImGui::SetNextItemWidth(-1.0f);
+  if (!ImGui::Combo("##model", &index, kModels.data(), static_cast<int>(kModels.size()))) return false;
+  model = static_cast<SubsurfaceModel>(index);
+  return true;
+}
+
 bool albedo_controls(std::array<double, 3>& albedo_rgb, bool unicode) {
   const ParameterInfo& info = parameter_info("albedo");
   label_with_tooltip(SliderSpec{std::string(unicode ? info.symbol : info.flag),
@@ -213,6 +227,7 @@ bool material_controls(ColorMaterial& material, bool unicode) {
   changed |= slider_row(spec_from_table("g", unicode), layer.g);
   changed |= bottom_controls(layer, unicode);
   changed |= ordinates_controls(layer, unicode);
+  changed |= model_controls(material.model);
   return changed;
 }
 
@@ -236,7 +251,7 @@ bool view_controls(ViewOptions& view) {
                         view.exposure_stops);
   changed |= ImGui::Checkbox("log lobe radius (L)", &view.log_lobes);
   ImGui::SameLine();
-  constexpr std::array<const char*, 3> kViews = {"sphere", "plots", "both"};
+  constexpr std::array<const char*, 4> kViews = {"sphere", "plots", "both", "compare: Lambert | HK | layer"};
   int kind = static_cast<int>(view.view);
   ImGui::SetNextItemWidth(-1.0f);
   if (ImGui::Combo("##view", &kind, kViews.data(), static_cast<int>(kViews.size()))) {

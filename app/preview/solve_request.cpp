@@ -16,7 +16,7 @@ bool same_layer(const Material& a, const Material& b) {
 
 bool same_request(const SolveRequest& a, const SolveRequest& b) {
   return same_layer(a.material.layer, b.material.layer) && a.material.albedo_rgb == b.material.albedo_rgb &&
-         a.theta_i == b.theta_i;
+         a.material.model == b.material.model && a.theta_i == b.theta_i && a.compare == b.compare;
 }
 
 }  // namespace skinlayer

@@ -1,5 +1,7 @@
 #include "app/preview/solve_worker.h"
 
+#include "app/render/scene.h"
+
 #include <chrono>
 #include <exception>
 #include <utility>
@@ -14,9 +16,18 @@ SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation)
   try {
     result.tables = solve_color(request.material, request.theta_i);
     result.textures = make_table_textures(result.tables);
+    if (request.compare) {
+      for (const SubsurfaceModel model : kCompareModels) {
+        ColorMaterial compared = request.material;
+        compared.model = model;
+        result.comparison_textures.push_back(
+            model == request.material.model ? result.textures : make_table_textures(solve_color(compared, request.theta_i)));
+      }
+    }
   } catch (const std::exception& error) {
     result.tables = ColorTables{};
     result.textures = TableTextureData{};
+    result.comparison_textures.clear();
     result.error = error.what();
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -19,6 +19,7 @@
 #include <stop_token>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "app/preview/solve_request.h"
 #include "app/render/material_solve.h"
@@ -31,6 +32,8 @@ struct SolveResult {
   SolveRequest request;
   ColorTables tables;         // empty when error is set
   TableTextureData textures;  // the tables in the GPU layout (shaders/table_layout.h); empty when error is set
+  // request.compare: the tables of each model of kCompareModels, for renderer slot kCompareSlots[k]
+  std::vector<TableTextureData> comparison_textures;
   std::string error;          // non-empty: the request was rejected (ParameterError's message) or the solve failed
   double seconds = 0.0;       // wall time of the solve and the texture build
 };

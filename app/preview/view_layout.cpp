@@ -12,6 +12,13 @@ PreviewLayout layout_preview(float window_width, float window_height, float pane
   const Rect area{panel, 0.0f, window_width - panel, window_height};
   if (view == ViewKind::Sphere) layout.sphere = area;
   if (view == ViewKind::Polar) layout.plots = area;
+  if (view == ViewKind::Compare) {
+    const float third = std::floor(area.width / 3.0f);
+    for (int k = 0; k < 3; ++k) {
+      const float width = k < 2 ? third : area.width - 2.0f * third;
+      layout.compare[k] = {area.x + static_cast<float>(k) * third, area.y, width, area.height};
+    }
+  }
   if (view == ViewKind::Both) {
     const float half = std::floor(0.5f * area.width);
     layout.sphere = {area.x, area.y, half, area.height};

@@ -28,6 +28,7 @@ struct PreviewLayout {
   Rect panel;   // the controls, full height on the left
   Rect sphere;  // empty when the view kind hides it
   Rect plots;   // empty when the view kind hides it
+  std::array<Rect, 3> compare{};  // Compare only: Lambert | Hanrahan-Krueger | layer model spheres
 };
 
 // The panel takes panel_width on the left (at most half the window); the views share the rest as

@@ -39,37 +39,40 @@ std::array<double, 2> view_extent(const Viewport& viewport, double margin) {
 }
 
 Renderer::Renderer()
-    : sphere_(build("sphere.frag")),
-      lobe_(build("lobe.frag")),
-      vertex_array_(gl::create_vertex_array()),
-      reflection_(gl::create_texture()),
-      transmission_(gl::create_texture()) {
-  upload(TableTextureData{2, 0, std::vector<float>(16, 0.0f), std::vector<float>(16, 0.0f)});
+    : sphere_(build("sphere.frag")), lobe_(build("lobe.frag")), vertex_array_(gl::create_vertex_array()) {
+  const TableTextureData empty{2, 0, std::vector<float>(16, 0.0f), std::vector<float>(16, 0.0f)};
+  for (int slot = 0; slot < kTableSlots; ++slot) {
+    slots_[slot].reflection = gl::create_texture();
+    slots_[slot].transmission = gl::create_texture();
+    upload(empty, slot);
+  }
   gl::check_errors("Renderer()");
 }
 
-void Renderer::upload(const TableTextureData& tables) {
-  upload_array(reflection_.get(), tables.size, tables.modes, tables.reflection);
-  upload_array(transmission_.get(), tables.size, tables.modes, tables.transmission);
-  modes_ = tables.modes;
+void Renderer::upload(const TableTextureData& tables, int slot) {
+  TableSlot& target = slots_.at(static_cast<std::size_t>(slot));
+  upload_array(target.reflection.get(), tables.size, tables.modes, tables.reflection);
+  upload_array(target.transmission.get(), tables.size, tables.modes, tables.transmission);
+  target.modes = tables.modes;
   gl::check_errors("Renderer::upload");
 }
 
-void Renderer::bind_tables(GLuint program) const {
+void Renderer::bind_tables(GLuint program, int slot) const {
+  const TableSlot& tables = slots_.at(static_cast<std::size_t>(slot));
   glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, reflection_.get());
+  glBindTexture(GL_TEXTURE_2D_ARRAY, tables.reflection.get());
   glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D_ARRAY, transmission_.get());
+  glBindTexture(GL_TEXTURE_2D_ARRAY, tables.transmission.get());
   glUniform1i(location(program, "u_reflection"), 0);
   glUniform1i(location(program, "u_transmission"), 1);
-  glUniform1i(location(program, "u_modes"), modes_);
+  glUniform1i(location(program, "u_modes"), tables.modes);
 }
 
-GLuint Renderer::begin_view(GLuint program, const SurfaceParams& surface, const Viewport& viewport,
-                            double margin) const {
+GLuint Renderer::begin_view(GLuint program, const SurfaceParams& surface, const Viewport& viewport, double margin,
+                            int slot) const {
   glViewport(viewport.x, viewport.y, viewport.width, viewport.height);
   glUseProgram(program);
-  bind_tables(program);
+  bind_tables(program, slot);
   const std::array<double, 2> extent = view_extent(viewport, margin);
   glUniform2f(location(program, "u_extent"), static_cast<float>(extent[0]), static_cast<float>(extent[1]));
   glUniform1f(location(program, "u_eta"), static_cast<float>(surface.eta));
@@ -77,8 +80,9 @@ GLuint Renderer::begin_view(GLuint program, const SurfaceParams& surface, const 
   return program;
 }
 
-void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport) const {
-  const GLuint program = begin_view(sphere_.get(), surface, viewport, kSphereMargin);
+void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport,
+                           int slot) const {
+  const GLuint program = begin_view(sphere_.get(), surface, viewport, kSphereMargin, slot);
   glUniform3f(location(program, "u_light"), static_cast<float>(view.light[0]), static_cast<float>(view.light[1]),
               static_cast<float>(view.light[2]));
   glUniform1f(location(program, "u_irradiance"), static_cast<float>(view.irradiance));
@@ -90,8 +94,9 @@ void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface,
   gl::check_errors("Renderer::draw_sphere");
 }
 
-void Renderer::draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport) const {
-  const GLuint program = begin_view(lobe_.get(), surface, viewport, kLobeMargin);
+void Renderer::draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport,
+                          int slot) const {
+  const GLuint program = begin_view(lobe_.get(), surface, viewport, kLobeMargin, slot);
   glUniform1f(location(program, "u_theta_i"), static_cast<float>(view.theta_i));
   glUniform1i(location(program, "u_log_scale"), view.log_scale ? 1 : 0);
   glUniform1f(location(program, "u_peak"), static_cast<float>(view.peak));

@@ -42,28 +42,37 @@ std::array<double, 2> view_extent(const Viewport& viewport, double margin);
 
 class Renderer {
  public:
+  // Table slots: slot 0 holds the shown material; the side-by-side comparison puts more models in the others.
+  static constexpr int kTableSlots = 3;
+
   Renderer();
 
-  void upload(const TableTextureData& tables);
-  bool has_tables() const { return modes_ > 0; }
+  void upload(const TableTextureData& tables, int slot = 0);
+  bool has_tables(int slot = 0) const { return slots_.at(static_cast<std::size_t>(slot)).modes > 0; }
 
-  void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport) const;
-  void draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport) const;
+  void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport,
+                   int slot = 0) const;
+  void draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0) const;
 
   static constexpr double kSphereMargin = 1.08;
   static constexpr double kLobeMargin = 1.1;
 
  private:
-  void bind_tables(GLuint program) const;
-  // Uses the program on the viewport with the tables, the view extent and the surface parameters set; returns it.
-  GLuint begin_view(GLuint program, const SurfaceParams& surface, const Viewport& viewport, double margin) const;
+  struct TableSlot {
+    gl::Texture reflection;
+    gl::Texture transmission;
+    int modes = 0;
+  };
+
+  void bind_tables(GLuint program, int slot) const;
+  // Uses the program on the viewport with a slot's tables, the view extent and the surface parameters set.
+  GLuint begin_view(GLuint program, const SurfaceParams& surface, const Viewport& viewport, double margin,
+                    int slot) const;
 
   gl::Program sphere_;
   gl::Program lobe_;
   gl::VertexArray vertex_array_;
-  gl::Texture reflection_;
-  gl::Texture transmission_;
-  int modes_ = 0;
+  std::array<TableSlot, kTableSlots> slots_;
 };
 
 }  // namespace skinlayer

@@ -8,6 +8,14 @@
 
 namespace skinlayer {
 
+std::optional<ViewKind> parse_view_kind(std::string_view name) {
+  if (name == "sphere") return ViewKind::Sphere;
+  if (name == "polar") return ViewKind::Polar;
+  if (name == "both") return ViewKind::Both;
+  if (name == "compare") return ViewKind::Compare;
+  return std::nullopt;
+}
+
 std::array<double, 3> light_direction(double theta, double phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
@@ -38,6 +46,10 @@ Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, d
 }
 
 std::vector<Viewport> scene_viewports(ViewKind view, int width, int height) {
+  if (view == ViewKind::Compare) {
+    const int third = width / 3;
+    return {{0, 0, third, height}, {third, 0, third, height}, {2 * third, 0, width - 2 * third, height}};
+  }
   if (view != ViewKind::Both) return {{0, 0, width, height}};
   const int half = width / 2;
   return {{0, 0, half, height}, {half, 0, width - half, height}};
@@ -54,6 +66,11 @@ void draw_scene(const Renderer& renderer, const Scene& scene, int width, int hei
   if (scene.view == ViewKind::Both) {
     renderer.draw_sphere(scene.sphere, scene.surface, viewports[0]);
     renderer.draw_lobes(scene.lobes, scene.surface, viewports[1]);
+  }
+  if (scene.view == ViewKind::Compare) {
+    for (std::size_t k = 0; k < kCompareSlots.size(); ++k) {
+      renderer.draw_sphere(scene.sphere, scene.surface, viewports[k], kCompareSlots[k]);
+    }
   }
 }
 

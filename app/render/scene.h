@@ -1,6 +1,8 @@
 // What one picture shows: the sphere, the polar lobes, or both side by side, and how the views share the frame.
 #pragma once
 
+#include <optional>
+#include <string_view>
 #include <vector>
 
 #include "app/render/material_solve.h"
@@ -8,7 +10,18 @@
 
 namespace skinlayer {
 
-enum class ViewKind { Sphere, Polar, Both };
+// Compare: three spheres under the same light, Lambert | Hanrahan-Krueger | the layer model (Stam's last results
+// slide), drawn from renderer slots 1, 2 and 0.
+enum class ViewKind { Sphere, Polar, Both, Compare };
+
+// "sphere", "polar", "both", "compare"; nullopt for anything else.
+std::optional<ViewKind> parse_view_kind(std::string_view name);
+
+// The renderer slot of each sphere of the Compare view, left to right, and the model it shows.
+inline constexpr std::array<int, 3> kCompareSlots = {1, 2, 0};
+inline constexpr std::array<SubsurfaceModel, 3> kCompareModels = {SubsurfaceModel::Lambert,
+                                                                  SubsurfaceModel::HanrahanKrueger,
+                                                                  SubsurfaceModel::Stam};
 
 struct Scene {
   ViewKind view = ViewKind::Both;
@@ -26,7 +39,8 @@ std::array<double, 3> light_direction(double theta, double phi);
 Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, double light_phi, double exposure,
                  bool log_scale);
 
-// Viewports of the scene's views in a width x height frame (sphere left, polar right for Both).
+// Viewports of the scene's views in a width x height frame (sphere left, polar right for Both; three equal
+// columns for Compare).
 std::vector<Viewport> scene_viewports(ViewKind view, int width, int height);
 
 // Clears the bound framebuffer and draws every view of the scene.

@@ -46,6 +46,7 @@ class Previewer {
         imgui_(window_.handle(), window_.content_scale()),
         worker_(post_empty_event) {
     state_.material = options.material;
+    state_.view.view = options.view;
   }
 
   int run() {
@@ -146,7 +147,11 @@ class Previewer {
       return true;
     }
     renderer_.upload(result->textures);
+    for (std::size_t k = 0; k < result->comparison_textures.size(); ++k) {
+      renderer_.upload(result->comparison_textures[k], kCompareSlots[k]);
+    }
     result->textures = TableTextureData{};  // on the GPU now
+    result->comparison_textures.clear();
     error_.clear();
     shown_ = std::move(result);
     return true;
@@ -199,6 +204,12 @@ class Previewer {
     }
     if (!layout.plots.empty()) {
       renderer_.draw_lobes(scene_.lobes, scene_.surface, to_viewport(layout.plots, scale, framebuffer[1]));
+    }
+    if (scene_.view == ViewKind::Compare && shown_->request.compare) {
+      for (std::size_t k = 0; k < kCompareSlots.size(); ++k) {
+        renderer_.draw_sphere(scene_.sphere, scene_.surface, to_viewport(layout.compare[k], scale, framebuffer[1]),
+                              kCompareSlots[k]);
+      }
     }
   }
 

@@ -166,6 +166,15 @@ bool view_overlays(const ViewOverlayInput& input, LightState& light) {
     changed = sphere_drag(layout.sphere, light);
     light_marker(draw, layout.sphere, light);
   }
+  if (!layout.compare[0].empty()) {  // Stam's last results slide: the same light on three models
+    constexpr std::array<const char*, 3> kNames = {"Lambert", "Hanrahan-Krueger", "new model (Stam 2001)"};
+    for (std::size_t k = 0; k < kNames.size(); ++k) {
+      const Rect& rect = layout.compare[k];
+      const ImVec2 size = ImGui::CalcTextSize(kNames[k]);
+      draw.AddText(ImVec2(rect.x + 0.5f * (rect.width - size.x), rect.y + rect.height - size.y - 12.0f), kLabelColor,
+                   kNames[k]);
+    }
+  }
   if (!layout.plots.empty()) {
     ImGui::SetCursorScreenPos(ImVec2(layout.plots.x, layout.plots.y));
     ImGui::InvisibleButton("plots", ImVec2(layout.plots.width, layout.plots.height));

@@ -5,6 +5,7 @@
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
+#include "app/cli/model_flag.h"
 #include "core/solver.h"
 
 namespace skinlayer {
@@ -17,12 +18,18 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
   }
   const std::span<const std::string_view> material_flags = cli::material_flag_names();
   std::vector<std::string_view> known(material_flags.begin(), material_flags.end());
-  known.push_back("capture");
+  known.insert(known.end(), {"capture", "view", cli::kModelFlag});
   const cli::ParsedFlags flags = cli::ParsedFlags::parse(arguments, known, "skinlayer");
   options.material.layer = cli::material_from_flags(flags);
   if (options.material.layer.ordinates) choose_resolution(options.material.layer);  // checks the material's minimum
   const double albedo = options.material.layer.albedo;
   options.material.albedo_rgb = {albedo, albedo, albedo};
+  options.material.model = cli::model_from_flags(flags);
+  if (const std::optional<std::string_view> view = flags.value("view")) {
+    const std::optional<ViewKind> kind = parse_view_kind(*view);
+    if (!kind) throw cli::UsageError("view = '" + std::string(*view) + "' is not one of sphere, polar, both, compare");
+    options.view = *kind;
+  }
   if (const std::optional<std::string_view> path = flags.value("capture")) {
     if (path->empty()) throw cli::UsageError("capture needs a file name, as in --capture shot.png");
     options.capture_path = std::string(*path);
@@ -31,13 +38,17 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
 }
 
 std::string window_usage() {
-  return "Usage: skinlayer [--capture FILE.png] [material flags]\n"
+  return "Usage: skinlayer [--capture FILE.png] [--view sphere|polar|both|compare] [--model stam|lambert|hk]\n"
+         "                 [material flags]\n"
          "\n"
          "Opens the previewer: a lit sphere of the material beside polar plots of its BRDF and BTDF, with controls\n"
          "for every parameter (press F1 in the window for the keys). Needs a display; without one, use\n"
          "`skinlayer render -o out.png`.\n"
          "  --capture FILE.png   render until the material is solved, save a screenshot of the whole window\n"
          "                       (framebuffer resolution) to FILE.png, print its size and exit\n"
+         "  --view V             the views shown first: sphere, polar, both, or compare (three spheres:\n"
+         "                       Lambert | Hanrahan-Krueger | the layer model)\n"
+         "  --model M            the subsurface model of the sphere and plots: stam, lambert, hk\n"
          "\n" +
          cli::material_flags_usage();
 }

@@ -1,4 +1,4 @@
-// skinlayer-window's command line: [--capture FILE.png] [material flags]. `skinlayer` (no command, or --capture)
+// skinlayer-window's command line: [--capture FILE.png] [--view V] [--model M] [material flags]. `skinlayer` (no command, or --capture)
 // runs skinlayer-window with its own arguments unchanged, so these are also skinlayer's previewer arguments.
 #pragma once
 
@@ -8,11 +8,13 @@
 #include <string_view>
 
 #include "app/render/material_solve.h"
+#include "app/render/scene.h"
 
 namespace skinlayer {
 
 struct WindowOptions {
   ColorMaterial material;                   // from the material flags; --albedo sets all three channels
+  ViewKind view = ViewKind::Both;           // --view sphere|polar|both|compare
   std::optional<std::string> capture_path;  // --capture: save the whole window there once solved, then exit
   bool help = false;                        // --help or -h
 };

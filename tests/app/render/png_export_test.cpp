@@ -42,6 +42,27 @@ TEST(PngExport, RenderWritesADecodablePictureOfTheRequestedSize) {
   EXPECT_GT(variance, 100.0);  // not blank
 }
 
+// The side-by-side comparison (Lambert | Hanrahan-Krueger | layer model): three spheres, and Hanrahan-Krueger's
+// single scattering returns visibly less light than the layer it leaves multiple scattering out of.
+TEST(PngExport, CompareViewDrawsThreeModels) {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "skinlayer_compare_test.png";
+  const ProcessResult result = run_render("render --view compare --size 300x100 --T 0.05 -o " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(out.c_str(), &width, &height, &channels, 4);
+  ASSERT_NE(pixels, nullptr);
+  EXPECT_EQ(width, 300);
+  std::array<double, 3> brightness{};  // mean green of each third's central square
+  for (int k = 0; k < 3; ++k) {
+    for (int y = 35; y < 65; ++y) {
+      for (int x = 100 * k + 25; x < 100 * k + 55; ++x) brightness[k] += pixels[4 * (y * width + x) + 1];
+    }
+  }
+  stbi_image_free(pixels);
+  EXPECT_GT(brightness[0], 0.0);
+  EXPECT_LT(brightness[1], 0.8 * brightness[2]) << "HK " << brightness[1] << " layer " << brightness[2];
+}
+
 TEST(PngExport, UnwritablePathIsAClearError) {
   const ProcessResult result = run_render("render --size 64x64 -o /nonexistent-folder/x.png");
   EXPECT_NE(result.exit_code, 0);

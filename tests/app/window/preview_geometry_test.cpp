@@ -27,6 +27,22 @@ TEST(PreviewLayout, PanelAndViewsTileTheWindow) {
   EXPECT_EQ(layout_preview(600.0f, 400.0f, 390.0f, ViewKind::Both).panel.width, 300.0f);  // at most half
 }
 
+TEST(PreviewLayout, CompareShowsThreeSpheresSideBySide) {
+  const PreviewLayout compare = layout_preview(1280.0f, 720.0f, 380.0f, ViewKind::Compare);
+  EXPECT_TRUE(compare.sphere.empty());
+  EXPECT_TRUE(compare.plots.empty());
+  EXPECT_FLOAT_EQ(compare.compare[0].x, 380.0f);
+  for (int k = 0; k < 2; ++k) EXPECT_FLOAT_EQ(compare.compare[k].x + compare.compare[k].width, compare.compare[k + 1].x);
+  EXPECT_FLOAT_EQ(compare.compare[2].x + compare.compare[2].width, 1280.0f);
+  EXPECT_TRUE(layout_preview(1280.0f, 720.0f, 380.0f, ViewKind::Both).compare[0].empty());
+  // The comparison flag is part of the request, so switching to the compare view solves the other models.
+  PreviewState state;
+  const SolveRequest plain = solve_request(state);
+  state.view.view = ViewKind::Compare;
+  EXPECT_FALSE(same_request(plain, solve_request(state)));
+  EXPECT_TRUE(solve_request(state).compare);
+}
+
 TEST(PreviewLayout, ViewportsAreInFramebufferPixelsFromTheBottom) {
   const Rect rect{100.0f, 50.0f, 200.0f, 100.0f};
   const Viewport plain = to_viewport(rect, {1.0f, 1.0f}, 720);
