@@ -8,6 +8,7 @@
 #include "app/cli/error_report.h"
 #include "app/cli/errors.h"
 #include "app/cli/eval_command.h"
+#include "app/cli/figures_command.h"
 #include "app/cli/help_command.h"
 #include "app/cli/previewer_launcher.h"
 #include "app/cli/quoted.h"
@@ -23,6 +24,7 @@ int dispatch(std::span<const std::string_view> arguments, int argc, char** argv)
   if (command == "eval") return run_eval_command(rest, std::cin, std::cout);
   if (command == "albedo") return run_albedo_command(rest, std::cout);
   if (command == "render") return run_render_command(rest, std::cout);
+  if (command == "figures") return run_figures_command(rest, std::cout);
   if (command == "help" || command == "--help" || command == "-h") return run_help_command(rest, std::cout);
   if (command == "--version") {
     std::cout << "skinlayer " << SKINLAYER_VERSION << '\n';

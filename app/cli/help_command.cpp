@@ -3,6 +3,7 @@
 #include "app/cli/albedo_command.h"
 #include "app/cli/errors.h"
 #include "app/cli/eval_command.h"
+#include "app/cli/figures_command.h"
 #include "app/cli/quoted.h"
 #include "app/cli/render_command.h"
 
@@ -18,6 +19,8 @@ std::string overview_usage() {
          "      reflectance, transmittance and absorptance for light from each incidence angle.\n"
          "  skinlayer render [material flags] [--albedo A | r,g,b] [view flags] -o FILE.png\n"
          "      the previewer's sphere and polar lobes, rendered offscreen (no display needed) to a PNG.\n"
+         "  skinlayer figures -o DIR [--size PX]\n"
+         "      the results figures (lobe plots and model spheres): a PNG and a CSV each, and index.html.\n"
          "  skinlayer help [COMMAND], skinlayer COMMAND --help\n"
          "      usage of a command, with every flag, its range and default.\n"
          "  skinlayer --version\n"
@@ -42,8 +45,10 @@ int run_help_command(std::span<const std::string_view> arguments, std::ostream& 
     out << albedo_usage();
   } else if (command == "render") {
     out << render_usage();
+  } else if (command == "figures") {
+    out << figures_usage();
   } else {
-    throw UsageError("unknown command " + quoted(command) + "; the commands are eval, albedo and render");
+    throw UsageError("unknown command " + quoted(command) + "; the commands are eval, albedo, render and figures");
   }
   return kExitSuccess;
 }

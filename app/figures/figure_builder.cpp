@@ -1,0 +1,149 @@
+#include "app/figures/figure_builder.h"
+
+#include <algorithm>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/cli/numbers.h"
+#include "app/figures/model_spheres.h"
+#include "app/figures/polar_plot.h"
+#include "core/conventions.h"
+#include "core/microfacet.h"
+#include "core/solver.h"
+
+namespace skinlayer::figures {
+namespace {
+
+struct Sample {
+  double signed_theta_deg;  // < 0: back side (phi 0), >= 0: forward (phi 180)
+  double f;                 // 1/sr
+};
+
+struct Lobe {
+  std::string curve;   // the CSV's curve label
+  std::string value;   // the varied parameter's value
+  LayerParams params;
+  SubsurfaceModel model;
+  double theta_i_deg;
+  std::vector<Sample> reflection;
+  std::vector<Sample> transmission;
+  double peak = 0.0;
+};
+
+constexpr int kStepDeg = 1;
+
+double theta_of(double signed_theta_deg) { return std::abs(signed_theta_deg); }
+double phi_of(double signed_theta_deg) { return signed_theta_deg < 0.0 ? 0.0 : 180.0; }
+
+Lobe sample_lobe(const FigureCurve& curve, FigureKind kind, SolveCache& cache) {
+  Lobe lobe{curve.label, curve.value, curve.params, curve.model, curve.theta_i_deg, {}, {}, 0.0};
+  const Material material = curve.params.material();
+  const double theta_i = degrees_to_radians(curve.theta_i_deg);
+  const LayerTables* tables = kind == FigureKind::SurfaceLobes ? nullptr : &cache.tables(curve.params, curve.model);
+  const RoughDielectric interface{material.eta, material.sigma};
+  const Vec3 wi = direction_from_angles(theta_i, 0.0);
+  for (int s = -90; s <= 90; s += kStepDeg) {
+    const double theta_o = degrees_to_radians(theta_of(s)), phi = degrees_to_radians(phi_of(s));
+    double r = 0.0, t = 0.0;
+    if (tables == nullptr) {
+      r = brdf_surface(material, theta_i, theta_o, phi);
+      const Vec3 up = direction_from_angles(theta_o, phi);
+      t = microfacet_btdf(interface, wi, Vec3(up.x(), up.y(), -up.z()));  // theta_o from the lower normal
+    } else {
+      r = tables->brdf_subsurface(theta_i, theta_o, phi);
+      t = tables->btdf(theta_i, theta_o, phi);
+    }
+    lobe.reflection.push_back({static_cast<double>(s), r});
+    lobe.transmission.push_back({static_cast<double>(s), t});
+    lobe.peak = std::max({lobe.peak, r, t});
+  }
+  return lobe;
+}
+
+// Commas would split a CSV field; labels never need them.
+std::string csv_field(std::string text) {
+  std::replace(text.begin(), text.end(), ',', ';');
+  return text;
+}
+
+void write_csv(const std::vector<Lobe>& lobes, const FigureSpec& spec, const std::filesystem::path& path) {
+  using cli::format_number;
+  using cli::format_shortest;
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+  out << "curve,parameter,value,theta_i,theta_o,phi,side,quantity,f" << (spec.rescale_to_peak ? ",plotted" : "")
+      << ",model,sigma,eta,T,albedo,g\n";
+  for (const Lobe& lobe : lobes) {
+    const std::string material = std::string(subsurface_model_name(lobe.model)) + "," +
+                                 format_shortest(lobe.params.sigma) + "," + format_shortest(lobe.params.eta) + "," +
+                                 format_shortest(lobe.params.transparency) + "," +
+                                 format_shortest(lobe.params.albedo) + "," + format_shortest(lobe.params.g);
+    const bool surface = spec.kind == FigureKind::SurfaceLobes;
+    for (const char side : {'R', 'T'}) {
+      const char* quantity = side == 'R' ? (surface ? "brdf_surface" : "brdf_subsurface")
+                                         : (surface ? "interface_btdf" : "btdf");
+      for (const Sample& s : side == 'R' ? lobe.reflection : lobe.transmission) {
+        out << csv_field(lobe.curve) << ',' << spec.parameter << ',' << lobe.value << ',' << format_shortest(lobe.theta_i_deg)
+            << ',' << format_shortest(theta_of(s.signed_theta_deg)) << ',' << format_shortest(phi_of(s.signed_theta_deg))
+            << ',' << side << ',' << quantity << ',' << format_number(s.f);
+        if (spec.rescale_to_peak) out << ',' << format_number(lobe.peak > 0.0 ? s.f / lobe.peak : 0.0);
+        out << ',' << material << '\n';
+      }
+    }
+  }
+  if (!out.flush()) throw std::runtime_error("cannot write " + path.string());
+}
+
+std::vector<LobeSample> plotted(const std::vector<Sample>& samples, double scale) {
+  std::vector<LobeSample> out;
+  for (const Sample& s : samples) out.push_back({s.signed_theta_deg, s.f * scale});
+  return out;
+}
+
+}  // namespace
+
+const LayerTables& SolveCache::tables(const LayerParams& params, SubsurfaceModel model) {
+  const auto key = std::make_tuple(params.sigma, params.eta, params.transparency, params.albedo, params.g,
+                                   static_cast<int>(model));
+  auto found = solved_.find(key);
+  if (found == solved_.end()) found = solved_.emplace(key, solve_model(params.material(), model)).first;
+  return found->second;
+}
+
+FigureSize build_figure(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, SolveCache& cache,
+                  int size) {
+  std::vector<Lobe> lobes;
+  if (spec.kind == FigureKind::ModelSpheres) {
+    // The data behind the spheres: each model's lobes per color channel (Omega = that channel's albedo).
+    constexpr std::array<const char*, 3> kChannels = {"red", "green", "blue"};
+    for (const FigureCurve& curve : spec.curves) {
+      for (std::size_t c = 0; c < 3; ++c) {
+        FigureCurve channel = curve;
+        channel.params.albedo = curve.albedo_rgb[c];
+        channel.label = curve.label + " " + kChannels[c];
+        lobes.push_back(sample_lobe(channel, FigureKind::SubsurfaceLobes, cache));
+      }
+    }
+    write_csv(lobes, spec, dir / (spec.name + ".csv"));
+    const Image image = draw_model_spheres(spec, font, std::max(size * 7 / 16, 64));
+    write_png(image, (dir / (spec.name + ".png")).string());
+    return {image.width, image.height};
+  }
+  PolarPlot plot{spec.title, spec.subtitle, spec.rescale_to_peak ? "relative to each peak" : "1/sr", {}, size,
+                 spec.log_decades, spec.separate_scales};
+  for (std::size_t k = 0; k < spec.curves.size(); ++k) {
+    lobes.push_back(sample_lobe(spec.curves[k], spec.kind, cache));
+    const Lobe& lobe = lobes.back();
+    const double scale = spec.rescale_to_peak && lobe.peak > 0.0 ? 1.0 / lobe.peak : 1.0;
+    plot.curves.push_back({spec.curves[k].label, curve_color(k), lobe.theta_i_deg, plotted(lobe.reflection, scale),
+                           plotted(lobe.transmission, scale)});
+  }
+  write_csv(lobes, spec, dir / (spec.name + ".csv"));
+  const Image image = draw_polar_plot(plot, font);
+  write_png(image, (dir / (spec.name + ".png")).string());
+  return {image.width, image.height};
+}
+
+}  // namespace skinlayer::figures

@@ -1,0 +1,166 @@
+#include "app/figures/figure_set.h"
+
+#include <charconv>
+#include <initializer_list>
+
+namespace skinlayer::figures {
+namespace {
+
+std::string shortest(double value) {
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);
+  return std::string(text, result.ptr);
+}
+
+// One curve per value of a parameter: set(params, theta_i, value) applies it to a copy of the base.
+template <typename Setter>
+std::vector<FigureCurve> vary(const std::string& symbol, std::initializer_list<double> values, const LayerParams& base,
+                              Setter set, const std::string& unit = "") {
+  std::vector<FigureCurve> curves;
+  for (double value : values) {
+    FigureCurve curve;
+    curve.params = base;
+    set(curve, value);
+    curve.value = shortest(value);
+    curve.label = symbol + " = " + curve.value + unit;
+    curves.push_back(curve);
+  }
+  return curves;
+}
+
+FigureSpec subsurface(std::string name, std::string title, std::string subtitle, std::string parameter,
+                      std::vector<FigureCurve> curves, std::string what_it_shows) {
+  FigureSpec spec;
+  spec.name = std::move(name);
+  spec.title = std::move(title);
+  spec.subtitle = subtitle;
+  spec.parameter = std::move(parameter);
+  spec.kind = FigureKind::SubsurfaceLobes;
+  spec.separate_scales = true;  // the transmitted lobes reach several times the reflected ones
+  spec.curves = std::move(curves);
+  spec.caption = "Subsurface lobes (Stam's model, subsurface part only: brdf_subsurface above the surface line, "
+                 "the layer's btdf below), in the plane of incidence, sampled every 1°; reflection and transmission have separate radial scales. " +
+                 what_it_shows + " Fixed: " + subtitle + "; bottom air.";
+  return spec;
+}
+
+}  // namespace
+
+Material LayerParams::material() const {
+  Material m;
+  m.sigma = sigma;
+  m.eta = eta;
+  m.tau = optical_depth_from_transparency(transparency);
+  m.albedo = albedo;
+  m.g = g;
+  return m;
+}
+
+std::vector<FigureSpec> figure_set() {
+  std::vector<FigureSpec> set;
+  const LayerParams paper;  // σ 0.5, η 1.4, T 0.2, Ω 1, g 0.8
+
+  FigureSpec surface;
+  surface.name = "surface-lobes";
+  surface.title = "Surface BRDF and BTDF";
+  surface.subtitle = "σ 0.5 · η 1.4 · θi 45°";
+  surface.parameter = "sigma";
+  surface.kind = FigureKind::SurfaceLobes;
+  surface.curves = vary("σ", {0.5}, paper, [](FigureCurve& c, double v) { c.params.sigma = v; });
+  surface.curves.front().label = "rough dielectric interface: σ 0.5 · η 1.4";
+  surface.separate_scales = true;  // the BTDF into the layer peaks ~50 times higher than the BRDF
+  surface.caption = "The top interface alone (Beckmann microfacets, exact Fresnel, Smith shadowing): its BRDF "
+                    "(brdf_surface) above the surface line and its radiance BTDF into the layer below, at σ 0.5, "
+                    "η 1.4, θi 45°. Reflection and transmission have separate radial scales (the BTDF peaks about "
+                    "50 times higher).";
+  set.push_back(surface);
+
+  FigureSpec sigma = surface;
+  sigma.name = "surface-sigma";
+  sigma.title = "Surface lobes, varying roughness σ";
+  sigma.subtitle = "η 1.4 · θi 45°";
+  sigma.curves = vary("σ", {0.1, 0.2, 0.3, 0.5, 0.9}, paper, [](FigureCurve& c, double v) { c.params.sigma = v; });
+  sigma.log_decades = 3;
+  sigma.caption = "The top interface's BRDF (above) and radiance BTDF into the layer (below) for σ ∈ {0.1, 0.2, 0.3, "
+                  "0.5, 0.9}, at η 1.4, θi 45°. The radius is log10 of the value over 3 decades, with separate scales "
+                  "for reflection and transmission: the smooth interfaces' peaks are orders of magnitude above the "
+                  "rough ones'.";
+  set.push_back(sigma);
+
+  FigureSpec eta = surface;
+  eta.name = "surface-eta";
+  eta.title = "Surface lobes, varying index η";
+  eta.subtitle = "σ 0.5 · θi 45°";
+  eta.parameter = "eta";
+  eta.curves = vary("η", {1.2, 1.4, 1.6, 2.0}, paper, [](FigureCurve& c, double v) { c.params.eta = v; });
+  eta.log_decades = 0;
+  eta.caption = "The top interface's BRDF (above) and radiance BTDF into the layer (below) for η ∈ {1.2, 1.4, 1.6, "
+                "2.0}, at σ 0.5, θi 45°. Reflection and transmission have separate radial scales.";
+  set.push_back(eta);
+
+  set.push_back(subsurface("subsurface-theta0", "Subsurface lobes, varying incident angle θ0",
+                           "g 0.8 · T 0.2 · Ω 1 · σ 0.5 · η 1.4", "theta_i",
+                           vary("θ0", {85, 60, 45, 30, 0}, paper,
+                                [](FigureCurve& c, double v) { c.theta_i_deg = v; }, "°"),
+                           "The incident angle θ0 ∈ {85°, 60°, 45°, 30°, 0°} varies."));
+  set.push_back(subsurface("subsurface-g", "Subsurface lobes, varying asymmetry g",
+                           "T 0.2 · Ω 1 · σ 0.5 · η 1.4 · θi 45°", "g",
+                           vary("g", {0, 0.2, 0.4, 0.6, 0.8}, paper, [](FigureCurve& c, double v) { c.params.g = v; }),
+                           "The Henyey-Greenstein asymmetry g ∈ {0, 0.2, 0.4, 0.6, 0.8} varies."));
+  LayerParams thin = paper;
+  thin.transparency = 0.1;
+  set.push_back(subsurface("subsurface-sigma", "Subsurface lobes, varying roughness σ",
+                           "g 0.8 · T 0.1 · Ω 1 · η 1.4 · θi 45°", "sigma",
+                           vary("σ", {0.1, 0.2, 0.3, 0.5, 0.9}, thin,
+                                [](FigureCurve& c, double v) { c.params.sigma = v; }),
+                           "The interfaces' roughness σ ∈ {0.1, 0.2, 0.3, 0.5, 0.9} varies (top and bottom)."));
+  set.push_back(subsurface("subsurface-albedo", "Subsurface lobes, varying albedo Ω",
+                           "g 0.8 · T 0.2 · σ 0.5 · η 1.4 · θi 45°", "albedo",
+                           vary("Ω", {0.1, 0.5, 1.0}, paper, [](FigureCurve& c, double v) { c.params.albedo = v; }),
+                           "The single-scattering albedo Ω ∈ {0.1, 0.5, 1} varies."));
+  set.push_back(subsurface("subsurface-T", "Subsurface lobes, varying transparency T",
+                           "g 0.8 · Ω 1 · σ 0.5 · η 1.4 · θi 45°", "T",
+                           vary("T", {0, 0.05, 0.1, 0.3, 0.9}, paper,
+                                [](FigureCurve& c, double v) { c.params.transparency = v; }),
+                           "The transparency T = exp(−τb) ∈ {0, 0.05, 0.1, 0.3, 0.9} varies (T 0: semi-infinite)."));
+  LayerParams deep = paper;
+  deep.transparency = 0.0;
+  FigureSpec shapes = subsurface("subsurface-albedo-shape", "Lobe shapes, varying albedo Ω (each rescaled to 1)",
+                                 "g 0.8 · T 0 · σ 0.5 · η 1.4 · θi 45°", "albedo",
+                                 vary("Ω", {0.1, 0.5, 1.0}, deep,
+                                      [](FigureCurve& c, double v) { c.params.albedo = v; }),
+                                 "A semi-infinite layer (T 0, so nothing is transmitted) with Ω ∈ {0.1, 0.5, 1}; each "
+                                 "curve is divided by its own peak so the shapes can be compared (the CSV's f is the "
+                                 "value before rescaling, plotted the value drawn).");
+  shapes.rescale_to_peak = true;
+  set.push_back(shapes);
+
+  FigureSpec spheres;
+  spheres.name = "model-spheres";
+  spheres.title = "Lambert | Hanrahan-Krueger | Stam";
+  spheres.subtitle = "σ 0.35 · η 1.4 · T 0.05 · g 0.8 · Ω (0.95, 0.7, 0.55) · light 45° from the left";
+  spheres.parameter = "model";
+  spheres.kind = FigureKind::ModelSpheres;
+  LayerParams skin;
+  skin.sigma = 0.35;
+  skin.transparency = 0.05;
+  for (SubsurfaceModel model : {SubsurfaceModel::Lambert, SubsurfaceModel::HanrahanKrueger, SubsurfaceModel::Stam}) {
+    FigureCurve curve;
+    curve.params = skin;
+    curve.model = model;
+    curve.value = std::string(subsurface_model_name(model));
+    curve.label = model == SubsurfaceModel::Lambert           ? "Lambert"
+                  : model == SubsurfaceModel::HanrahanKrueger ? "Hanrahan-Krueger"
+                                                              : "Stam (new model)";
+    curve.albedo_rgb = {0.95, 0.7, 0.55};
+    spheres.curves.push_back(curve);
+  }
+  spheres.caption = "The three subsurface models on a sphere under one directional light 45° from the view "
+                    "direction, at skin-like settings: σ 0.35, η 1.4, T 0.05, g 0.8, Ω (0.95, 0.7, 0.55) per RGB "
+                    "channel; the same surface term on each. Rendered with skinlayer render's OSMesa renderer. The "
+                    "CSV holds each model's subsurface BRDF per channel in the plane of incidence at θi 45°.";
+  set.push_back(spheres);
+  return set;
+}
+
+}  // namespace skinlayer::figures
