@@ -246,6 +246,19 @@ bool light_controls(LightState& light, bool unicode) {
 
 bool view_controls(ViewOptions& view) {
   bool changed = false;
+  {  // the lobe plots may show another model than the sphere
+    constexpr std::array<const char*, 4> kPlotModels = {"same as the sphere", "layer (Stam 2001)", "Lambert",
+                                                        "Hanrahan-Krueger"};
+    int index = view.plot_model ? static_cast<int>(*view.plot_model) + 1 : 0;
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextUnformatted("plots");
+    ImGui::SameLine(label_column());
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::Combo("##plot-model", &index, kPlotModels.data(), static_cast<int>(kPlotModels.size()))) {
+      view.plot_model = index == 0 ? std::nullopt : std::optional(static_cast<SubsurfaceModel>(index - 1));
+      changed = true;
+    }
+  }
   changed |= slider_row(SliderSpec{"exposure", "tone-map exposure in stops (the radiance is scaled by 2^stops)",
                                    kMinStops, kMaxStops, ViewOptions{}.exposure_stops, "%+.1f EV"},
                         view.exposure_stops);

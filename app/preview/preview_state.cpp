@@ -28,7 +28,7 @@ PreviewState reset_material(PreviewState state) {
 
 SolveRequest solve_request(const PreviewState& state) {
   return SolveRequest{state.material, degrees_to_radians(state.light.theta_degrees),
-                      state.view.view == ViewKind::Compare};
+                      state.view.view == ViewKind::Compare, state.view.plot_model.value_or(state.material.model)};
 }
 
 double exposure_multiplier(const ViewOptions& view) { return std::exp2(view.exposure_stops); }

@@ -3,6 +3,7 @@
 // polar angle, at which the directional albedo is reported).
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "app/preview/solve_request.h"
@@ -24,6 +25,7 @@ struct ViewOptions {
   ViewKind view = ViewKind::Both;  // which views share the picture area
   bool log_lobes = false;          // lobe radius: linear in the BSDF, or log over LobeView::decades decades
   double exposure_stops = 0.0;     // the tone map's linear exposure is 2^stops; in [kMinStops, kMaxStops]
+  std::optional<SubsurfaceModel> plot_model;  // the lobe plots' model; unset = the sphere's (material.model)
 };
 
 struct ExportOptions {

@@ -16,7 +16,16 @@ bool same_layer(const Material& a, const Material& b) {
 
 bool same_request(const SolveRequest& a, const SolveRequest& b) {
   return same_layer(a.material.layer, b.material.layer) && a.material.albedo_rgb == b.material.albedo_rgb &&
-         a.material.model == b.material.model && a.theta_i == b.theta_i && a.compare == b.compare;
+         a.material.model == b.material.model && a.theta_i == b.theta_i && a.compare == b.compare &&
+         a.plot_model == b.plot_model;
+}
+
+std::array<bool, 3> needed_models(const SolveRequest& request) {
+  std::array<bool, 3> needed{};
+  needed[static_cast<std::size_t>(request.material.model)] = true;
+  needed[static_cast<std::size_t>(request.plot_model)] = true;
+  if (request.compare) needed = {true, true, true};
+  return needed;
 }
 
 }  // namespace skinlayer

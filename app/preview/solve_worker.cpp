@@ -14,20 +14,22 @@ SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation)
   result.generation = generation;
   result.request = request;
   try {
-    result.tables = solve_color(request.material, request.theta_i);
-    result.textures = make_table_textures(result.tables);
-    if (request.compare) {
-      for (const SubsurfaceModel model : kCompareModels) {
-        ColorMaterial compared = request.material;
-        compared.model = model;
-        result.comparison_textures.push_back(
-            model == request.material.model ? result.textures : make_table_textures(solve_color(compared, request.theta_i)));
-      }
+    const std::array<bool, 3> needed = needed_models(request);
+    for (std::size_t m = 0; m < needed.size(); ++m) {
+      if (!needed[m]) continue;
+      ColorMaterial material = request.material;
+      material.model = static_cast<SubsurfaceModel>(m);
+      result.by_model[m] = solve_color(material, request.theta_i);
+      result.textures_by_model[m] = make_table_textures(*result.by_model[m]);
     }
+    const std::size_t sphere = static_cast<std::size_t>(request.material.model);
+    result.tables = *result.by_model[sphere];
+    result.textures = result.textures_by_model[sphere];
   } catch (const std::exception& error) {
     result.tables = ColorTables{};
     result.textures = TableTextureData{};
-    result.comparison_textures.clear();
+    result.by_model = {};
+    result.textures_by_model = {};
     result.error = error.what();
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

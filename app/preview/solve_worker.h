@@ -18,8 +18,8 @@
 #include <optional>
 #include <stop_token>
 #include <string>
+#include <array>
 #include <thread>
-#include <vector>
 
 #include "app/preview/solve_request.h"
 #include "app/render/material_solve.h"
@@ -30,10 +30,11 @@ namespace skinlayer {
 struct SolveResult {
   std::uint64_t generation = 0;  // the value submit() returned for the request this answers
   SolveRequest request;
-  ColorTables tables;         // empty when error is set
+  ColorTables tables;         // the sphere's model (request.material.model); empty when error is set
   TableTextureData textures;  // the tables in the GPU layout (shaders/table_layout.h); empty when error is set
-  // request.compare: the tables of each model of kCompareModels, for renderer slot kCompareSlots[k]
-  std::vector<TableTextureData> comparison_textures;
+  // Every model needed_models() asks for, indexed by SubsurfaceModel (the renderer slot of that model).
+  std::array<std::optional<ColorTables>, 3> by_model;
+  std::array<TableTextureData, 3> textures_by_model;
   std::string error;          // non-empty: the request was rejected (ParameterError's message) or the solve failed
   double seconds = 0.0;       // wall time of the solve and the texture build
 };

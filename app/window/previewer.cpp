@@ -76,7 +76,7 @@ class Previewer {
     const PreviewLayout layout = layout_preview(static_cast<float>(size[0]), static_cast<float>(size[1]),
                                                 kPanelWidth * imgui_.scale(), state_.view.view);
     PreviewState edited = state_;
-    ViewOverlayInput overlay{layout, shown_ ? &shown_->tables : nullptr, scene_.lobes, imgui_.unicode_labels()};
+    ViewOverlayInput overlay{layout, shown_ ? &plot_tables() : nullptr, scene_.lobes, imgui_.unicode_labels()};
     activity |= view_overlays(overlay, edited.light);
     const PanelActions panel = control_panel(layout.panel, edited, panel_status());
     bool save = panel.save_screenshot;
@@ -146,12 +146,11 @@ class Previewer {
       error_ = result->error;
       return true;
     }
-    renderer_.upload(result->textures);
-    for (std::size_t k = 0; k < result->comparison_textures.size(); ++k) {
-      renderer_.upload(result->comparison_textures[k], kCompareSlots[k]);
+    for (std::size_t m = 0; m < result->by_model.size(); ++m) {  // renderer slot = model index
+      if (result->by_model[m]) renderer_.upload(result->textures_by_model[m], static_cast<int>(m));
     }
     result->textures = TableTextureData{};  // on the GPU now
-    result->comparison_textures.clear();
+    result->textures_by_model = {};
     error_.clear();
     shown_ = std::move(result);
     return true;
@@ -167,6 +166,12 @@ class Previewer {
     submitted_ = request;
   }
 
+  // The shown result's tables of the lobe plots' model (the sphere's when they are the same).
+  const ColorTables& plot_tables() const {
+    const std::optional<ColorTables>& plots = shown_->by_model[static_cast<std::size_t>(shown_->request.plot_model)];
+    return plots ? *plots : shown_->tables;
+  }
+
   bool solving() const { return worker_.busy() || !submitted_ || !same_request(*submitted_, solve_request(state_)); }
 
   PanelStatus panel_status() const {
@@ -179,8 +184,8 @@ class Previewer {
     if (!shown_) return;
     const double theta = degrees_to_radians(state_.light.theta_degrees);
     const double phi = degrees_to_radians(state_.light.phi_degrees);
-    if (scene_generation_ != shown_->generation || scene_theta_ != theta) {
-      scene_ = make_scene(shown_->tables, state_.view.view, theta, phi, 1.0, false);
+    if (scene_generation_ != shown_->generation || scene_theta_ != theta) {  // plots' model scales the lobes
+      scene_ = make_scene(plot_tables(), state_.view.view, theta, phi, 1.0, false);
       scene_generation_ = shown_->generation;
       scene_theta_ = theta;
     }
@@ -199,11 +204,14 @@ class Previewer {
     glClearColor(0.02f, 0.02f, 0.025f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (!shown_) return;
+    const SolveRequest& shown = shown_->request;
     if (!layout.sphere.empty()) {
-      renderer_.draw_sphere(scene_.sphere, scene_.surface, to_viewport(layout.sphere, scale, framebuffer[1]));
+      renderer_.draw_sphere(scene_.sphere, scene_.surface, to_viewport(layout.sphere, scale, framebuffer[1]),
+                            static_cast<int>(shown.material.model));
     }
     if (!layout.plots.empty()) {
-      renderer_.draw_lobes(scene_.lobes, scene_.surface, to_viewport(layout.plots, scale, framebuffer[1]));
+      renderer_.draw_lobes(scene_.lobes, scene_.surface, to_viewport(layout.plots, scale, framebuffer[1]),
+                           static_cast<int>(shown.plot_model));
     }
     if (scene_.view == ViewKind::Compare && shown_->request.compare) {
       for (std::size_t k = 0; k < kCompareSlots.size(); ++k) {

@@ -7,6 +7,7 @@
 
 #include "app/preview/lobe_probe.h"
 #include "app/preview/preview_state.h"
+#include "app/preview/solve_worker.h"
 #include "app/preview/view_layout.h"
 #include "core/conventions.h"
 #include "core/material.h"
@@ -41,6 +42,26 @@ TEST(PreviewLayout, CompareShowsThreeSpheresSideBySide) {
   state.view.view = ViewKind::Compare;
   EXPECT_FALSE(same_request(plain, solve_request(state)));
   EXPECT_TRUE(solve_request(state).compare);
+  EXPECT_EQ(needed_models(solve_request(state)), (std::array<bool, 3>{true, true, true}));
+}
+
+// The plots may show another model than the sphere: both are solved, nothing more.
+TEST(PreviewState, PlotsCanShowAnotherModelThanTheSphere) {
+  PreviewState state;
+  EXPECT_EQ(solve_request(state).plot_model, SubsurfaceModel::Stam);
+  EXPECT_EQ(needed_models(solve_request(state)), (std::array<bool, 3>{true, false, false}));
+  state.view.plot_model = SubsurfaceModel::HanrahanKrueger;
+  const SolveRequest request = solve_request(state);
+  EXPECT_EQ(request.material.model, SubsurfaceModel::Stam);
+  EXPECT_EQ(request.plot_model, SubsurfaceModel::HanrahanKrueger);
+  EXPECT_EQ(needed_models(request), (std::array<bool, 3>{true, false, true}));
+  const SolveResult result = compute_solve(request, 1);
+  ASSERT_TRUE(result.error.empty()) << result.error;
+  ASSERT_TRUE(result.by_model[2].has_value());
+  EXPECT_FALSE(result.by_model[1].has_value());
+  // The plots' tables are Hanrahan-Krueger's: far less reflection than the layer's.
+  EXPECT_LT(result.by_model[2]->channels[0].brdf_subsurface(0.5, 0.5, 3.0),
+            0.5 * result.tables.channels[0].brdf_subsurface(0.5, 0.5, 3.0));
 }
 
 TEST(PreviewLayout, ViewportsAreInFramebufferPixelsFromTheBottom) {
