@@ -1,0 +1,91 @@
+// An independent Monte Carlo reference for the skin layer: a random walk of photons through the same layer the
+// solver models, written without any of the solver's machinery (no discrete ordinates, Fourier series, eigen-
+// decompositions or tables). It shares only the Fresnel and Beckmann/Smith functions (core/fresnel.h,
+// core/microfacet.h, which have their own unit tests), the Material type and its validation.
+//
+// Threads: this reference module uses std::thread, because a useful number of paths needs both cores; it is built
+// as its own library (skinlayer_reference), so the solver library itself stays free of threads. Each thread owns its own std::mt19937_64 seeded from (seed, thread index), so
+// a result is reproducible for the same seed and thread count.
+//
+// The walk (one photon = weight 1, unpolarized), for light from omega_i = (theta_i, phi_i = 0) onto the top:
+//   * Rough interface crossing (top: eta = material.eta, sigma; bottom air: eta_b = bottom_eta(), sigma_b), with
+//     w the direction back toward where the photon came from and n the macro normal on w's side:
+//       - sample a microfacet normal h with density D(h) cos(alpha) (Beckmann slopes are Gaussian, variance
+//         sigma^2/2 per axis); a sample with w.h <= 0 gets weight 0;
+//       - weight *= |w.h| G1(w) / (|w.n| cos(alpha))   (expected value exactly 1: the Smith normalization);
+//       - reflect about h with probability F(|w.h|, n_other/n_this), otherwise refract by Snell's law at h;
+//       - weight *= G1(wo); a photon sent to the wrong side of the macro surface is lost.
+//     This is an unbiased estimator of the energy transport of core's rough_dielectric_bsdf (Smith G1 on both
+//     directions; what shadowing removes is lost). At eta = 1 the interface is absent and the photon passes
+//     straight through.
+//   * Medium: free path s = -ln(u) in optical depth along the direction (the depth changes by s |cos|); at a
+//     collision weight *= Omega (with Russian roulette for small weights) and the direction is resampled from the
+//     Henyey-Greenstein phase function (analytic inversion, uniform azimuth about the current direction).
+//     tau_b = +infinity (T = 0) is semi-infinite; tau_b = 0 (T = 1) has no medium.
+//   * Bottom: Air (a rough interface as above; transmitted photons leave below), Matched (photons reaching tau_b
+//     leave unchanged), Lambert (at tau_b a cosine-distributed new upward direction, weight *= A).
+//   * A path is cut after kMaxEventsPerPath events (collisions plus interface and base interactions); the rest of
+//     its weight counts as absorbed. `truncated_paths` reports how often that happened.
+//
+// Tallies are by exit direction, in the graphics convention of core/conventions.h: theta_o from the normal of the
+// exit side, phi = phi_o - phi_i in [0, 2 pi), phi = pi forward (mirror / straight through).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "core/material.h"
+
+namespace skinlayer {
+
+inline constexpr std::uint64_t kMaxEventsPerPath = 100000;
+
+enum class ExitSide { Reflected, Transmitted };
+
+// An angular bin on one exit side: theta in [theta_min, theta_max), phi in [phi_min, phi_max) (radians; phi is
+// compared modulo 2 pi, so a range such as [-0.1, 0.1) around phi = 0 works).
+struct AngularBin {
+  ExitSide side = ExitSide::Reflected;
+  double theta_min = 0.0;
+  double theta_max = 0.0;
+  double phi_min = 0.0;
+  double phi_max = 0.0;
+  // The bin's projected solid angle, int cos(theta) d omega = (phi_max - phi_min)(sin^2 theta_max - sin^2 theta_min)/2.
+  double projected_solid_angle() const;
+};
+
+struct MonteCarloOptions {
+  std::uint64_t paths = 100000;
+  std::uint64_t seed = 1;
+  int threads = 2;
+  // Called now and then from the calling thread with the number of paths finished so far (optional).
+  std::function<void(std::uint64_t)> progress;
+};
+
+struct MonteCarloEstimate {
+  double value = 0.0;
+  double standard_error = 0.0;
+};
+
+struct MonteCarloResult {
+  MonteCarloEstimate reflectance_surface;     // reflected at the first top interaction, never entered
+  MonteCarloEstimate reflectance_subsurface;  // entered and later left through the top
+  MonteCarloEstimate transmittance;           // left through the bottom, including the direct beam
+  MonteCarloEstimate transmittance_direct;    // the unscattered, unrefracted beam (only with index-matched
+                                              // boundaries on both sides); part of `transmittance`, not of any bin
+  // Per caller bin: the BSDF averaged over the bin with projected-solid-angle weight, in 1/sr:
+  //   (sum of exit weights in the bin) / (paths * projected_solid_angle).
+  // Reflected bins contain surface and subsurface reflection.
+  std::vector<MonteCarloEstimate> bins;
+  std::uint64_t paths = 0;
+  std::uint64_t truncated_paths = 0;  // paths cut at kMaxEventsPerPath
+};
+
+// Traces options.paths photons incident at theta_i (radians, from +z, phi_i = 0). Throws ParameterError for an
+// invalid material, theta_i outside [0, pi/2), an inverted bin, or zero paths/threads.
+MonteCarloResult simulate_layer(const Material& material, double theta_i, std::span<const AngularBin> bins,
+                                const MonteCarloOptions& options);
+
+}  // namespace skinlayer
