@@ -9,11 +9,11 @@
 namespace skinlayer {
 namespace {
 
-constexpr std::string_view kVersion = "#version 330 core\n";
-
+// Every program: the version line, then the table layout, the GLSL twins of core, the table lookups, the stage.
 gl::Program build(std::string_view fragment) {
-  const std::vector<std::string_view> vertex = {kVersion, shader_source("fullscreen.vert")};
-  const std::vector<std::string_view> pieces = {kVersion, shader_source("table_layout.h"), shader_source("common.glsl"),
+  const std::string_view version = shader_source("version.glsl");
+  const std::vector<std::string_view> vertex = {version, shader_source("fullscreen.vert")};
+  const std::vector<std::string_view> pieces = {version, shader_source("table_layout.h"), shader_source("common.glsl"),
                                                 shader_source("tables.glsl"), shader_source(fragment)};
   return gl::link_program(vertex, pieces);
 }
