@@ -1,4 +1,4 @@
-#include "app/window/imgui_session.h"
+#include "app/window/ui_context.h"
 
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
