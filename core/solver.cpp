@@ -92,7 +92,6 @@ class LayerSolver {
 
   const QuadratureRule& quadrature() const { return quadrature_; }
   const Geometry& geometry() const { return geometry_; }
-  double tau() const { return tau_; }
 
  private:
   Eigen::MatrixXd lambert_reflection() const;

@@ -48,7 +48,6 @@ class Renderer {
   Renderer();
 
   void upload(const TableTextureData& tables, int slot = 0);
-  bool has_tables(int slot = 0) const { return slots_.at(static_cast<std::size_t>(slot)).modes > 0; }
 
   void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport,
                    int slot = 0) const;
