@@ -19,12 +19,6 @@ namespace {
 constexpr std::string_view kThetaFlag = "theta-i";
 constexpr std::string_view kDefaultThetas = "0,30,60,80";
 
-std::vector<std::string_view> known_flags() {
-  const std::span<const std::string_view> material_flags = material_flag_names();
-  std::vector<std::string_view> flags(material_flags.begin(), material_flags.end());
-  flags.push_back(kThetaFlag);
-  return flags;
-}
 
 // The comma-separated list of incidence angles in degrees, each a number in [0, 90].
 std::vector<double> parse_theta_list(std::string_view list) {
@@ -72,7 +66,7 @@ int run_albedo_command(std::span<const std::string_view> arguments, std::ostream
     out << albedo_usage();
     return kExitSuccess;
   }
-  const std::vector<std::string_view> flag_names = known_flags();
+  const std::vector<std::string_view> flag_names = material_flags_and({kThetaFlag});
   const ParsedFlags flags = ParsedFlags::parse(arguments, flag_names, "skinlayer albedo");
   const Material material = material_from_flags(flags);
   const std::vector<double> thetas_degrees = parse_theta_list(flags.value(kThetaFlag).value_or(kDefaultThetas));

@@ -38,9 +38,7 @@ int run_eval_command(std::span<const std::string_view> arguments, std::istream& 
     out << eval_usage();
     return kExitSuccess;
   }
-  std::vector<std::string_view> known(material_flag_names().begin(), material_flag_names().end());
-  known.push_back(kModelFlag);
-  const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer eval");
+  const ParsedFlags flags = ParsedFlags::parse(arguments, material_flags_and({kModelFlag}), "skinlayer eval");
   const Material material = material_from_flags(flags);
   const LayerTables tables = solve_model(material, model_from_flags(flags));
   const std::vector<AngleRow> rows = read_angle_rows(in);

@@ -33,10 +33,8 @@ int run_figures_command(std::span<const std::string_view> arguments, std::ostrea
     out << figures_usage();
     return kExitSuccess;
   }
-  std::vector<std::string_view> rewritten;
-  for (std::string_view argument : arguments) rewritten.push_back(argument == "-o" ? "--output" : argument);
   const std::vector<std::string_view> known = {"output", "size"};
-  const ParsedFlags flags = ParsedFlags::parse(rewritten, known, "skinlayer figures");
+  const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer figures");
   const std::optional<std::string_view> output = flags.value("output");
   if (!output) throw UsageError("figures needs -o DIR (the folder to write)");
   int size = 640;

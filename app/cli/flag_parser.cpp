@@ -9,6 +9,7 @@ namespace skinlayer::cli {
 namespace {
 
 constexpr std::string_view kFlagPrefix = "--";
+constexpr std::string_view kOutputShortFlag = "-o";  // the one short form: -o FILE for --output FILE
 
 bool is_known(std::span<const std::string_view> known_flags, std::string_view name) {
   return std::find(known_flags.begin(), known_flags.end(), name) != known_flags.end();
@@ -26,11 +27,12 @@ ParsedFlags ParsedFlags::parse(std::span<const std::string_view> arguments,
   ParsedFlags flags;
   for (std::size_t index = 0; index < arguments.size(); ++index) {
     const std::string_view argument = arguments[index];
-    if (!argument.starts_with(kFlagPrefix) || argument.size() == kFlagPrefix.size()) {
+    const bool output_short = argument == kOutputShortFlag && is_known(known_flags, "output");
+    if (!output_short && (!argument.starts_with(kFlagPrefix) || argument.size() == kFlagPrefix.size())) {
       throw UsageError("unexpected argument " + quoted(argument) + " for " + std::string(command) +
                        "; flags are written --name value or --name=value");
     }
-    const std::string_view body = argument.substr(kFlagPrefix.size());
+    const std::string_view body = output_short ? std::string_view("output") : argument.substr(kFlagPrefix.size());
     const std::size_t equals = body.find('=');
     const std::string_view name = body.substr(0, equals);
     if (!is_known(known_flags, name)) {

@@ -16,6 +16,7 @@ bool wants_help(std::span<const std::string_view> arguments);
 // The flags given to one command, each at most once, by name without the dashes.
 class ParsedFlags {
  public:
+  // "-o FILE" is read as "--output FILE" when "output" is a known flag.
   // Throws UsageError, naming the argument, for: an argument that is not a flag, a flag not in known_flags, a flag
   // with no value (end of arguments, or the next argument starts with "--"), or a flag given twice.
   // command names the command in messages, e.g. "skinlayer eval".

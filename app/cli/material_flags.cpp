@@ -86,6 +86,12 @@ std::string usage_entry(const ParameterInfo& info) {
 
 std::span<const std::string_view> material_flag_names() { return kMaterialFlags; }
 
+std::vector<std::string_view> material_flags_and(std::initializer_list<std::string_view> own_flags) {
+  std::vector<std::string_view> flags(kMaterialFlags.begin(), kMaterialFlags.end());
+  flags.insert(flags.end(), own_flags);
+  return flags;
+}
+
 Material material_from_flags(const ParsedFlags& flags) {
   Material material;
   if (flags.has("T") && flags.has("tau")) {

@@ -6,6 +6,8 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <initializer_list>
+#include <vector>
 
 #include "app/cli/flag_parser.h"
 #include "core/material.h"
@@ -14,6 +16,9 @@ namespace skinlayer::cli {
 
 // The material flag names, without dashes.
 std::span<const std::string_view> material_flag_names();
+
+// The material flag names followed by a command's own flags.
+std::vector<std::string_view> material_flags_and(std::initializer_list<std::string_view> own_flags);
 
 // Builds the material from the flags; an omitted flag keeps skinlayer::Material{}'s default.
 // Throws skinlayer::ParameterError (core's check_parameter message: names the parameter and its range) for a value

@@ -23,16 +23,6 @@ namespace {
 
 constexpr int kMaxSide = 8192;
 
-std::vector<std::string_view> known_flags() {
-  const std::span<const std::string_view> material_flags = material_flag_names();
-  std::vector<std::string_view> flags(material_flags.begin(), material_flags.end());
-  for (std::string_view flag : {kModelFlag, std::string_view("light-theta"), std::string_view("light-phi"),
-                                std::string_view("view"), std::string_view("size"), std::string_view("exposure"),
-                                std::string_view("scale"), std::string_view("output")}) {
-    flags.push_back(flag);
-  }
-  return flags;
-}
 
 double number_in(const ParsedFlags& flags, std::string_view name, double fallback, double low, double high,
                  std::string_view unit) {
@@ -111,8 +101,8 @@ std::string render_usage() {
 }
 
 int run_render_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  // "-o FILE" is the short form of "--output FILE". An "--albedo r,g,b" is read here; the material parser is given
-  // its red channel (parse_albedo has validated all three).
+  // An "--albedo r,g,b" is read here; the material parser is given its red channel (parse_albedo has validated all
+  // three).
   std::array<double, 3> albedo_rgb = {1.0, 1.0, 1.0};
   std::string red;
   std::vector<std::string_view> rewritten;
@@ -129,10 +119,11 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
       red = format_number(albedo_rgb[0]);
       rewritten.insert(rewritten.end(), {"--albedo", red});
     } else {
-      rewritten.push_back(argument == "-o" ? std::string_view("--output") : argument);
+      rewritten.push_back(argument);
     }
   }
-  const std::vector<std::string_view> known = known_flags();
+  const std::vector<std::string_view> known = material_flags_and(
+      {kModelFlag, "light-theta", "light-phi", "view", "size", "exposure", "scale", "output"});
   const ParsedFlags flags = ParsedFlags::parse(rewritten, known, "skinlayer render");
   ColorMaterial material{material_from_flags(flags), albedo_rgb, model_from_flags(flags)};
   const std::optional<std::string_view> output = flags.value("output");

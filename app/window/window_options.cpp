@@ -16,10 +16,8 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
     options.help = true;
     return options;
   }
-  const std::span<const std::string_view> material_flags = cli::material_flag_names();
-  std::vector<std::string_view> known(material_flags.begin(), material_flags.end());
-  known.insert(known.end(), {"capture", "view", cli::kModelFlag});
-  const cli::ParsedFlags flags = cli::ParsedFlags::parse(arguments, known, "skinlayer");
+  const cli::ParsedFlags flags =
+      cli::ParsedFlags::parse(arguments, cli::material_flags_and({"capture", "view", cli::kModelFlag}), "skinlayer");
   options.material.layer = cli::material_from_flags(flags);
   if (options.material.layer.ordinates) choose_resolution(options.material.layer);  // checks the material's minimum
   const double albedo = options.material.layer.albedo;
