@@ -22,13 +22,9 @@ SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation)
       result.by_model[m] = solve_color(material, request.theta_i);
       result.textures_by_model[m] = make_table_textures(*result.by_model[m]);
     }
-    const std::size_t sphere = static_cast<std::size_t>(request.material.model);
-    result.tables = *result.by_model[sphere];
-    result.textures = result.textures_by_model[sphere];
   } catch (const std::exception& error) {
-    result.tables = ColorTables{};
-    result.textures = TableTextureData{};
     result.by_model = {};
+    result.by_model[static_cast<std::size_t>(request.material.model)].emplace();
     result.textures_by_model = {};
     result.error = error.what();
   }

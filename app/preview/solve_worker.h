@@ -30,13 +30,18 @@ namespace skinlayer {
 struct SolveResult {
   std::uint64_t generation = 0;  // the value submit() returned for the request this answers
   SolveRequest request;
-  ColorTables tables;         // the sphere's model (request.material.model); empty when error is set
-  TableTextureData textures;  // the tables in the GPU layout (shaders/table_layout.h); empty when error is set
-  // Every model needed_models() asks for, indexed by SubsurfaceModel (the renderer slot of that model).
+  // Every model needed_models() asks for, indexed by SubsurfaceModel (the renderer slot of that model), and its
+  // tables in the GPU layout (shaders/table_layout.h). When error is set only the sphere's model is engaged, empty.
   std::array<std::optional<ColorTables>, 3> by_model;
   std::array<TableTextureData, 3> textures_by_model;
-  std::string error;          // non-empty: the request was rejected (ParameterError's message) or the solve failed
-  double seconds = 0.0;       // wall time of the solve and the texture build
+  std::string error;     // non-empty: the request was rejected (ParameterError's message) or the solve failed
+  double seconds = 0.0;  // wall time of the solve and the texture build
+
+  // The sphere's model (request.material.model): its tables and their GPU layout; empty when error is set.
+  const ColorTables& tables() const { return *by_model[static_cast<std::size_t>(request.material.model)]; }
+  const TableTextureData& textures() const {
+    return textures_by_model[static_cast<std::size_t>(request.material.model)];
+  }
 };
 
 // How many solves ran and how many of their results were discarded as stale (for tests and diagnostics).

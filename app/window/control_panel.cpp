@@ -18,7 +18,7 @@ const ImVec4 kDimColor{0.7f, 0.7f, 0.7f, 1.0f};
 
 // Directional reflectance (of which surface), transmittance and absorptance per channel, from ColorTables::albedo.
 void energy_readout(const SolveResult& shown, bool unicode) {
-  const ColorTables& tables = shown.tables;
+  const ColorTables& tables = shown.tables();
   ImGui::TextColored(
       kDimColor,
       unicode ? "fractions of the incident flux at θi = %.1f°" : "fractions of the incident flux at theta_i = %.1f deg",

@@ -149,8 +149,7 @@ class Previewer {
     for (std::size_t m = 0; m < result->by_model.size(); ++m) {  // renderer slot = model index
       if (result->by_model[m]) renderer_.upload(result->textures_by_model[m], static_cast<int>(m));
     }
-    result->textures = TableTextureData{};  // on the GPU now
-    result->textures_by_model = {};
+    result->textures_by_model = {};  // on the GPU now
     error_.clear();
     shown_ = std::move(result);
     return true;
@@ -169,7 +168,7 @@ class Previewer {
   // The shown result's tables of the lobe plots' model (the sphere's when they are the same).
   const ColorTables& plot_tables() const {
     const std::optional<ColorTables>& plots = shown_->by_model[static_cast<std::size_t>(shown_->request.plot_model)];
-    return plots ? *plots : shown_->tables;
+    return plots ? *plots : shown_->tables();
   }
 
   bool solving() const { return worker_.busy() || !submitted_ || !same_request(*submitted_, solve_request(state_)); }

@@ -61,7 +61,7 @@ TEST(PreviewState, PlotsCanShowAnotherModelThanTheSphere) {
   EXPECT_FALSE(result.by_model[1].has_value());
   // The plots' tables are Hanrahan-Krueger's: far less reflection than the layer's.
   EXPECT_LT(result.by_model[2]->channels[0].brdf_subsurface(0.5, 0.5, 3.0),
-            0.5 * result.tables.channels[0].brdf_subsurface(0.5, 0.5, 3.0));
+            0.5 * result.tables().channels[0].brdf_subsurface(0.5, 0.5, 3.0));
 }
 
 TEST(PreviewLayout, ViewportsAreInFramebufferPixelsFromTheBottom) {

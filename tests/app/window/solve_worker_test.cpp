@@ -108,12 +108,12 @@ TEST(SolveWorker, AThousandRapidChangesEndOnTheFinalParametersWithoutStalls) {
 
   const SolveRequest final_request = request_number(kChanges - 1);
   const ColorTables direct = solve_color(final_request.material, final_request.theta_i);
-  expect_same_tables(final_result.tables, direct);
+  expect_same_tables(final_result.tables(), direct);
   const TableTextureData textures = make_table_textures(direct);
-  EXPECT_EQ(final_result.textures.size, textures.size);
-  EXPECT_EQ(final_result.textures.modes, textures.modes);
-  EXPECT_EQ(final_result.textures.reflection, textures.reflection);
-  EXPECT_EQ(final_result.textures.transmission, textures.transmission);
+  EXPECT_EQ(final_result.textures().size, textures.size);
+  EXPECT_EQ(final_result.textures().modes, textures.modes);
+  EXPECT_EQ(final_result.textures().reflection, textures.reflection);
+  EXPECT_EQ(final_result.textures().transmission, textures.transmission);
 
   const SolveWorkerStats stats = worker.stats();
   std::printf(
@@ -148,7 +148,7 @@ TEST(SolveWorker, AnInvalidMaterialComesBackAsAnError) {
   const std::uint64_t generation = worker.submit(request);
   const SolveResult result = wait_for(worker, generation, 60s);
   EXPECT_NE(result.error.find("sigma"), std::string::npos) << result.error;
-  EXPECT_EQ(result.textures.modes, 0);
+  EXPECT_EQ(result.textures().modes, 0);
 }
 
 TEST(SolveWorker, PublishingWakesTheOwner) {
