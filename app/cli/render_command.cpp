@@ -143,11 +143,12 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
   gl::OsmesaContext context(width, height);
   Renderer renderer;
   renderer.upload(make_table_textures(tables));
-  if (view == ViewKind::Compare) {  // slot 0 holds the layer model; the comparison models go to their slots
+  if (view == ViewKind::Compare) {  // every model to its slot; the material's own model is already solved
     for (std::size_t k = 0; k < kCompareSlots.size(); ++k) {
       ColorMaterial compared = material;
       compared.model = kCompareModels[k];
-      renderer.upload(make_table_textures(solve_color(compared, light_theta)), kCompareSlots[k]);
+      const ColorTables solved = compared.model == material.model ? tables : solve_color(compared, light_theta);
+      renderer.upload(make_table_textures(solved), kCompareSlots[k]);
     }
   }
   const Scene scene = make_scene(tables, view, light_theta, light_phi, exposure, scale == "log");
