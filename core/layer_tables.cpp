@@ -19,6 +19,30 @@ void catmull_rom_weights(double t, double w[4]) {
   w[3] = 0.5 * (-t2 + t3);
 }
 
+// The four samples, weights and signs of the spline at grid coordinate x (0 <= x <= K - 1), continued past both
+// ends by the grid's symmetries (layer_tables.h): x = -1 is sample 1 seen across the normal, with the factor
+// (-1)^m of mode m; x = K is the same direction as x = K - 2.
+struct SplineTaps {
+  int index[4];
+  double weight[4];
+  bool across_normal[4];
+
+  double sign(int a, double parity) const { return across_normal[a] ? parity : 1.0; }
+};
+
+SplineTaps spline_taps(double x, int k) {
+  SplineTaps taps{};
+  const int cell = std::min(static_cast<int>(x), k - 2);
+  catmull_rom_weights(x - cell, taps.weight);
+  for (int a = 0; a < 4; ++a) taps.index[a] = cell - 1 + a;
+  if (taps.index[0] < 0) {
+    taps.index[0] = 1;
+    taps.across_normal[0] = true;
+  }
+  if (taps.index[3] > k - 1) taps.index[3] = k - 2;
+  return taps;
+}
+
 }  // namespace
 
 LayerTables::LayerTables(int grid_size, int modes, std::vector<double> reflection, std::vector<double> transmission)
@@ -29,44 +53,25 @@ LayerTables::LayerTables(int grid_size, int modes, std::vector<double> reflectio
   }
 }
 
-double LayerTables::grid_angle(int k, int grid_size) {
-  return 0.5 * kPi * std::sin(0.5 * kPi * k / (grid_size - 1));
-}
+double LayerTables::grid_angle(int k, int grid_size) { return 0.5 * kPi * std::sin(0.5 * kPi * k / (grid_size - 1)); }
 
 double LayerTables::grid_coordinate(double theta, int grid_size) {
   const double s = std::clamp(theta / (0.5 * kPi), 0.0, 1.0);
   return std::asin(s) / (0.5 * kPi) * (grid_size - 1);
 }
 
-// Tensor-product Catmull-Rom in the grid coordinates of (theta_i, theta_o), continued past both ends by the grid's
-// symmetries (see layer_tables.h).
+// Tensor-product Catmull-Rom in the grid coordinates of (theta_i, theta_o).
 double LayerTables::interpolate(std::span<const double> table, int m, double theta_i, double theta_o) const {
   const int k = grid_size_;
   const double parity = azimuth_parity(m);
-  const auto axis = [&](double theta, int index[4], double weight[4], double sign[4]) {
-    const double x = grid_coordinate(theta, k);
-    const int cell = std::min(static_cast<int>(x), k - 2);
-    catmull_rom_weights(x - cell, weight);
-    for (int a = 0; a < 4; ++a) {
-      index[a] = cell - 1 + a;
-      sign[a] = 1.0;
-    }
-    if (index[0] < 0) {  // x = -1 is theta_1 seen across the normal
-      index[0] = 1;
-      sign[0] = parity;
-    }
-    if (index[3] > k - 1) index[3] = k - 2;  // x = K is the same direction as x = K - 2
-  };
-  int ii[4], io[4];
-  double wi[4], wo[4], si[4], so[4];
-  axis(theta_i, ii, wi, si);
-  axis(theta_o, io, wo, so);
+  const SplineTaps ti = spline_taps(grid_coordinate(theta_i, k), k);
+  const SplineTaps to = spline_taps(grid_coordinate(theta_o, k), k);
   const double* base = table.data() + static_cast<std::size_t>(m) * k * k;
   double value = 0.0;
   for (int a = 0; a < 4; ++a) {
     double row = 0.0;
-    for (int b = 0; b < 4; ++b) row += wo[b] * so[b] * base[ii[a] * k + io[b]];
-    value += wi[a] * si[a] * row;
+    for (int b = 0; b < 4; ++b) row += to.weight[b] * to.sign(b, parity) * base[ti.index[a] * k + to.index[b]];
+    value += ti.weight[a] * ti.sign(a, parity) * row;
   }
   return value;
 }
@@ -75,28 +80,9 @@ LayerTables LayerTables::refined(int factor) const {
   if (factor < 1) throw std::invalid_argument("LayerTables::refined: factor must be at least 1");
   const int k = grid_size_;
   const int fine = factor * (k - 1) + 1;
-  // On the shared map, fine sample j sits at coarse coordinate j / factor: cell j / factor, fraction (j % factor) /
-  // factor. Its four taps and weights are those of interpolate(), with the same continuation past both ends.
-  struct Taps {
-    int index[4];
-    double weight[4];
-    double parity_sign[4];  // 1, or (-1)^m for the tap continued across the normal
-  };
-  std::vector<Taps> taps(fine);
-  for (int j = 0; j < fine; ++j) {
-    const int cell = std::min(j / factor, k - 2);
-    Taps& t = taps[j];
-    catmull_rom_weights(static_cast<double>(j - cell * factor) / factor, t.weight);
-    for (int a = 0; a < 4; ++a) {
-      t.index[a] = cell - 1 + a;
-      t.parity_sign[a] = 0.0;
-    }
-    if (t.index[0] < 0) {
-      t.index[0] = 1;
-      t.parity_sign[0] = 1.0;
-    }
-    if (t.index[3] > k - 1) t.index[3] = k - 2;
-  }
+  // On the shared map, fine sample j sits at coarse grid coordinate j / factor.
+  std::vector<SplineTaps> taps(fine);
+  for (int j = 0; j < fine; ++j) taps[j] = spline_taps(static_cast<double>(j) / factor, k);
   const auto refine = [&](std::span<const double> table) {
     std::vector<double> result(static_cast<std::size_t>(modes_) * fine * fine);
     std::vector<double> rows(static_cast<std::size_t>(k) * fine);  // coarse theta_i x fine theta_o
@@ -106,10 +92,8 @@ LayerTables LayerTables::refined(int factor) const {
       for (int i = 0; i < k; ++i) {
         for (int o = 0; o < fine; ++o) {
           double value = 0.0;
-          for (int a = 0; a < 4; ++a) {
-            const double sign = taps[o].parity_sign[a] != 0.0 ? parity : 1.0;
-            value += taps[o].weight[a] * sign * base[i * k + taps[o].index[a]];
-          }
+          for (int a = 0; a < 4; ++a)
+            value += taps[o].weight[a] * taps[o].sign(a, parity) * base[i * k + taps[o].index[a]];
           rows[static_cast<std::size_t>(i) * fine + o] = value;
         }
       }
@@ -118,8 +102,8 @@ LayerTables LayerTables::refined(int factor) const {
         for (int o = 0; o < fine; ++o) {
           double value = 0.0;
           for (int a = 0; a < 4; ++a) {
-            const double sign = taps[i].parity_sign[a] != 0.0 ? parity : 1.0;
-            value += taps[i].weight[a] * sign * rows[static_cast<std::size_t>(taps[i].index[a]) * fine + o];
+            value += taps[i].weight[a] * taps[i].sign(a, parity) *
+                     rows[static_cast<std::size_t>(taps[i].index[a]) * fine + o];
           }
           out[static_cast<std::size_t>(i) * fine + o] = value;
         }
