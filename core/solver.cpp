@@ -76,9 +76,29 @@ FourierKernel transmission_by_reciprocity(const FourierKernel& air_to_layer, dou
   return layer_to_air;
 }
 
+enum class Side { Reflected, Transmitted };
+
+// The accurate reflectance or transmittance (interface_albedo) of an interface for light arriving along each cosine,
+// with the direction back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame. That frame has
+// +z up: into the air for the top (light from the air: z_sign +1; from inside the layer: -1) and into the layer for
+// the bottom (light from inside the layer: +1).
+std::vector<double> interface_fractions(const RoughDielectric& interface, std::span<const double> cosines,
+                                        double z_sign, Side side) {
+  std::vector<double> result;
+  result.reserve(cosines.size());
+  for (const double mu : cosines) {
+    const double sin_theta = std::sqrt(std::max(0.0, 1.0 - mu * mu));
+    const InterfaceAlbedo albedo = interface_albedo(interface, Vec3(sin_theta, 0.0, z_sign * std::abs(mu)));
+    result.push_back(side == Side::Reflected ? albedo.reflectance : albedo.transmittance);
+  }
+  return result;
+}
+
 // All Fourier-projected ingredients shared by the modes of one solve, and the per-mode solve itself.
 class LayerSolver {
  public:
+  // mu_in: the outside directions light arrives along; mu_out: those the tables leave along, either none (fluxes
+  // only) or the same as mu_in (the exit operators are the source operators by reciprocity).
   LayerSolver(const Material& material, const Resolution& resolution, std::span<const double> mu_in,
               std::span<const double> mu_out);
 
@@ -137,11 +157,13 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
   phase_ = henyey_greenstein_matrices(material.g, up, weights, phase);
   if (!geometry_.top_open) {
     r_top_ = interface_fourier(geometry_.top, up, down, surface);
+    match_reflection_energy(r_top_, up, weights, interface_fractions(geometry_.top, up, -1.0, Side::Reflected));
     apply_quadrature_weights(r_top_, up, weights);
     t_source_ = interface_fourier(geometry_.top, down_in, down, surface);
+    match_column_energy(t_source_, up, weights, interface_fractions(geometry_.top, mu_in_, 1.0, Side::Transmitted));
     if (want_exit_) {
-      t_exit_ = mu_out_ == mu_in_ ? transmission_by_reciprocity(t_source_, material.eta)
-                                  : interface_fourier(geometry_.top, up, mu_out_, surface);
+      // By reciprocity the exit operator inherits the energy matching of the source columns, row by row.
+      t_exit_ = transmission_by_reciprocity(t_source_, material.eta);
       apply_quadrature_weights(t_exit_, up, weights);
       if (geometry_.base == Base::Open) {
         t_source_exterior_ = interface_fourier(geometry_.top, down_in, down_out, surface);
@@ -167,6 +189,7 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
       t_bottom_exit_ = t_exit_;
     } else {
       r_bottom_ = interface_fourier(geometry_.bottom, down, up, surface);
+      match_reflection_energy(r_bottom_, up, weights, interface_fractions(geometry_.bottom, up, 1.0, Side::Reflected));
       apply_quadrature_weights(r_bottom_, up, weights);
       if (want_exit_) {
         t_bottom_exit_ = interface_fourier(geometry_.bottom, down, down_out, surface);
@@ -175,6 +198,8 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
     }
     if (geometry_.top_open) {
       s_bottom_beam_ = interface_fourier(geometry_.bottom, down_in, up, surface);
+      match_column_energy(s_bottom_beam_, up, weights,
+                          interface_fractions(geometry_.bottom, mu_in_, 1.0, Side::Reflected));
       if (want_exit_) {
         t_bottom_beam_ = interface_fourier(geometry_.bottom, down_in, down_out, surface);
         r_bottom_rows_ = interface_fourier(geometry_.bottom, down, mu_out_, surface);
@@ -335,8 +360,11 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
     const double sigma_max = std::max(geometry.top_open ? 0.0 : material.sigma,
                                       geometry.base == Base::Rough ? material.bottom_sigma() : 0.0);
     const int floor = !rough ? 16 : sigma_max > 0.7 ? 32 : 24;
+    // A multiple of 4 at or above the need, at most 64 for the phase function, but never below the interfaces'
+    // minimum (120 at sigma 0.05): fewer than 6/sigma would break the quadrature of the interface lobes.
+    const auto multiple_of_4 = [](int n) { return (n + 3) / 4 * 4; };
     const int needed = std::max({floor, from_phase, from_surface});
-    resolution.ordinates = std::clamp((needed + 3) / 4 * 4, floor, 64);  // a multiple of 4 at or above the need
+    resolution.ordinates = std::max(std::min(multiple_of_4(needed), 64), multiple_of_4(from_surface));
   }
   resolution.max_modes =
       options.max_modes > 0
