@@ -1,6 +1,9 @@
 // Directional-hemispherical reflectance and transmittance of one rough dielectric interface.
 #pragma once
 
+#include <span>
+#include <vector>
+
 #include "core/microfacet.h"
 
 namespace skinlayer {
@@ -18,5 +21,10 @@ struct InterfaceAlbedo {
 // slope azimuth (over half the circle: the integrand is mirror-symmetric about wi's plane of incidence). At eta = 1 the interface is absent: reflectance 0, transmittance 1.
 InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& wi, int radial_nodes = 48,
                                  int azimuth_nodes = 48);
+
+// The same for many incident directions at once, sharing the quadrature rules and the slope grid (what the solver
+// needs per node and per table direction).
+std::vector<InterfaceAlbedo> interface_albedo(const RoughDielectric& interface, std::span<const Vec3> wi,
+                                              int radial_nodes = 48, int azimuth_nodes = 48);
 
 }  // namespace skinlayer

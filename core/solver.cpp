@@ -84,11 +84,14 @@ enum class Side { Reflected, Transmitted };
 // the bottom (light from inside the layer: +1).
 std::vector<double> interface_fractions(const RoughDielectric& interface, std::span<const double> cosines,
                                         double z_sign, Side side) {
+  std::vector<Vec3> toward_light;
+  toward_light.reserve(cosines.size());
+  for (const double mu : cosines) {
+    toward_light.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, z_sign * std::abs(mu));
+  }
   std::vector<double> result;
   result.reserve(cosines.size());
-  for (const double mu : cosines) {
-    const double sin_theta = std::sqrt(std::max(0.0, 1.0 - mu * mu));
-    const InterfaceAlbedo albedo = interface_albedo(interface, Vec3(sin_theta, 0.0, z_sign * std::abs(mu)));
+  for (const InterfaceAlbedo& albedo : interface_albedo(interface, toward_light)) {
     result.push_back(side == Side::Reflected ? albedo.reflectance : albedo.transmittance);
   }
   return result;
