@@ -6,48 +6,16 @@
 #include <cstdio>
 #include <set>
 
+#include "app/figures/plot_style.h"
 #include "core/conventions.h"
 
 namespace skinlayer::figures {
-namespace {
-
-constexpr Rgba kBackground{255, 255, 255, 255};
-constexpr Rgba kInk{30, 30, 30, 255};
-constexpr Rgba kGrid{205, 205, 205, 255};
-constexpr Rgba kMuted{110, 110, 110, 255};
-
-// The smallest of {1, 2, 2.5, 5} x 10^k at or above value (value > 0).
-double nice_ceiling(double value) {
-  const double decade = std::pow(10.0, std::floor(std::log10(value)));
-  for (double step : {1.0, 2.0, 2.5, 5.0, 10.0}) {
-    if (step * decade >= value * (1.0 - 1e-12)) return step * decade;
-  }
-  return 10.0 * decade;
-}
-
-std::string format_value(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, value >= 1000.0 && value < 1e6 ? "%.0f" : "%.3g", value);
-  return text;
-}
-
-}  // namespace
-
-Rgba curve_color(std::size_t index) {
-  constexpr std::array<Rgba, 6> kColors = {{{31, 119, 180, 255},
-                                            {255, 127, 14, 255},
-                                            {44, 160, 44, 255},
-                                            {214, 39, 40, 255},
-                                            {148, 103, 189, 255},
-                                            {140, 86, 75, 255}}};
-  return kColors[index % kColors.size()];
-}
 
 Image draw_polar_plot(const PolarPlot& plot, const Font& font) {
   const double u = plot.size / 640.0;  // layout unit: one pixel of the 640-pixel design
-  Canvas canvas(plot.size, plot.size, kBackground);
-  canvas.text(font, plot.title, {plot.size / 2.0, 28 * u}, 21 * u, kInk, Align::Center);
-  canvas.text(font, plot.subtitle, {plot.size / 2.0, 52 * u}, 15 * u, kMuted, Align::Center);
+  Canvas canvas(plot.size, plot.size, kPlotBackground);
+  canvas.text(font, plot.title, {plot.size / 2.0, 28 * u}, 21 * u, kPlotInk, Align::Center);
+  canvas.text(font, plot.subtitle, {plot.size / 2.0, 52 * u}, 15 * u, kPlotMuted, Align::Center);
 
   // Legend: swatch and label per curve, wrapped into centered rows at the bottom.
   const double legend_font = 15 * u, swatch = 6 * u, gap = 22 * u, row_height = 22 * u;
@@ -70,7 +38,7 @@ Image draw_polar_plot(const PolarPlot& plot, const Font& font) {
     const double y = legend_top + row_height * (static_cast<double>(r) + 0.75);
     for (std::size_t k : rows[r]) {
       canvas.fill_circle({x + swatch, y - 5 * u}, swatch, plot.curves[k].color);
-      canvas.text(font, plot.curves[k].label, {x + 2 * swatch + 6 * u, y}, legend_font, kInk);
+      canvas.text(font, plot.curves[k].label, {x + 2 * swatch + 6 * u, y}, legend_font, kPlotInk);
       x += label_widths[k] + gap;
     }
   }
@@ -106,10 +74,10 @@ Image draw_polar_plot(const PolarPlot& plot, const Font& font) {
     return Point{center.x + r * std::sin(a), center.y + (transmission ? 1.0 : -1.0) * r * std::cos(a)};
   };
 
-  for (int k = 1; k <= rings; ++k) canvas.circle(center, radius * k / rings, kGrid, 1.0 * u);
+  for (int k = 1; k <= rings; ++k) canvas.circle(center, radius * k / rings, kPlotGrid, 1.0 * u);
   for (int degrees = -75; degrees <= 75; degrees += 15) {
     for (bool transmission : {false, true}) {
-      canvas.line(center, at(degrees, radius, transmission), kGrid, 1.0 * u);
+      canvas.line(center, at(degrees, radius, transmission), kPlotGrid, 1.0 * u);
     }
   }
   for (int degrees = -90; degrees <= 90; degrees += 30) {
@@ -117,34 +85,34 @@ Image draw_polar_plot(const PolarPlot& plot, const Font& font) {
     for (bool transmission : {false, true}) {
       if (std::abs(degrees) == 90 && transmission) continue;
       const Point p = at(degrees, radius + 16 * u, transmission);
-      canvas.text(font, label, {p.x, p.y + 5 * u}, 13 * u, kMuted, Align::Center);
+      canvas.text(font, label, {p.x, p.y + 5 * u}, 13 * u, kPlotMuted, Align::Center);
     }
   }
   // Circle values along the back half of the surface line, and the axis words.
   for (int k = 1; k <= rings; ++k) {
-    canvas.text(font, format_value(ring_value(k, false)), {center.x - radius * k / rings + 3 * u, center.y - 4 * u},
-                11 * u, kMuted, Align::Left);
+    canvas.text(font, format_axis_value(ring_value(k, false)), {center.x - radius * k / rings + 3 * u, center.y - 4 * u},
+                11 * u, kPlotMuted, Align::Left);
     if (plot.separate_scales) {
-      canvas.text(font, format_value(ring_value(k, true)), {center.x - radius * k / rings + 3 * u, center.y + 13 * u},
-                  11 * u, kMuted, Align::Left);
+      canvas.text(font, format_axis_value(ring_value(k, true)), {center.x - radius * k / rings + 3 * u, center.y + 13 * u},
+                  11 * u, kPlotMuted, Align::Left);
     }
   }
   canvas.text(font, plot.unit + (log_scale ? " (log scale)" : "") + (plot.separate_scales ? ", R and T scaled apart" : ""), {center.x - radius - 10 * u,
-              center.y - radius + 4 * u}, 13 * u, kMuted);
-  canvas.text(font, "reflection", {center.x + radius + 10 * u, center.y - radius + 4 * u}, 14 * u, kMuted,
+              center.y - radius + 4 * u}, 13 * u, kPlotMuted);
+  canvas.text(font, "reflection", {center.x + radius + 10 * u, center.y - radius + 4 * u}, 14 * u, kPlotMuted,
               Align::Right);
-  canvas.text(font, "transmission", {center.x + radius + 10 * u, center.y + radius - 14 * u}, 14 * u, kMuted,
+  canvas.text(font, "transmission", {center.x + radius + 10 * u, center.y + radius - 14 * u}, 14 * u, kPlotMuted,
               Align::Right);
-  canvas.text(font, "back (φ = 0°)", {center.x - radius - 10 * u, center.y + radius + 4 * u}, 13 * u, kMuted);
-  canvas.text(font, "forward (φ = 180°)", {center.x + radius + 10 * u, center.y + radius + 4 * u}, 13 * u, kMuted,
+  canvas.text(font, "back (φ = 0°)", {center.x - radius - 10 * u, center.y + radius + 4 * u}, 13 * u, kPlotMuted);
+  canvas.text(font, "forward (φ = 180°)", {center.x + radius + 10 * u, center.y + radius + 4 * u}, 13 * u, kPlotMuted,
               Align::Right);
-  canvas.line({center.x - radius - 6 * u, center.y}, {center.x + radius + 6 * u, center.y}, kInk, 1.6 * u);
+  canvas.line({center.x - radius - 6 * u, center.y}, {center.x + radius + 6 * u, center.y}, kPlotInk, 1.6 * u);
 
   // Incident directions (upper left): one dark ray, or one per curve in its color when they differ.
   std::set<double> incidences;
   for (const PolarCurve& curve : plot.curves) incidences.insert(curve.theta_i_deg);
   for (const PolarCurve& curve : plot.curves) {
-    const Rgba color = incidences.size() > 1 ? curve.color : kInk;
+    const Rgba color = incidences.size() > 1 ? curve.color : kPlotInk;
     const Point far = at(-curve.theta_i_deg, radius * 1.02, false);
     canvas.line(far, at(-curve.theta_i_deg, radius * 0.8, false), color, 2.5 * u);
     canvas.fill_circle(far, 4 * u, color);
@@ -152,7 +120,7 @@ Image draw_polar_plot(const PolarPlot& plot, const Font& font) {
   }
   if (incidences.size() == 1) {
     const Point label = at(-*incidences.begin(), radius * 0.72, false);
-    canvas.text(font, "θi = " + format_value(*incidences.begin()) + "°", {label.x, label.y}, 13 * u, kInk,
+    canvas.text(font, "θi = " + format_axis_value(*incidences.begin()) + "°", {label.x, label.y}, 13 * u, kPlotInk,
                 Align::Center);
   }
 

@@ -9,6 +9,7 @@
 
 #include "app/figures/canvas.h"
 #include "app/figures/font.h"
+#include "app/figures/plot_style.h"
 #include "app/render/png_export.h"
 
 namespace skinlayer::figures {
@@ -44,8 +45,5 @@ struct PolarPlot {
 // separate_scales; a power of ten on the log scale), and the circles are labelled with their values (the
 // transmission half's below the surface line when the scales are separate).
 Image draw_polar_plot(const PolarPlot& plot, const Font& font);
-
-// A color per curve index, distinct and readable on white (cycles after 6).
-Rgba curve_color(std::size_t index);
 
 }  // namespace skinlayer::figures
