@@ -13,6 +13,7 @@
 #include "app/cli/previewer_launcher.h"
 #include "app/cli/quoted.h"
 #include "app/cli/render_command.h"
+#include "app/cli/validate_command.h"
 
 namespace {
 
@@ -25,6 +26,7 @@ int dispatch(std::span<const std::string_view> arguments, int argc, char** argv)
   if (command == "albedo") return run_albedo_command(rest, std::cout);
   if (command == "render") return run_render_command(rest, std::cout);
   if (command == "figures") return run_figures_command(rest, std::cout);
+  if (command == "validate") return run_validate_command(rest, std::cout);
   if (command == "help" || command == "--help" || command == "-h") return run_help_command(rest, std::cout);
   if (command == "--version") {
     std::cout << "skinlayer " << SKINLAYER_VERSION << '\n';

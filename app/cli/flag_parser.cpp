@@ -23,7 +23,8 @@ bool wants_help(std::span<const std::string_view> arguments) {
 }
 
 ParsedFlags ParsedFlags::parse(std::span<const std::string_view> arguments,
-                               std::span<const std::string_view> known_flags, std::string_view command) {
+                               std::span<const std::string_view> known_flags, std::string_view command,
+                               std::span<const std::string_view> known_switches) {
   ParsedFlags flags;
   for (std::size_t index = 0; index < arguments.size(); ++index) {
     const std::string_view argument = arguments[index];
@@ -35,12 +36,18 @@ ParsedFlags ParsedFlags::parse(std::span<const std::string_view> arguments,
     const std::string_view body = output_short ? std::string_view("output") : argument.substr(kFlagPrefix.size());
     const std::size_t equals = body.find('=');
     const std::string_view name = body.substr(0, equals);
-    if (!is_known(known_flags, name)) {
+    const bool is_switch = is_known(known_switches, name);
+    if (!is_switch && !is_known(known_flags, name)) {
       throw UsageError("unknown flag " + quoted(argument.substr(0, kFlagPrefix.size() + name.size())) + " for " +
                        std::string(command) + "; see " + std::string(command) + " --help");
     }
     std::string_view value;
-    if (equals != std::string_view::npos) {
+    if (is_switch) {
+      if (equals != std::string_view::npos) {
+        throw UsageError("flag --" + std::string(name) + " is a switch and takes no value; write --" +
+                         std::string(name));
+      }
+    } else if (equals != std::string_view::npos) {
       value = body.substr(equals + 1);
     } else if (index + 1 < arguments.size() && !arguments[index + 1].starts_with(kFlagPrefix)) {
       value = arguments[++index];

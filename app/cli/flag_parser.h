@@ -16,12 +16,14 @@ bool wants_help(std::span<const std::string_view> arguments);
 // The flags given to one command, each at most once, by name without the dashes.
 class ParsedFlags {
  public:
-  // "-o FILE" is read as "--output FILE" when "output" is a known flag.
-  // Throws UsageError, naming the argument, for: an argument that is not a flag, a flag not in known_flags, a flag
-  // with no value (end of arguments, or the next argument starts with "--"), or a flag given twice.
+  // "-o FILE" is read as "--output FILE" when "output" is a known flag. A switch ("--quick") takes no value; has()
+  // tells whether it was given.
+  // Throws UsageError, naming the argument, for: an argument that is not a flag, a flag not in known_flags or
+  // known_switches, a flag with no value (end of arguments, or the next argument starts with "--"), a switch given a
+  // value ("--quick=1"), or a flag or switch given twice.
   // command names the command in messages, e.g. "skinlayer eval".
   static ParsedFlags parse(std::span<const std::string_view> arguments, std::span<const std::string_view> known_flags,
-                           std::string_view command);
+                           std::string_view command, std::span<const std::string_view> known_switches = {});
 
   bool has(std::string_view name) const { return value(name).has_value(); }
   std::optional<std::string_view> value(std::string_view name) const;

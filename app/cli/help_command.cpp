@@ -6,6 +6,7 @@
 #include "app/cli/figures_command.h"
 #include "app/cli/quoted.h"
 #include "app/cli/render_command.h"
+#include "app/cli/validate_command.h"
 
 namespace skinlayer::cli {
 
@@ -21,6 +22,8 @@ std::string overview_usage() {
          "      the previewer's sphere and polar lobes, rendered offscreen (no display needed) to a PNG.\n"
          "  skinlayer figures -o DIR [--size PX]\n"
          "      the results figures (lobe plots and model spheres): a PNG and a CSV each, and index.html.\n"
+         "  skinlayer validate [--quick] [-o DIR]\n"
+         "      the solver against an independent Monte Carlo walk over a grid of layers: tables and a report.\n"
          "  skinlayer help [COMMAND], skinlayer COMMAND --help\n"
          "      usage of a command, with every flag, its range and default.\n"
          "  skinlayer --version\n"
@@ -47,8 +50,11 @@ int run_help_command(std::span<const std::string_view> arguments, std::ostream& 
     out << render_usage();
   } else if (command == "figures") {
     out << figures_usage();
+  } else if (command == "validate") {
+    out << validate_usage();
   } else {
-    throw UsageError("unknown command " + quoted(command) + "; the commands are eval, albedo, render and figures");
+    throw UsageError("unknown command " + quoted(command) +
+                     "; the commands are eval, albedo, render, figures and validate");
   }
   return kExitSuccess;
 }

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 #include "app/cli/errors.h"
@@ -115,6 +116,28 @@ Material material_from_flags(const ParsedFlags& flags) {
   material.ordinates = checked_ordinates(flags);
   validate(material);
   return material;
+}
+
+std::string material_to_flags(const Material& material) {
+  std::string text = "--sigma " + format_shortest(material.sigma) + " --eta " + format_shortest(material.eta);
+  // T with the fewest digits that give back the same tau (0.1, not exp(-(-ln 0.1)) = 0.10000000000000002).
+  std::string depth = " --tau " + format_shortest(material.tau);
+  for (int digits = 1; digits <= 17; ++digits) {
+    char text_t[40];
+    std::snprintf(text_t, sizeof text_t, "%.*g", digits, material.transparency());
+    const std::optional<double> read_back = parse_number(text_t);
+    if (read_back && optical_depth_from_transparency(*read_back) == material.tau) {
+      depth = " --T " + std::string(text_t);
+      break;
+    }
+  }
+  text += depth;
+  text += " --albedo " + format_shortest(material.albedo) + " --g " + format_shortest(material.g) + " --bottom " +
+          format_bottom(material.bottom);
+  if (material.bottom.sigma) text += " --bottom-sigma " + format_shortest(*material.bottom.sigma);
+  if (material.bottom.eta) text += " --bottom-eta " + format_shortest(*material.bottom.eta);
+  if (material.ordinates) text += " --ordinates " + std::to_string(*material.ordinates);
+  return text;
 }
 
 std::string material_flags_usage() {

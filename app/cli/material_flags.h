@@ -26,6 +26,11 @@ std::vector<std::string_view> material_flags_and(std::initializer_list<std::stri
 // --bottom-eta with a bottom other than air, or a non-integer --ordinates.
 Material material_from_flags(const ParsedFlags& flags);
 
+// The flags that material_from_flags reads back into the same material: every parameter, e.g.
+// "--sigma 0.5 --eta 1.4 --T 0.2 --albedo 1 --g 0.8 --bottom air" (--tau when T would not read back exactly; the
+// bottom's own sigma and eta and --ordinates only when set), each number in its shortest exact form.
+std::string material_to_flags(const Material& material);
+
 // Help text for the material flags: every flag with its meaning, symbol, range and default, from
 // skinlayer::parameter_table().
 std::string material_flags_usage();

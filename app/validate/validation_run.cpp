@@ -1,0 +1,180 @@
+#include "app/validate/validation_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/conventions.h"
+#include "core/solver.h"
+
+namespace skinlayer::validation {
+namespace {
+
+constexpr double kThetaBandDeg = 15.0;
+constexpr double kAzimuthHalfWidth = 0.25;  // radians
+constexpr double kMinExpectedCounts = 25.0;
+constexpr double kMaxSparseRelativeError = 0.2;
+constexpr int kBinGrid = 16;
+// Two values with no Monte Carlo spread (both exactly 0, say) agree when they differ by no more than rounding.
+constexpr double kExactTolerance = 1e-12;
+
+double plane_azimuth(BinPlane plane) {
+  switch (plane) {
+    case BinPlane::Back: return 0.0;
+    case BinPlane::Forward: return kPi;
+    case BinPlane::Across: return 0.5 * kPi;
+  }
+  return 0.0;
+}
+
+const char* plane_label(BinPlane plane) {
+  switch (plane) {
+    case BinPlane::Back: return "φ 0°";
+    case BinPlane::Forward: return "φ 180°";
+    case BinPlane::Across: return "φ 90°";
+  }
+  return "";
+}
+
+bool transmits(const Material& material) {
+  return !std::isinf(material.tau) && material.bottom.kind != BottomKind::Lambert;
+}
+
+std::string bin_name(const ValidationBin& bin) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%s %s θo [%.0f,%.0f)", bin.side == ExitSide::Reflected ? "BRDF" : "BTDF",
+                plane_label(bin.plane), bin.theta_min_deg, bin.theta_max_deg);
+  return text;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <typename Rows>
+double worst(const Rows& rows, double (Comparison::*measure)() const, double worst_so_far) {
+  for (const Comparison& c : rows) {
+    if (c.verdict != Verdict::Sparse) worst_so_far = std::max(worst_so_far, std::abs((c.*measure)()));
+  }
+  return worst_so_far;
+}
+
+}  // namespace
+
+std::vector<ValidationBin> validation_bins(const Material& material) {
+  std::vector<ValidationBin> bins;
+  for (const ExitSide side : {ExitSide::Reflected, ExitSide::Transmitted}) {
+    if (side == ExitSide::Transmitted && !transmits(material)) continue;
+    for (const BinPlane plane : {BinPlane::Back, BinPlane::Forward, BinPlane::Across}) {
+      for (double theta = 0.0; theta < 90.0; theta += kThetaBandDeg) {
+        bins.push_back({side, plane, theta, theta + kThetaBandDeg});
+      }
+    }
+  }
+  return bins;
+}
+
+AngularBin angular_bin(const ValidationBin& bin) {
+  const double phi = plane_azimuth(bin.plane);
+  return {bin.side, degrees_to_radians(bin.theta_min_deg), degrees_to_radians(bin.theta_max_deg),
+          phi - kAzimuthHalfWidth, phi + kAzimuthHalfWidth};
+}
+
+double Comparison::sigmas() const {
+  const double diff = difference();
+  if (standard_error > 0.0) return diff / standard_error;
+  return std::abs(diff) <= kExactTolerance ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), diff);
+}
+
+double Comparison::relative() const { return solver != 0.0 ? difference() / solver : 0.0; }
+
+bool SetResult::agrees() const {
+  const auto disagrees = [](const Comparison& c) { return c.verdict == Verdict::Disagrees; };
+  return std::none_of(albedos.begin(), albedos.end(), disagrees) &&
+         std::none_of(bin_comparisons.begin(), bin_comparisons.end(), disagrees);
+}
+
+double SetResult::worst_sigmas() const {
+  return worst(bin_comparisons, &Comparison::sigmas, worst(albedos, &Comparison::sigmas, 0.0));
+}
+
+double SetResult::worst_relative() const {
+  return worst(bin_comparisons, &Comparison::relative, worst(albedos, &Comparison::relative, 0.0));
+}
+
+Verdict judge(double monte_carlo, double standard_error, double solver, double expected_counts) {
+  const bool judged = expected_counts < 0.0 || expected_counts >= kMinExpectedCounts ||
+                      (monte_carlo > 0.0 && standard_error <= kMaxSparseRelativeError * monte_carlo);
+  if (!judged) return Verdict::Sparse;
+  const Comparison c{"", monte_carlo, standard_error, solver};
+  return std::abs(c.sigmas()) <= kAgreementSigmas ? Verdict::Agrees : Verdict::Disagrees;
+}
+
+double solver_bin_average(const Material& material, const LayerTables& tables, double theta_i,
+                          const ValidationBin& bin) {
+  const AngularBin range = angular_bin(bin);
+  double sum = 0.0, weight_sum = 0.0;
+  for (int a = 0; a < kBinGrid; ++a) {
+    const double theta = range.theta_min + (a + 0.5) * (range.theta_max - range.theta_min) / kBinGrid;
+    const double weight = std::cos(theta) * std::sin(theta);  // cos theta domega / (dtheta dphi)
+    for (int b = 0; b < kBinGrid; ++b) {
+      const double phi = range.phi_min + (b + 0.5) * (range.phi_max - range.phi_min) / kBinGrid;
+      const double f = bin.side == ExitSide::Reflected
+                           ? tables.brdf_subsurface(theta_i, theta, phi) + brdf_surface(material, theta_i, theta, phi)
+                           : tables.btdf(theta_i, theta, phi);
+      sum += weight * f;
+      weight_sum += weight;
+    }
+  }
+  return sum / weight_sum;
+}
+
+SetResult run_validation_set(const ValidationSet& set, const RunOptions& options) {
+  SetResult result;
+  result.set = set;
+  const Material& material = set.material;
+  const double theta_i = degrees_to_radians(set.theta_i_deg);
+
+  const auto solver_start = std::chrono::steady_clock::now();
+  const double angles[] = {theta_i};
+  const DirectionalAlbedo albedo = directional_albedo(material, angles).front();
+  result.tables = solve(material);
+  result.bins = validation_bins(material);
+  std::vector<double> solver_bins;
+  for (const ValidationBin& bin : result.bins) {
+    solver_bins.push_back(solver_bin_average(material, result.tables, theta_i, bin));
+  }
+  result.solver_seconds = seconds_since(solver_start);
+
+  std::vector<AngularBin> tallies;
+  for (const ValidationBin& bin : result.bins) tallies.push_back(angular_bin(bin));
+  MonteCarloOptions mc_options;
+  mc_options.paths = options.paths;
+  mc_options.seed = options.seed;
+  mc_options.threads = options.threads;
+  mc_options.progress = options.progress;
+  const auto mc_start = std::chrono::steady_clock::now();
+  const MonteCarloResult mc = simulate_layer(material, theta_i, tallies, mc_options);
+  result.monte_carlo_seconds = seconds_since(mc_start);
+  result.paths = mc.paths;
+  result.truncated_paths = mc.truncated_paths;
+
+  const auto compare = [](std::string quantity, const MonteCarloEstimate& estimate, double solver,
+                          double expected_counts) {
+    Comparison c{std::move(quantity), estimate.value, estimate.standard_error, solver};
+    c.verdict = judge(c.monte_carlo, c.standard_error, c.solver, expected_counts);
+    return c;
+  };
+  result.albedos.push_back(compare("R surface", mc.reflectance_surface, albedo.reflectance_surface, -1.0));
+  result.albedos.push_back(compare("R subsurface", mc.reflectance_subsurface, albedo.reflectance_subsurface, -1.0));
+  result.albedos.push_back(compare("T", mc.transmittance, albedo.transmittance, -1.0));
+  for (std::size_t k = 0; k < result.bins.size(); ++k) {
+    const double expected = static_cast<double>(mc.paths) * solver_bins[k] * tallies[k].projected_solid_angle();
+    result.bin_comparisons.push_back(compare(bin_name(result.bins[k]), mc.bins[k], solver_bins[k], expected));
+  }
+  return result;
+}
+
+}  // namespace skinlayer::validation

@@ -1,0 +1,62 @@
+// skinlayer validate --quick, run once as CI's solver-against-Monte-Carlo check: every set of the grid must agree
+// within 4 Monte Carlo standard errors (the exit status), and the report and one plot per set must be written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "app/validate/validation_grid.h"
+#include "tests/app/process_runner.h"
+
+namespace skinlayer::test {
+namespace {
+
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST(ValidateCommand, QuickRunAgreesEverywhereAndWritesTheReport) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "skinlayer-validate-quick";
+  std::filesystem::remove_all(dir);
+  // Two threads whatever the machine: a Monte Carlo result is reproducible for a given seed and thread count.
+  const ProcessResult run = run_skinlayer({"validate", "--quick", "--threads", "2", "-o", dir.string()});
+  std::printf("%s", run.out.c_str());
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("[1/"), std::string::npos);
+  EXPECT_NE(run.out.find("sets agree within 4 standard errors"), std::string::npos);
+
+  const std::string report = read_file(dir / "validation.md");
+  for (const validation::ValidationSet& set : validation::validation_grid()) {
+    const std::string png = read_file(dir / (set.name + ".png"));
+    ASSERT_GT(png.size(), 8u) << set.name;
+    EXPECT_EQ(png.substr(1, 3), "PNG") << set.name;
+    EXPECT_NE(report.find("## " + set.name + "\n"), std::string::npos) << set.name;
+    EXPECT_NE(report.find("](" + set.name + ".png)"), std::string::npos) << set.name;
+  }
+  EXPECT_EQ(report.find("**disagrees**"), std::string::npos);
+}
+
+TEST(ValidateCommand, BadFlagsAreUsageErrors) {
+  EXPECT_EQ(run_skinlayer({"validate", "--quick=1"}).exit_code, 2);
+  EXPECT_EQ(run_skinlayer({"validate", "--set", "no-such-set"}).exit_code, 2);
+  EXPECT_EQ(run_skinlayer({"validate", "--threads", "0"}).exit_code, 2);
+  EXPECT_EQ(run_skinlayer({"validate", "--seed", "nan"}).exit_code, 2);
+  const ProcessResult bad = run_skinlayer({"validate", "--set", "no-such-set"});
+  EXPECT_NE(bad.err.find("paper-default"), std::string::npos) << "the error lists the sets: " << bad.err;
+}
+
+TEST(ValidateCommand, OneSetRunsWithItsOwnSeed) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "skinlayer-validate-one";
+  const ProcessResult alone =
+      run_skinlayer({"validate", "--quick", "--threads", "2", "--set", "eta-1", "-o", dir.string()});
+  EXPECT_EQ(alone.exit_code, 0) << alone.err;
+  EXPECT_NE(alone.out.find("[1/1] eta-1"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace skinlayer::test

@@ -1,0 +1,92 @@
+// The validation's comparison rules and the solver side of a bin, without running the Monte Carlo walk.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "app/validate/validation_grid.h"
+#include "app/validate/validation_run.h"
+#include "core/conventions.h"
+#include "core/solver.h"
+
+namespace skinlayer::validation {
+namespace {
+
+TEST(ValidationJudge, FourStandardErrorsIsTheLine) {
+  EXPECT_EQ(judge(1.0, 0.01, 1.039, -1.0), Verdict::Agrees);
+  EXPECT_EQ(judge(1.0, 0.01, 1.041, -1.0), Verdict::Disagrees);
+  EXPECT_EQ(judge(1.0, 0.01, 0.959, -1.0), Verdict::Disagrees);
+}
+
+TEST(ValidationJudge, ZeroSpreadAgreesOnlyWithTheSameValue) {
+  EXPECT_EQ(judge(0.0, 0.0, 0.0, -1.0), Verdict::Agrees);
+  EXPECT_EQ(judge(0.0, 0.0, 1e-6, -1.0), Verdict::Disagrees);
+  const Comparison c{"T", 0.0, 0.0, 1e-6};
+  EXPECT_TRUE(std::isinf(c.sigmas()));
+}
+
+TEST(ValidationJudge, SparseBinsAreReportedNotJudgedUnlessEitherSideSeesLight) {
+  // Few expected exits and a noisy estimate: sparse, whatever the values.
+  EXPECT_EQ(judge(0.5, 0.3, 0.1, 10.0), Verdict::Sparse);
+  // The solver expects many exits where Monte Carlo saw none: judged, and wrong.
+  EXPECT_EQ(judge(0.0, 0.0, 0.1, 1000.0), Verdict::Disagrees);
+  // Monte Carlo sees a well-measured signal the solver does not predict: judged, and wrong.
+  EXPECT_EQ(judge(0.5, 0.05, 0.0, 0.0), Verdict::Disagrees);
+}
+
+TEST(ValidationBins, CoverBothPlanesAndAcrossOnEachSideThatLeaks) {
+  const Material layer;  // transmits: air below
+  EXPECT_EQ(validation_bins(layer).size(), 36u);
+  Material base;
+  base.bottom = parse_bottom("lambert:0.5");
+  EXPECT_EQ(validation_bins(base).size(), 18u);
+  Material deep;
+  deep.tau = optical_depth_from_transparency(0.0);
+  EXPECT_EQ(validation_bins(deep).size(), 18u);
+  for (const ValidationBin& bin : validation_bins(layer)) {
+    const AngularBin a = angular_bin(bin);
+    EXPECT_LT(a.theta_min, a.theta_max);
+    EXPECT_NEAR(a.phi_max - a.phi_min, 0.5, 1e-12);
+  }
+}
+
+// No medium, no top interface, a Lambertian base of albedo A: the BRDF is A/pi everywhere, so every reflected bin
+// averages to A/pi whatever its weight.
+TEST(ValidationBins, SolverAverageOfAConstantBrdfIsTheConstant) {
+  Material bare_base;
+  bare_base.eta = 1.0;
+  bare_base.tau = optical_depth_from_transparency(1.0);
+  bare_base.bottom = parse_bottom("lambert:0.6");
+  const LayerTables tables = solve(bare_base);
+  for (const ValidationBin& bin : validation_bins(bare_base)) {
+    EXPECT_NEAR(solver_bin_average(bare_base, tables, 0.4, bin), 0.6 * kInvPi, 1e-6);
+  }
+}
+
+TEST(ValidationGrid, CoversEveryValueTheCheckNames) {
+  const std::vector<ValidationSet> grid = validation_grid();
+  const auto has = [&grid](auto predicate) {
+    for (const ValidationSet& s : grid) {
+      if (predicate(s.material)) return true;
+    }
+    return false;
+  };
+  for (double g : {0.0, 0.5, 0.9}) EXPECT_TRUE(has([g](const Material& m) { return m.g == g; })) << g;
+  for (double a : {0.5, 0.99, 1.0}) EXPECT_TRUE(has([a](const Material& m) { return m.albedo == a; })) << a;
+  for (double s : {0.1, 0.5, 1.0}) EXPECT_TRUE(has([s](const Material& m) { return m.sigma == s; })) << s;
+  for (double e : {1.0, 1.4, 2.0}) EXPECT_TRUE(has([e](const Material& m) { return m.eta == e; })) << e;
+  for (BottomKind k : {BottomKind::Air, BottomKind::Matched, BottomKind::Lambert}) {
+    EXPECT_TRUE(has([k](const Material& m) { return m.bottom.kind == k; }));
+  }
+  EXPECT_TRUE(has([](const Material& m) { return std::isinf(m.tau); }));
+  EXPECT_TRUE(has([](const Material& m) { return m.transparency() >= 0.9; }));
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    EXPECT_EQ(grid[k].grid_index, k);
+    EXPECT_GT(grid[k].quick_paths, 0u);
+    EXPECT_GE(grid[k].paths, grid[k].quick_paths);
+    EXPECT_NO_THROW(validate(grid[k].material)) << grid[k].name;
+  }
+}
+
+}  // namespace
+}  // namespace skinlayer::validation
