@@ -1,42 +1,125 @@
-// Solver speed, one channel, one thread. Run: cmake --build build --target bench && build/tests/bench/bench_core
+// Solver speed, one channel, one thread, and the Monte Carlo reference for comparison.
+//   Run:        cmake --build build --target bench && build/tests/bench/bench_core
+//   Report:     cmake --build build --target benchmarks-doc   (runs bench_core --report docs/benchmarks.md: every
+//               benchmark below, a power-law fit of the solve time in N with its plot, the per-mode split, the Monte
+//               Carlo time to the solver's accuracy, and the tables' memory; tests/bench/benchmark_report.h)
 #include <benchmark/benchmark.h>
 
-#include "core/solver.h"
+#include <cmath>
+#include <vector>
 
+#include "core/boundary_solve.h"
+#include "core/conventions.h"
+#include "core/henyey_greenstein.h"
+#include "core/interface_operators.h"
+#include "core/quadrature.h"
+#include "core/reference/monte_carlo.h"
+#include "core/slab_eigen.h"
+#include "core/solver.h"
+#include "tests/bench/benchmark_report.h"
+#include "tests/bench/solve_stages.h"
+
+namespace skinlayer::bench {
 namespace {
 
 // A full single-channel solve at the paper's default (sigma 0.5, eta 1.4, T 0.2, Omega 1, g 0.8, bottom air) at the
 // automatic resolution, which tests/core/solver_limits_test.cpp checks is converged to 0.5% in the BRDF.
 void BM_SolveDefault(benchmark::State& state) {
-  const skinlayer::Material material;
+  const Material material;
   for (auto _ : state) {
-    skinlayer::LayerTables tables = skinlayer::solve(material);
+    LayerTables tables = solve(material);
     benchmark::DoNotOptimize(tables);
   }
-  state.counters["ordinates"] = skinlayer::choose_resolution(material).ordinates;
-  state.counters["modes"] = skinlayer::solve(material).modes();
+  state.counters["ordinates"] = choose_resolution(material).ordinates;
+  state.counters["modes"] = solve(material).modes();
 }
 BENCHMARK(BM_SolveDefault)->Unit(benchmark::kMillisecond);
 
-// The same solve at a fixed number of ordinates per hemisphere.
+// The solve at a fixed number of ordinates per hemisphere, N = 8 .. 128. N = 8 is below the default material's
+// minimum (6/sigma and the g = 0.8 phase function need 12), so the sweep uses sigma 0.8 and g 0.5, the rest default.
 void BM_SolveOrdinates(benchmark::State& state) {
-  skinlayer::Material material;
+  Material material = ordinate_sweep_material();
   material.ordinates = static_cast<int>(state.range(0));
   for (auto _ : state) {
-    skinlayer::LayerTables tables = skinlayer::solve(material);
+    LayerTables tables = solve(material);
+    benchmark::DoNotOptimize(tables);
+  }
+  state.counters["modes"] = solve(material).modes();
+}
+BENCHMARK(BM_SolveOrdinates)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+
+// The default solve with exactly M Fourier modes (tolerance 0: no early stop).
+void BM_SolveFourierModes(benchmark::State& state) {
+  const Material material;
+  SolveOptions options;
+  options.max_modes = static_cast<int>(state.range(0));
+  options.fourier_tolerance = 0.0;
+  for (auto _ : state) {
+    LayerTables tables = solve(material, options);
     benchmark::DoNotOptimize(tables);
   }
 }
-BENCHMARK(BM_SolveOrdinates)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SolveFourierModes)->Arg(1)->Arg(4)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Unit(benchmark::kMillisecond);
+
+// The stages of the default solve (solve_stages.h), each timed over all its modes; the report divides by the modes.
+void BM_StagePhaseMatrices(benchmark::State& state) {
+  const StageInputs in = default_stage_inputs();
+  for (auto _ : state) benchmark::DoNotOptimize(phase_stage(in));
+  state.counters["modes"] = in.modes;
+}
+BENCHMARK(BM_StagePhaseMatrices)->Unit(benchmark::kMillisecond);
+
+void BM_StageInterfaceMatrices(benchmark::State& state) {
+  const StageInputs in = default_stage_inputs();
+  for (auto _ : state) benchmark::DoNotOptimize(interface_stage(in));
+  state.counters["modes"] = in.modes;
+}
+BENCHMARK(BM_StageInterfaceMatrices)->Unit(benchmark::kMillisecond);
+
+void BM_StageEigen(benchmark::State& state) {
+  const StageInputs in = default_stage_inputs();
+  const PhaseMatrices phase = phase_stage(in);
+  for (auto _ : state) benchmark::DoNotOptimize(eigen_stage(in, phase));
+  state.counters["modes"] = in.modes;
+}
+BENCHMARK(BM_StageEigen)->Unit(benchmark::kMillisecond);
+
+void BM_StageLinearSolve(benchmark::State& state) {
+  const StageInputs in = default_stage_inputs();
+  const PhaseMatrices phase = phase_stage(in);
+  const InterfaceStage interfaces = interface_stage(in);
+  const std::vector<SlabEigenSolution> eigen = eigen_stage(in, phase);
+  for (auto _ : state) benchmark::DoNotOptimize(linear_solve_stage(in, interfaces, eigen));
+  state.counters["modes"] = in.modes;
+}
+BENCHMARK(BM_StageLinearSolve)->Unit(benchmark::kMillisecond);
+
+void BM_StageSplineTables(benchmark::State& state) {
+  const StageInputs in = default_stage_inputs();
+  const LayerTables tables = solve(Material{});
+  for (auto _ : state) benchmark::DoNotOptimize(spline_stage(tables));
+  state.counters["modes"] = in.modes;
+}
+BENCHMARK(BM_StageSplineTables)->Unit(benchmark::kMillisecond);
 
 // Directional albedo at four incident angles (what `skinlayer albedo` computes).
 void BM_DirectionalAlbedo(benchmark::State& state) {
-  const skinlayer::Material material;
+  const Material material;
   const std::vector<double> theta = {0.0, 0.5236, 1.0472, 1.3963};
-  for (auto _ : state) benchmark::DoNotOptimize(skinlayer::directional_albedo(material, theta));
+  for (auto _ : state) benchmark::DoNotOptimize(directional_albedo(material, theta));
 }
 BENCHMARK(BM_DirectionalAlbedo)->Unit(benchmark::kMillisecond);
 
-}  // namespace
+// The Monte Carlo reference at the default material, light at 45 degrees: 100,000 paths on one thread.
+void BM_MonteCarloDefault(benchmark::State& state) {
+  MonteCarloOptions options;
+  options.paths = kMonteCarloBenchPaths;
+  options.threads = 1;
+  for (auto _ : state) benchmark::DoNotOptimize(simulate_layer(Material{}, degrees_to_radians(45.0), {}, options));
+}
+BENCHMARK(BM_MonteCarloDefault)->Unit(benchmark::kMillisecond);
 
-BENCHMARK_MAIN();
+}  // namespace
+}  // namespace skinlayer::bench
+
+int main(int argc, char** argv) { return skinlayer::bench::run_benchmarks_with_report(argc, argv); }

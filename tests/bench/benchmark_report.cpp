@@ -1,0 +1,294 @@
+#include "tests/bench/benchmark_report.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "app/figures/font.h"
+#include "app/figures/xy_plot.h"
+#include "app/render/png_export.h"
+#include "core/conventions.h"
+#include "core/reference/monte_carlo.h"
+#include "core/solver.h"
+#include "shaders/table_layout.h"
+#include "tests/bench/solve_stages.h"
+
+namespace skinlayer::bench {
+namespace {
+
+constexpr std::string_view kReportFlag = "--report=";
+
+// Keeps each benchmark's median real time (ms) beside the console output.
+class CollectingReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    for (const Run& run : runs) {
+      const bool aggregate = run.run_type == Run::RT_Aggregate;
+      if (aggregate && run.aggregate_name != "median") continue;
+      const double ms = run.GetAdjustedRealTime() * to_ms(run.time_unit);
+      std::string name = run.run_name.str();
+      name = name.substr(0, name.find("/repeats:"));
+      if (aggregate || !milliseconds_.count(name)) milliseconds_[name] = ms;
+    }
+    ConsoleReporter::ReportRuns(runs);
+  }
+  double ms(const std::string& name) const {
+    const auto it = milliseconds_.find(name);
+    return it == milliseconds_.end() ? std::nan("") : it->second;
+  }
+
+ private:
+  static double to_ms(benchmark::TimeUnit unit) {
+    switch (unit) {
+      case benchmark::kNanosecond: return 1e-6;
+      case benchmark::kMicrosecond: return 1e-3;
+      case benchmark::kMillisecond: return 1.0;
+      case benchmark::kSecond: return 1e3;
+    }
+    return 1.0;
+  }
+  std::map<std::string, double> milliseconds_;
+};
+
+std::string cpu_model() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);) {
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  }
+  return "unknown CPU";
+}
+
+std::string formatted(const char* format, auto... values) {
+  char text[512];
+  std::snprintf(text, sizeof text, format, values...);
+  return text;
+}
+
+struct PowerLaw {
+  double scale = 0.0;     // t = scale N^exponent
+  double exponent = 0.0;
+};
+
+// Least squares of log t = log scale + exponent log N.
+PowerLaw fit_power_law(const std::vector<double>& n, const std::vector<double>& t) {
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  const double count = static_cast<double>(n.size());
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    const double x = std::log(n[k]), y = std::log(t[k]);
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+  }
+  const double exponent = (count * sxy - sx * sy) / (count * sxx - sx * sx);
+  return {std::exp((sy - exponent * sx) / count), exponent};
+}
+
+void write_ordinates_plot(const std::vector<double>& n, const std::vector<double>& t, const PowerLaw& fit,
+                          const std::filesystem::path& path) {
+  figures::XyPlot plot;
+  plot.title = formatted("Solve time against ordinates N (one channel, one thread): t ≈ %.3g N^%.2f ms", fit.scale,
+                         fit.exponent);
+  plot.x_label = "N, discrete ordinates per hemisphere";
+  plot.y_label = "ms";
+  plot.x_min = 0.0;
+  plot.x_max = 128.0;
+  plot.x_tick = 16.0;
+  figures::XySeries curve{formatted("fit %.3g N^%.2f (N ≥ 16)", fit.scale, fit.exponent), figures::curve_color(0),
+                          {}, {}, {}};
+  for (double x = 4.0; x <= 128.0; x += 1.0) curve.curve.push_back({x, fit.scale * std::pow(x, fit.exponent)});
+  figures::XySeries points{"measured (median of 3)", figures::kPlotInk, {}, {}, {}};
+  for (std::size_t k = 0; k < n.size(); ++k) points.points.push_back({n[k], t[k], 0.0});
+  plot.series = {curve, points};
+  const figures::Font font;
+  write_png(figures::draw_xy_plot(plot, font), path.string());
+}
+
+struct MonteCarloSample {
+  double seconds = 0.0;
+  double value = 0.0;
+  double standard_error = 0.0;
+};
+
+MonteCarloSample monte_carlo_default(std::uint64_t paths) {
+  MonteCarloOptions options;
+  options.paths = paths;
+  options.threads = 1;
+  const auto start = std::chrono::steady_clock::now();
+  const MonteCarloResult result = simulate_layer(Material{}, degrees_to_radians(45.0), {}, options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return {seconds, result.reflectance_subsurface.value, result.reflectance_subsurface.standard_error};
+}
+
+std::string report(const CollectingReporter& r, const std::filesystem::path& png) {
+  std::ostringstream md;
+  md << "# Benchmarks\n\n"
+     << "Regenerate with `cmake --build build --target benchmarks-doc` (runs `build/tests/bench/bench_core "
+        "--report=docs/benchmarks.md`; Release build, medians of 3 repetitions). Solver: one channel, one thread.\n\n"
+     << formatted("Machine: %s, %u logical cores; compiler %s.\n\n", cpu_model().c_str(),
+                  std::thread::hardware_concurrency(), __VERSION__);
+
+  const Material material;
+  const Resolution resolution = choose_resolution(material);
+  const LayerTables tables = solve(material);
+  md << "## The default solve\n\n"
+     << formatted("The paper's default layer (σ 0.5, η 1.4, T 0.2, Ω 1, g 0.8, air below) at the automatic resolution "
+                  "(N = %d, %d Fourier modes, %d×%d tables): **%.2f ms**. Directional albedo at four angles: %.2f ms."
+                  "\n\n",
+                  resolution.ordinates, tables.modes(), tables.grid_size(), tables.grid_size(),
+                  r.ms("BM_SolveDefault"), r.ms("BM_DirectionalAlbedo"));
+
+  std::vector<double> n_all, t_all, n_fit, t_fit;
+  md << "## Cost against the number of ordinates N\n\n"
+     << "σ 0.8 and g 0.5, the rest default (the default material needs N ≥ 12).\n\n| N | ms | modes |\n|---|---|---|\n";
+  for (int n : {8, 16, 32, 64, 128}) {
+    const double ms = r.ms("BM_SolveOrdinates/" + std::to_string(n) + "");
+    Material m = ordinate_sweep_material();
+    m.ordinates = n;
+    md << formatted("| %d | %.2f | %d |\n", n, ms, solve(m).modes());
+    n_all.push_back(n);
+    t_all.push_back(ms);
+    if (n >= 16) {
+      n_fit.push_back(n);
+      t_fit.push_back(ms);
+    }
+  }
+  const PowerLaw fit = fit_power_law(n_fit, t_fit);
+  write_ordinates_plot(n_all, t_all, fit, png);
+  md << formatted("\nLeast-squares fit over N ≥ 16: **t ≈ %.3g · N^%.2f ms**; the last doubling (64 → 128) costs "
+                  "N^%.2f. The exponent stays under the eigen-decomposition's 3 because at these N the kernel "
+                  "projections (N² node pairs times the azimuth samples) and the N-independent work (the 48 table "
+                  "directions' slope-space albedos and projections, the tables) carry most of the time.\n\n"
+                  "![solve time against N](%s)\n\n",
+                  fit.scale, fit.exponent, std::log2(t_all.back() / t_all[t_all.size() - 2]),
+                  png.filename().string().c_str());
+
+  md << "## Cost against the Fourier order\n\nThe default material, exactly M modes (no early stop).\n\n"
+        "| M | ms | ms per mode |\n|---|---|---|\n";
+  for (int m : {1, 4, 8, 16, 32, 64}) {
+    const double ms = r.ms("BM_SolveFourierModes/" + std::to_string(m) + "");
+    md << formatted("| %d | %.2f | %.3f |\n", m, ms, ms / m);
+  }
+
+  const StageInputs in = default_stage_inputs();
+  struct Stage {
+    const char* name;
+    const char* benchmark;
+    const char* what;
+  };
+  const Stage stages[] = {
+      {"phase matrices", "BM_StagePhaseMatrices", "HG kernel projected on the node pairs"},
+      {"interface matrices", "BM_StageInterfaceMatrices",
+       "rough-dielectric kernels projected, energy-matched to the slope-space albedos"},
+      {"eigen-decomposition", "BM_StageEigen", "half-size symmetric reduction, Cholesky + self-adjoint solver"},
+      {"linear solve", "BM_StageLinearSolve", "2N×2N boundary system for 48 incident directions, exit product"},
+      {"spline tables", "BM_StageSplineTables", "Catmull-Rom tables resampled 2× for the GPU"},
+  };
+  double total = 0.0, largest = 0.0;
+  const char* dominant = "";
+  for (const Stage& s : stages) {
+    const double ms = r.ms(std::string(s.benchmark) + "");
+    total += ms;
+    if (ms > largest) {
+      largest = ms;
+      dominant = s.name;
+    }
+  }
+  md << formatted("\n## Time per mode, by stage\n\nThe default solve's stages timed apart (tests/bench/solve_stages.h), "
+                  "divided by its %d modes.\n\n| stage | ms per mode | share | what |\n|---|---|---|---|\n",
+                  in.modes);
+  for (const Stage& s : stages) {
+    const double ms = r.ms(std::string(s.benchmark) + "");
+    md << formatted("| %s | %.3f | %.0f%% | %s |\n", s.name, ms / in.modes, 100.0 * ms / total, s.what);
+  }
+  md << formatted("\nThe **%s** dominate (%.0f%% of the stages' sum, %.2f ms against the whole solve's %.2f ms).\n\n",
+                  dominant, 100.0 * largest / total, total, r.ms("BM_SolveDefault"));
+
+  // Monte Carlo to the solver's accuracy, measured here: the subsurface albedo at 45 degrees.
+  const MonteCarloSample mc = monte_carlo_default(4 * kMonteCarloBenchPaths);
+  Material fine;
+  fine.ordinates = 128;
+  const double angle[] = {degrees_to_radians(45.0)};
+  const double solver_value = directional_albedo(material, angle).front().reflectance_subsurface;
+  const double reference_value = directional_albedo(fine, angle).front().reflectance_subsurface;
+  const double solver_error = std::abs(solver_value - reference_value) / reference_value;
+  const double per_path = mc.seconds / (4.0 * kMonteCarloBenchPaths);
+  const auto mc_seconds_for = [&](double relative) {
+    const double paths = 4.0 * kMonteCarloBenchPaths * std::pow(mc.standard_error / (relative * mc.value), 2.0);
+    return paths * per_path;
+  };
+  const double solve_seconds = 1e-3 * r.ms("BM_SolveDefault");
+  md << "## Monte Carlo against the solver\n\n"
+     << formatted("The subsurface albedo of the default layer lit at 45°, by the Monte Carlo reference on one thread: "
+                  "%.0f paths/s (%.0f paths in %.2f s, R = %.5f ± %.5f). The solver's own error there, against "
+                  "N = 128: %.1e relative.\n\n",
+                  1.0 / per_path, 4.0 * kMonteCarloBenchPaths, mc.seconds, mc.value, mc.standard_error,
+                  solver_error)
+     << "| target (1 standard error) | Monte Carlo time, one albedo at one angle | solver, every angle's BSDF | "
+        "speed-up |\n|---|---|---|---|\n";
+  for (const double target : {std::max(solver_error, 1e-6), 1e-3, 1e-2}) {
+    const double seconds = mc_seconds_for(target);
+    md << formatted("| %.1e%s | %.3g s | %.1f ms | %.2g× |\n", target,
+                    target == std::max(solver_error, 1e-6) ? " (the solver's)" : "", seconds, 1e3 * solve_seconds,
+                    seconds / solve_seconds);
+  }
+
+  const int gpu_size = SKINLAYER_TABLE_UPSAMPLE * (tables.grid_size() - 1) + 1;
+  const double cpu_bytes = 8.0 * static_cast<double>(tables.reflection_coefficients().size() +
+                                                     tables.transmission_coefficients().size());
+  const double gpu_bytes = 2.0 * gpu_size * gpu_size * tables.modes() * 4 * 4;
+  md << "\n## Memory of the tables, per material\n\n"
+     << formatted("The default material: %d modes on a %d×%d grid, reflection and transmission.\n\n"
+                  "| form | size |\n|---|---|\n| `LayerTables` (double, one channel) | %.2f MB |\n"
+                  "| GPU textures (RGBA32F, %d×%d, three channels, both tables) | %.2f MB |\n",
+                  tables.modes(), tables.grid_size(), tables.grid_size(), cpu_bytes / 1e6, gpu_size, gpu_size,
+                  gpu_bytes / 1e6);
+  return md.str();
+}
+
+}  // namespace
+
+int run_benchmarks_with_report(int argc, char** argv) {
+  std::vector<char*> arguments;
+  std::filesystem::path report_path;
+  for (int k = 0; k < argc; ++k) {
+    const std::string_view argument = argv[k];
+    if (argument.starts_with(kReportFlag)) {
+      report_path = std::string(argument.substr(kReportFlag.size()));
+    } else {
+      arguments.push_back(argv[k]);
+    }
+  }
+  std::string repetitions = "--benchmark_repetitions=3";
+  if (!report_path.empty()) arguments.push_back(repetitions.data());
+  int count = static_cast<int>(arguments.size());
+  benchmark::Initialize(&count, arguments.data());
+  if (benchmark::ReportUnrecognizedArguments(count, arguments.data())) return 1;
+  CollectingReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  if (report_path.empty()) return 0;
+  std::filesystem::path png = report_path;
+  png.replace_filename(report_path.stem().string() + "-ordinates.png");
+  const std::string text = report(reporter, png);
+  std::ofstream file(report_path);
+  file << text;
+  if (!file.flush()) {
+    std::fprintf(stderr, "bench_core: cannot write %s\n", report_path.string().c_str());
+    return 1;
+  }
+  std::printf("wrote %s and %s\n", report_path.string().c_str(), png.string().c_str());
+  return 0;
+}
+
+}  // namespace skinlayer::bench
