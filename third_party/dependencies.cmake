@@ -3,7 +3,10 @@
 # CMakeLists.txt so that the imported targets are visible everywhere.
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 
-# Previewer and headless rendering (see ../shared/docs/platform-notes.md).
+# Previewer and headless rendering (see ../shared/docs/platform-notes.md): not looked for without the app.
+if(NOT SKINLAYER_BUILD_APP)
+  return()
+endif()
 find_package(PkgConfig REQUIRED)
 find_package(glfw3 3.3 REQUIRED)
 find_package(OpenGL REQUIRED)

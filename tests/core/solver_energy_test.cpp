@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <span>
 #include <vector>
 
 #include "core/conventions.h"
@@ -111,6 +114,92 @@ TEST(SolverEnergy, ExtremeValidParametersGiveFiniteNonNegativeConservingValues) 
       }
     }
   }
+}
+
+// The corners of the parameter table, together: sigma 0.05 | 1, g -0.95 | 0.95, T 0 | 1, Omega 0 | 1, eta 1 | 2.5
+// and bottom air | matched | lambert:1, in the combinations of the two tests below. Each case must give
+//   * directional_albedo: finite; R_sub, T and R_surface >= 0 up to round-off (1e-9); R + T <= 1 + 1e-3 (the
+//     solver's documented albedo accuracy).
+//   * solve(): the subsurface BRDF and the BTDF finite at every angle triple below; the BRDF >= 0 up to round-off;
+//     the BTDF >= -1e-3 of its table's scale (mode 0's largest coefficient). The BTDF is allowed that much because
+//     the Catmull-Rom tables undershoot beside a lobe narrower than a grid step: with no medium (T = 1) over a
+//     matched bottom the BTDF is the top interface's refraction lobe, and between grid nodes it dips below zero
+//     (at the angles here down to -2.4e-4 of the scale, for sigma 1, eta 2.5; on a fine grid down to -6% of the
+//     lobe's peak, for sigma 0.05, eta 2.5). At the grid nodes themselves it is >= 0 up to round-off.
+struct ExtremeCase {
+  const char* bottom;
+  double sigma, g, transparency, albedo, eta;
+};
+
+void expect_finite_non_negative_bounded(const ExtremeCase& c) {
+  Material m;
+  m.bottom = parse_bottom(c.bottom);
+  m.sigma = c.sigma;
+  m.g = c.g;
+  m.tau = optical_depth_from_transparency(c.transparency);
+  m.albedo = c.albedo;
+  m.eta = c.eta;
+  char name[128];
+  std::snprintf(name, sizeof name, "bottom %s sigma %g g %g T %g Omega %g eta %g", c.bottom, c.sigma, c.g,
+                c.transparency, c.albedo, c.eta);
+  SCOPED_TRACE(name);
+
+  for (const DirectionalAlbedo& row : directional_albedo(m, angles_degrees({0, 45, 80, 89.9}))) {
+    const double theta = radians_to_degrees(row.theta_i);
+    ASSERT_TRUE(std::isfinite(row.reflectance_surface) && std::isfinite(row.reflectance_subsurface) &&
+                std::isfinite(row.transmittance) && std::isfinite(row.absorptance) &&
+                std::isfinite(row.interface_loss))
+        << "theta_i " << theta;
+    EXPECT_GE(row.reflectance_surface, -1e-9) << "theta_i " << theta;
+    EXPECT_GE(row.reflectance_subsurface, -1e-9) << "theta_i " << theta;
+    EXPECT_GE(row.transmittance, -1e-9) << "theta_i " << theta;
+    EXPECT_LE(row.reflectance() + row.transmittance, 1.0 + 1e-3) << "theta_i " << theta;
+  }
+
+  const LayerTables tables = solve(m);
+  const int plane = tables.grid_size() * tables.grid_size();
+  const std::span<const double> mode0 = tables.transmission_coefficients().first(plane);
+  const double btdf_scale = std::abs(
+      *std::max_element(mode0.begin(), mode0.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }));
+  double lowest_btdf = 0.0;
+  for (const double ti : {0.0, 0.7, 1.2, 1.5, 0.5 * kPi}) {
+    for (const double to : {0.0, 0.45, 0.9, 1.3, 0.5 * kPi}) {
+      for (const double phi : {0.0, 1.0, 2.0, kPi}) {
+        const double f = tables.brdf_subsurface(ti, to, phi);
+        const double t = tables.btdf(ti, to, phi);
+        ASSERT_TRUE(std::isfinite(f) && std::isfinite(t)) << ti << " " << to << " " << phi;
+        EXPECT_GE(f, -1e-9 * (1.0 + std::abs(f))) << "brdf at " << ti << " " << to << " " << phi;
+        EXPECT_GE(t, -1e-3 * btdf_scale - 1e-12) << "btdf at " << ti << " " << to << " " << phi;
+        lowest_btdf = std::min(lowest_btdf, t);
+      }
+    }
+  }
+  std::printf("  %-56s %3d modes, lowest btdf %.2g of its scale %.3g\n", name, tables.modes(),
+              btdf_scale > 0.0 ? lowest_btdf / btdf_scale : 0.0, btdf_scale);
+}
+
+// Every pair of extremes occurs in at least one case (a pairwise covering array). T 0 with Omega 1 and eta 1 is the
+// slowest solve in the parameter table (over 200 Fourier modes), so it comes once.
+TEST(SolverEnergy, EveryPairOfExtremeParametersGivesFiniteNonNegativeBoundedValues) {
+  const ExtremeCase cases[] = {
+      {"matched", 0.05, 0.95, 1.0, 0.0, 2.5},   {"matched", 1.0, -0.95, 0.0, 1.0, 1.0},
+      {"lambert:1", 0.05, -0.95, 0.0, 0.0, 2.5}, {"lambert:1", 1.0, 0.95, 1.0, 1.0, 1.0},
+      {"air", 1.0, -0.95, 1.0, 0.0, 2.5},        {"air", 0.05, 0.95, 0.0, 0.0, 1.0},
+      {"air", 0.05, 0.95, 0.0, 1.0, 2.5},
+  };
+  for (const ExtremeCase& c : cases) expect_finite_non_negative_bounded(c);
+}
+
+// Extremes that act on each other: no medium between smooth high-index interfaces (two-sided, over a matched
+// half-space, on a white base), and a conservative half-space of backward or forward scattering.
+TEST(SolverEnergy, InteractingExtremeParametersGiveFiniteNonNegativeBoundedValues) {
+  const ExtremeCase cases[] = {
+      {"air", 0.05, -0.95, 1.0, 1.0, 2.5},
+      {"matched", 1.0, 0.95, 1.0, 0.0, 2.5},
+      {"lambert:1", 0.05, 0.95, 1.0, 1.0, 2.5},
+      {"matched", 1.0, -0.95, 0.0, 1.0, 2.5},
+  };
+  for (const ExtremeCase& c : cases) expect_finite_non_negative_bounded(c);
 }
 
 }  // namespace
