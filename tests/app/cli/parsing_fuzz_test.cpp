@@ -78,7 +78,9 @@ std::string escaped(const std::vector<std::string>& arguments) {
   return out + "]";
 }
 
-std::size_t below(Random& random, std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(random); }
+std::size_t below(Random& random, std::size_t n) {
+  return std::uniform_int_distribution<std::size_t>(0, n - 1)(random);
+}
 
 bool chance(Random& random, double p) { return std::bernoulli_distribution(p)(random); }
 
@@ -96,6 +98,7 @@ constexpr int kMaxFailures = 10;
 
 // Tokens at the edges of what a double and std::from_chars hold, and near misses of the number syntax.
 std::vector<std::string> extreme_numbers() {
+  // clang-format off
   std::vector<std::string> numbers = {
       "1e308", "1e309", "-1e309", "1.7976931348623157e308", "1.7976931348623159e308", "-1.7976931348623157e308",
       "4.9e-324", "2e-324", "1e-310", "1e-400", "-1e-400", "2.2250738585072014e-308", "0", "-0", "0.0", "-0.0",
@@ -103,19 +106,19 @@ std::vector<std::string> extreme_numbers() {
       "1e+", "1e-", "1E5", ".", "-", "+1", "+0", "", " ", "  ", "\t", "1,,2", "1 2", " 1", "1 ", "1\t", "1.5.5",
       "--1", ".5", "5.", "-.5", "90", "90.000000000000001", "90.00000000000002", "89.99999999999999", "-1e-300",
       "0e999999", "1e-999999", "1e999999", "0.05", "0.049999999999999996", "2.5", "2.5000000000000004", "0.95",
-      "-0.95", "0.9500000000000001", "4", "3.9999999999999996", "256", "256.00000000000006", "4.5", "1e0",
-  };
-  numbers.push_back(std::string(400, '9'));                       // 400 digits: overflows
-  numbers.push_back("0." + std::string(399, '0') + "1");          // 1e-400 written out: underflows
-  numbers.push_back(std::string(399, '0') + "1");                 // 400 digits with leading zeros: 1
-  numbers.push_back("1" + std::string(400, '0') + "e-400");       // 1 with 401 digits
-  numbers.push_back("0." + std::string(400, '3'));                // 400 significant digits, in range
-  numbers.push_back("-" + std::string(400, '1'));                 // 400 digits, negative: overflows
-  numbers.push_back(std::string(1, '\0'));                        // NUL
-  numbers.push_back(std::string("1\0", 2));                       // a number, then NUL
-  numbers.push_back(std::string("\0" "1", 2));                    // NUL, then a number
+      "-0.95", "0.9500000000000001", "4", "3.9999999999999996", "256", "256.00000000000006", "4.5", "1e0"};
+  // clang-format on
+  numbers.push_back(std::string(400, '9'));                  // 400 digits: overflows
+  numbers.push_back("0." + std::string(399, '0') + "1");     // 1e-400 written out: underflows
+  numbers.push_back(std::string(399, '0') + "1");            // 400 digits with leading zeros: 1
+  numbers.push_back("1" + std::string(400, '0') + "e-400");  // 1 with 401 digits
+  numbers.push_back("0." + std::string(400, '3'));           // 400 significant digits, in range
+  numbers.push_back("-" + std::string(400, '1'));            // 400 digits, negative: overflows
+  numbers.push_back(std::string(1, '\0'));                   // NUL
+  numbers.push_back(std::string("1\0", 2));                  // a number, then NUL
+  numbers.push_back(std::string(1, '\0') + "1");             // NUL, then a number
   numbers.push_back("\xff");
-  numbers.push_back("1\xc2\xa0");                                 // a number and a UTF-8 no-break space
+  numbers.push_back("1\xc2\xa0");  // a number and a UTF-8 no-break space
   return numbers;
 }
 
@@ -134,8 +137,8 @@ bool check_number_token(const std::string& token) {
     char* end = nullptr;
     const double reference = std::strtod(token.c_str(), &end);
     if (!std::isnan(*value)) {
-      const bool same = end == token.c_str() + token.size() && reference == *value &&
-                        std::signbit(reference) == std::signbit(*value);
+      const bool same =
+          end == token.c_str() + token.size() && reference == *value && std::signbit(reference) == std::signbit(*value);
       EXPECT_TRUE(same) << escaped(token) << ": parse_number " << format_number(*value) << ", strtod "
                         << format_number(reference);
       if (!same) return false;
@@ -143,9 +146,9 @@ bool check_number_token(const std::string& token) {
     // Both formatters read back as the same double.
     for (const std::string& text : {format_number(*value), format_shortest(*value)}) {
       const std::optional<double> again = parse_number(text);
-      const bool round_trip = again && (std::isnan(*value) ? std::isnan(*again)
-                                                           : *again == *value &&
-                                                                 std::signbit(*again) == std::signbit(*value));
+      const bool round_trip =
+          again &&
+          (std::isnan(*value) ? std::isnan(*again) : *again == *value && std::signbit(*again) == std::signbit(*value));
       EXPECT_TRUE(round_trip) << escaped(token) << " -> " << escaped(text) << " does not read back";
       if (!round_trip) return false;
     }
@@ -160,7 +163,8 @@ bool check_number_token(const std::string& token) {
     return true;
   }
   std::string lower = token;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+                 [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); });
   if (contains(lower, "0x")) return true;
   errno = 0;
   char* end = nullptr;
@@ -319,15 +323,15 @@ CsvCheck check_csv(const std::string& text) {
   if (outcome.rows) {
     const std::vector<AngleRow>& rows = *outcome.rows;
     // One row per line, after an optional header; every value is the number its field holds, in range.
-    const bool header = !rows.empty() && rows.size() + 1 == lines.size() &&
-                        without_blanks(without_cr(lines.front())) == kHeader;
+    const bool header =
+        !rows.empty() && rows.size() + 1 == lines.size() && without_blanks(without_cr(lines.front())) == kHeader;
     const bool counted = !rows.empty() && (rows.size() == lines.size() || header);
     EXPECT_TRUE(counted) << rows.size() << " rows from " << lines.size() << " lines of " << escaped(text);
     if (!counted) return CsvCheck::Failed;
     for (std::size_t r = 0; r < rows.size(); ++r) {
       const AngleRow& row = rows[r];
-      const bool in_range = row.theta_i >= 0.0 && row.theta_i <= 90.0 && row.theta_o >= 0.0 &&
-                            row.theta_o <= 90.0 && std::isfinite(row.phi);
+      const bool in_range = row.theta_i >= 0.0 && row.theta_i <= 90.0 && row.theta_o >= 0.0 && row.theta_o <= 90.0 &&
+                            std::isfinite(row.phi);
       EXPECT_TRUE(in_range) << "row " << r << " (" << row.theta_i << ", " << row.theta_o << ", " << row.phi
                             << ") out of range from " << escaped(text);
       if (!in_range) return CsvCheck::Failed;
@@ -353,11 +357,11 @@ CsvCheck check_csv(const std::string& text) {
   }
   unsigned long line_number = 0;
   int consumed = 0;
-  const bool names_line = std::sscanf(message.c_str(), "line %lu: %n", &line_number, &consumed) == 1 &&
-                          consumed > 0 && static_cast<std::size_t>(consumed) < message.size() && line_number >= 1 &&
+  const bool names_line = std::sscanf(message.c_str(), "line %lu: %n", &line_number, &consumed) == 1 && consumed > 0 &&
+                          static_cast<std::size_t>(consumed) < message.size() && line_number >= 1 &&
                           line_number <= lines.size();
-  EXPECT_TRUE(names_line) << "InputError \"" << escaped(message) << "\" names no line of the " << lines.size()
-                          << " in " << escaped(text);
+  EXPECT_TRUE(names_line) << "InputError \"" << escaped(message) << "\" names no line of the " << lines.size() << " in "
+                          << escaped(text);
   if (!names_line) return CsvCheck::Failed;
   // Rows are read in order: the first N lines fail alike, and the N - 1 before them have no malformed line.
   const CsvOutcome up_to = read_csv(first_lines(text, line_number));
@@ -381,8 +385,10 @@ std::string valid_csv(Random& random, std::vector<AngleRow>* rows_out) {
   };
   auto written = [&random](double value) -> std::string {
     switch (below(random, 3)) {
-      case 0: return format_shortest(value);
-      case 1: return format_number(value);
+      case 0:
+        return format_shortest(value);
+      case 1:
+        return format_number(value);
       default: {
         char buffer[64];
         std::snprintf(buffer, sizeof buffer, "%.3e", value);
@@ -392,18 +398,26 @@ std::string valid_csv(Random& random, std::vector<AngleRow>* rows_out) {
   };
   auto polar = [&random]() {
     switch (below(random, 6)) {
-      case 0: return 0.0;
-      case 1: return 90.0;
-      case 2: return -0.0;
-      default: return uniform(random, 0.0, 90.0);
+      case 0:
+        return 0.0;
+      case 1:
+        return 90.0;
+      case 2:
+        return -0.0;
+      default:
+        return uniform(random, 0.0, 90.0);
     }
   };
   auto azimuth = [&random]() {
     switch (below(random, 6)) {
-      case 0: return 1e308;
-      case 1: return -360.0;
-      case 2: return 4.9e-324;
-      default: return uniform(random, -1e4, 1e4);
+      case 0:
+        return 1e308;
+      case 1:
+        return -360.0;
+      case 2:
+        return 4.9e-324;
+      default:
+        return uniform(random, -1e4, 1e4);
     }
   };
   std::string text;
@@ -429,7 +443,7 @@ std::string valid_csv(Random& random, std::vector<AngleRow>* rows_out) {
 // 1 to 4 random edits: bits flipped, bytes replaced, inserted (often a separator or a NUL) or deleted, ranges
 // deleted or repeated.
 void mutate(Random& random, std::string& text) {
-  const std::string specials = std::string(",\n\r\t .-e+") + std::string(1, '\0') + "\xff" "n" "i";
+  const std::string specials = std::string(",\n\r\t .-e+") + std::string(1, '\0') + "\xffni";
   const std::size_t edits = chance(random, 0.5) ? 1 : 1 + below(random, 4);
   for (std::size_t e = 0; e < edits; ++e) {
     const std::size_t at = text.empty() ? 0 : below(random, text.size());
@@ -440,8 +454,12 @@ void mutate(Random& random, std::string& text) {
       case 1:
         if (!text.empty()) text[at] = static_cast<char>(below(random, 256));
         break;
-      case 2: text.insert(at, 1, specials[below(random, specials.size())]); break;
-      case 3: text.insert(at, 1, static_cast<char>(below(random, 256))); break;
+      case 2:
+        text.insert(at, 1, specials[below(random, specials.size())]);
+        break;
+      case 3:
+        text.insert(at, 1, static_cast<char>(below(random, 256)));
+        break;
       case 4:
         if (!text.empty()) text.erase(at, 1 + below(random, 4));
         break;
@@ -459,11 +477,11 @@ TEST(ParsingFuzz, CsvValidTablesReadExactly) {
     std::vector<AngleRow> expected;
     const std::string text = valid_csv(random, &expected);
     const CsvOutcome outcome = read_csv(text);
-    const bool ok = outcome.rows && outcome.rows->size() == expected.size() &&
-                    std::equal(expected.begin(), expected.end(), outcome.rows->begin(),
-                               [](const AngleRow& a, const AngleRow& b) {
-                                 return a.theta_i == b.theta_i && a.theta_o == b.theta_o && a.phi == b.phi;
-                               });
+    const bool ok =
+        outcome.rows && outcome.rows->size() == expected.size() &&
+        std::equal(expected.begin(), expected.end(), outcome.rows->begin(), [](const AngleRow& a, const AngleRow& b) {
+          return a.theta_i == b.theta_i && a.theta_o == b.theta_o && a.phi == b.phi;
+        });
     EXPECT_TRUE(ok) << escaped(text) << ": " << outcome.error;
     if (!ok || check_csv(text) == CsvCheck::Failed) ++failures;
   }
@@ -488,8 +506,9 @@ TEST(ParsingFuzz, CsvMutatedTablesReadOrFailNamingTheLine) {
 TEST(ParsingFuzz, CsvRandomBytesReadOrFailNamingTheLine) {
   Random random(0x5eed0004);
   const std::vector<std::string> extremes = extreme_numbers();
-  const std::vector<std::string> pieces = {",", "\n", "\r\n", "\r", " ", "\t", std::string(1, '\0'), std::string(kHeader),
-                                           "30", "90", "-1", "1e1", "theta_i"};
+  const std::vector<std::string> pieces = {
+      ",",  "\n", "\r\n", "\r",  " ",      "\t", std::string(1, '\0'), std::string(kHeader),
+      "30", "90", "-1",   "1e1", "theta_i"};
   int failures = 0, read = 0;
   for (int trial = 0; trial < 6000 && failures < kMaxFailures; ++trial) {
     std::string text;
@@ -506,10 +525,18 @@ TEST(ParsingFuzz, CsvRandomBytesReadOrFailNamingTheLine) {
       const std::size_t parts = below(random, 24);
       for (std::size_t p = 0; p < parts; ++p) {
         switch (below(random, 4)) {
-          case 0: text += static_cast<char>(below(random, 256)); break;
-          case 1: text += pick(random, pieces); break;
-          case 2: text += pick(random, extremes); break;
-          default: text += "0123456789.-e,"[below(random, 14)]; break;
+          case 0:
+            text += static_cast<char>(below(random, 256));
+            break;
+          case 1:
+            text += pick(random, pieces);
+            break;
+          case 2:
+            text += pick(random, extremes);
+            break;
+          default:
+            text += "0123456789.-e,"[below(random, 14)];
+            break;
         }
       }
     }
@@ -532,15 +559,13 @@ TEST(ParsingFuzz, CsvExtremeNumbersInEveryColumn) {
       const std::optional<double> value = parse_number(trimmed(token));
       // A token holding a comma, or a line end, is not one field; check_csv covers it.
       const bool one_field = token.find_first_of(",\n") == std::string::npos;
-      const bool valid = one_field && value &&
-                         (column == 2 ? std::isfinite(*value) : *value >= 0.0 && *value <= 90.0);
+      const bool valid = one_field && value && (column == 2 ? std::isfinite(*value) : *value >= 0.0 && *value <= 90.0);
       const CsvOutcome outcome = read_csv(text);
       EXPECT_NE(check_csv(text), CsvCheck::Failed);
       if (!one_field) continue;
       if (valid) {
         ASSERT_TRUE(outcome.rows) << escaped(text) << ": " << outcome.error;
-        const double read[] = {outcome.rows->front().theta_i, outcome.rows->front().theta_o,
-                               outcome.rows->front().phi};
+        const double read[] = {outcome.rows->front().theta_i, outcome.rows->front().theta_o, outcome.rows->front().phi};
         EXPECT_EQ(read[column], *value) << escaped(text);
       } else {
         EXPECT_TRUE(outcome.error.starts_with(std::string("line 2: ") + columns[column] + " = "))
@@ -553,15 +578,15 @@ TEST(ParsingFuzz, CsvExtremeNumbersInEveryColumn) {
 TEST(ParsingFuzz, CsvVeryLongLines) {
   const std::size_t kLong = 200000;
   const std::vector<std::string> inputs = {
-      "1" + std::string(kLong, '0') + ",0,0\n",             // a 200001-digit theta_i: overflows
-      "0." + std::string(kLong, '0') + "1,0,0\n",           // underflows
-      "0." + std::string(kLong, '3') + ",0,0\n",            // in range, 200000 digits
-      "30,30," + std::string(kLong, '9') + "\n",            // phi overflows
-      std::string(kLong, ',') + "\n",                       // 200001 empty fields
+      "1" + std::string(kLong, '0') + ",0,0\n",                               // a 200001-digit theta_i: overflows
+      "0." + std::string(kLong, '0') + "1,0,0\n",                             // underflows
+      "0." + std::string(kLong, '3') + ",0,0\n",                              // in range, 200000 digits
+      "30,30," + std::string(kLong, '9') + "\n",                              // phi overflows
+      std::string(kLong, ',') + "\n",                                         // 200001 empty fields
       std::string(kLong, ' ') + "30" + std::string(kLong, '\t') + ",30,0\n",  // blanks around a field
-      std::string(kLong, ' ') + "\n30,30,0\n",               // a long blank line
-      "30,30,0\n" + std::string(kLong, '\0') + "\n",         // a line of NULs
-      std::string(kLong, '\n'),                              // many blank lines
+      std::string(kLong, ' ') + "\n30,30,0\n",                                // a long blank line
+      "30,30,0\n" + std::string(kLong, '\0') + "\n",                          // a line of NULs
+      std::string(kLong, '\n'),                                               // many blank lines
       "theta_i,theta_o,phi" + std::string(kLong, '\r') + "\n30,30,0\n",
   };
   for (const std::string& text : inputs) {
@@ -658,8 +683,8 @@ std::optional<ParsedFlags> check_parse(const std::vector<std::string>& arguments
                                        const std::vector<std::string_view>& switches, bool& failed) {
   const std::vector<std::string_view> views(arguments.begin(), arguments.end());
   const ExpectedFlags expected = expected_flags(arguments, known, switches);
-  const bool help = std::any_of(arguments.begin(), arguments.end(),
-                                [](const std::string& a) { return a == "--help" || a == "-h"; });
+  const bool help =
+      std::any_of(arguments.begin(), arguments.end(), [](const std::string& a) { return a == "--help" || a == "-h"; });
   if (wants_help(views) != help) {
     ADD_FAILURE() << "wants_help is " << !help << " for " << escaped(arguments);
     failed = true;
@@ -713,20 +738,56 @@ TEST(ParsingFuzz, FlagParserRandomArguments) {
   const std::vector<std::string_view> with_output = {"alpha", "beta", "output", "g", "bottom-sigma"};
   const std::vector<std::string_view> without_output = {"alpha", "beta", "g"};
   const std::vector<std::string_view> switches = {"quick", "verbose"};
-  const std::vector<std::string> tokens = {
-      "--alpha", "--beta", "--output", "--g", "--bottom-sigma", "-o", "--alpha=", "--alpha=1", "--alpha==",
-      "--quick", "--quick", "--verbose", "--quick=", "--quick=1", "--verbose=--quick",
-      "--beta=--alpha", "--", "---", "--=", "--=1", "-h", "--help", "-", "", "value", "1", "-1", "--unknown",
-      "--Alpha", "--alpha ", std::string("--alpha\0x", 9), "-o=x", "--o", "--output=-o", "--g=\xff", std::string("--g\0", 4),
-  };
+  const std::vector<std::string> tokens = {"--alpha",
+                                           "--beta",
+                                           "--output",
+                                           "--g",
+                                           "--bottom-sigma",
+                                           "-o",
+                                           "--alpha=",
+                                           "--alpha=1",
+                                           "--alpha==",
+                                           "--quick",
+                                           "--quick",
+                                           "--verbose",
+                                           "--quick=",
+                                           "--quick=1",
+                                           "--verbose=--quick",
+                                           "--beta=--alpha",
+                                           "--",
+                                           "---",
+                                           "--=",
+                                           "--=1",
+                                           "-h",
+                                           "--help",
+                                           "-",
+                                           "",
+                                           "value",
+                                           "1",
+                                           "-1",
+                                           "--unknown",
+                                           "--Alpha",
+                                           "--alpha ",
+                                           std::string("--alpha\0x", 9),
+                                           "-o=x",
+                                           "--o",
+                                           "--output=-o",
+                                           "--g=\xff",
+                                           std::string("--g\0", 4)};
   int failures = 0;
   for (int trial = 0; trial < 20000 && failures < kMaxFailures; ++trial) {
     std::vector<std::string> arguments(below(random, 9));
     for (std::string& argument : arguments) {
       switch (below(random, 5)) {
-        case 0: argument = random_bytes(random, 12); break;
-        case 1: argument = "--" + random_bytes(random, 8); break;
-        default: argument = pick(random, tokens); break;
+        case 0:
+          argument = random_bytes(random, 12);
+          break;
+        case 1:
+          argument = "--" + random_bytes(random, 8);
+          break;
+        default:
+          argument = pick(random, tokens);
+          break;
       }
     }
     bool failed = false;
@@ -745,10 +806,12 @@ std::string random_value(Random& random, std::string_view flag, const std::vecto
   if (chance(random, 0.15)) return pick(random, extremes);
   if (chance(random, 0.05)) return random_bytes(random, 10);
   if (flag == "bottom") {
-    static const std::vector<std::string> bottoms = {
-        "air", "matched", "lambert:0", "lambert:1", "lambert:0.5", "lambert:", "lambert:nan", "lambert:-0",
-        "lambert:1e309", "lambert:+1", "lambert: 1", "lambert:1.5", "Lambert:1", "air ", "", "lambert:0x1",
-        "lambert:1e-400", std::string("matched\0", 8)};
+    static const std::vector<std::string> bottoms = {"air",         "matched",        "lambert:0",
+                                                     "lambert:1",   "lambert:0.5",    "lambert:",
+                                                     "lambert:nan", "lambert:-0",     "lambert:1e309",
+                                                     "lambert:+1",  "lambert: 1",     "lambert:1.5",
+                                                     "Lambert:1",   "air ",           "",
+                                                     "lambert:0x1", "lambert:1e-400", std::string("matched\0", 8)};
     return pick(random, bottoms);
   }
   if (flag == "model") {
@@ -756,8 +819,8 @@ std::string random_value(Random& random, std::string_view flag, const std::vecto
     return pick(random, models);
   }
   if (flag == "ordinates") {
-    static const std::vector<std::string> ordinates = {"4", "256", "16", "3", "257", "4.5", "8.0", "1e2", "-4",
-                                                       "2147483648", "nan", "inf"};
+    static const std::vector<std::string> ordinates = {"4",   "256", "16", "3",          "257", "4.5",
+                                                       "8.0", "1e2", "-4", "2147483648", "nan", "inf"};
     return pick(random, ordinates);
   }
   if (std::find(std::begin(kNumericFlags), std::end(kNumericFlags), flag) == std::end(kNumericFlags)) {
@@ -767,10 +830,18 @@ std::string random_value(Random& random, std::string_view flag, const std::vecto
   const double hi = std::isfinite(info.max) ? info.max : 50.0;
   double value = 0.0;
   switch (below(random, 5)) {
-    case 0: value = info.min; break;
-    case 1: value = info.max; break;
-    case 2: value = std::nextafter(chance(random, 0.5) ? info.min : hi, chance(random, 0.5) ? -1e9 : 1e9); break;
-    default: value = uniform(random, info.min, hi); break;
+    case 0:
+      value = info.min;
+      break;
+    case 1:
+      value = info.max;
+      break;
+    case 2:
+      value = std::nextafter(chance(random, 0.5) ? info.min : hi, chance(random, 0.5) ? -1e9 : 1e9);
+      break;
+    default:
+      value = uniform(random, info.min, hi);
+      break;
   }
   return chance(random, 0.5) ? format_shortest(value) : format_number(value);
 }
@@ -856,13 +927,13 @@ MaterialOutcome check_material(const ParsedFlags& flags, const std::vector<std::
                           : bottom == "matched" ? BottomKind::Matched
                                                 : BottomKind::Lambert;
   const bool bottom_ok =
-      m.bottom.kind == kind && (kind != BottomKind::Lambert ||
-                                (bottom.starts_with("lambert:") &&
-                                 m.bottom.lambert_albedo == *parse_number(std::string_view(bottom).substr(8))));
-  const bool bottom_optionals_ok =
-      m.bottom.sigma.has_value() == flags.has("bottom-sigma") && m.bottom.eta.has_value() == flags.has("bottom-eta") &&
-      (!m.bottom.sigma || *m.bottom.sigma == number("bottom-sigma")) &&
-      (!m.bottom.eta || *m.bottom.eta == number("bottom-eta"));
+      m.bottom.kind == kind &&
+      (kind != BottomKind::Lambert || (bottom.starts_with("lambert:") &&
+                                       m.bottom.lambert_albedo == *parse_number(std::string_view(bottom).substr(8))));
+  const bool bottom_optionals_ok = m.bottom.sigma.has_value() == flags.has("bottom-sigma") &&
+                                   m.bottom.eta.has_value() == flags.has("bottom-eta") &&
+                                   (!m.bottom.sigma || *m.bottom.sigma == number("bottom-sigma")) &&
+                                   (!m.bottom.eta || *m.bottom.eta == number("bottom-eta"));
   const bool ordinates_ok = m.ordinates.has_value() == flags.has("ordinates") &&
                             (!m.ordinates || *m.ordinates == static_cast<int>(number("ordinates")));
   if (!bottom_ok || !bottom_optionals_ok || !ordinates_ok) {
@@ -910,9 +981,19 @@ TEST(ParsingFuzz, MaterialAndModelFlagsRandomArguments) {
       const std::string& name = chance(random, 0.9) ? names[below(random, known.size())] : pick(random, names);
       const std::string value = random_value(random, name, extremes);
       switch (below(random, 20)) {
-        case 0: arguments.push_back("--" + name); break;                     // no value
-        case 1: arguments.push_back(random_bytes(random, 6)); break;          // junk
-        case 2: case 3: case 4: case 5: case 6: arguments.push_back("--" + name + "=" + value); break;
+        case 0:
+          arguments.push_back("--" + name);
+          break;  // no value
+        case 1:
+          arguments.push_back(random_bytes(random, 6));
+          break;  // junk
+        case 2:
+        case 3:
+        case 4:
+        case 5:
+        case 6:
+          arguments.push_back("--" + name + "=" + value);
+          break;
         default:
           arguments.push_back("--" + name);
           arguments.push_back(value);
