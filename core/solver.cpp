@@ -76,24 +76,29 @@ FourierKernel transmission_by_reciprocity(const FourierKernel& air_to_layer, dou
   return layer_to_air;
 }
 
-enum class Side { Reflected, Transmitted };
-
-// The accurate reflectance or transmittance (interface_albedo) of an interface for light arriving along each cosine,
-// with the direction back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame. That frame has
-// +z up: into the air for the top (light from the air: z_sign +1; from inside the layer: -1) and into the layer for
-// the bottom (light from inside the layer: +1).
-std::vector<double> interface_fractions(const RoughDielectric& interface, std::span<const double> cosines,
-                                        double z_sign, Side side) {
+// The accurate albedos (interface_albedo) of an interface for light arriving along each cosine, with the direction
+// back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame. That frame has +z up: into the
+// air for the top (light from the air: z_sign +1; from inside the layer: -1) and into the layer for the bottom (light
+// from inside the layer: +1).
+std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
+                                                     double z_sign) {
   std::vector<Vec3> toward_light;
   toward_light.reserve(cosines.size());
   for (const double mu : cosines) {
     toward_light.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, z_sign * std::abs(mu));
   }
+  return interface_albedo(interface, toward_light);
+}
+
+std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos) {
   std::vector<double> result;
-  result.reserve(cosines.size());
-  for (const InterfaceAlbedo& albedo : interface_albedo(interface, toward_light)) {
-    result.push_back(side == Side::Reflected ? albedo.reflectance : albedo.transmittance);
-  }
+  for (const InterfaceAlbedo& a : albedos) result.push_back(a.reflectance);
+  return result;
+}
+
+std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos) {
+  std::vector<double> result;
+  for (const InterfaceAlbedo& a : albedos) result.push_back(a.transmittance);
   return result;
 }
 
@@ -115,6 +120,10 @@ class LayerSolver {
 
   const QuadratureRule& quadrature() const { return quadrature_; }
   const Geometry& geometry() const { return geometry_; }
+  // Per node, the albedos of the top interface for light travelling up to it and of the bottom interface for light
+  // travelling down to it (R = 0, T = 1 where there is no interface): the energy targets of R21 and R23.
+  const std::vector<InterfaceAlbedo>& top_inside() const { return top_inside_; }
+  const std::vector<InterfaceAlbedo>& bottom_inside() const { return bottom_inside_; }
 
  private:
   Eigen::MatrixXd lambert_reflection() const;
@@ -123,6 +132,7 @@ class LayerSolver {
   double tau_;
   double lambert_;
   QuadratureRule quadrature_;
+  std::vector<InterfaceAlbedo> top_inside_, bottom_inside_;
   std::vector<double> mu_in_, mu_out_;
   Eigen::VectorXd beam_attenuation_;  // e^{-tau/mu0} per incident direction
   Eigen::VectorXd beam_flux_;         // F = 1/mu0 (so that E_perp mu0 = 1: values are BSDFs)
@@ -139,6 +149,8 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
       tau_(material.tau),
       lambert_(material.bottom.lambert_albedo),
       quadrature_(double_gauss_half_range(resolution.ordinates)),
+      top_inside_(quadrature_.size(), InterfaceAlbedo{0.0, 1.0}),
+      bottom_inside_(quadrature_.size(), InterfaceAlbedo{0.0, 1.0}),
       mu_in_(mu_in.begin(), mu_in.end()),
       mu_out_(mu_out.begin(), mu_out.end()),
       want_exit_(!mu_out.empty()) {
@@ -160,10 +172,11 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
   phase_ = henyey_greenstein_matrices(material.g, up, weights, phase);
   if (!geometry_.top_open) {
     r_top_ = interface_fourier(geometry_.top, up, down, surface);
-    match_reflection_energy(r_top_, up, weights, interface_fractions(geometry_.top, up, -1.0, Side::Reflected));
+    top_inside_ = interface_albedos_along(geometry_.top, up, -1.0);
+    match_reflection_energy(r_top_, up, weights, reflectances(top_inside_));
     apply_quadrature_weights(r_top_, up, weights);
     t_source_ = interface_fourier(geometry_.top, down_in, down, surface);
-    match_column_energy(t_source_, up, weights, interface_fractions(geometry_.top, mu_in_, 1.0, Side::Transmitted));
+    match_column_energy(t_source_, up, weights, transmittances(interface_albedos_along(geometry_.top, mu_in_, 1.0)));
     if (want_exit_) {
       // By reciprocity the exit operator inherits the energy matching of the source columns, row by row.
       t_exit_ = transmission_by_reciprocity(t_source_, material.eta);
@@ -190,9 +203,11 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
     if (geometry_.bottom_mirrors_top && !geometry_.top_open) {
       r_bottom_ = r_top_;
       t_bottom_exit_ = t_exit_;
+      bottom_inside_ = top_inside_;
     } else {
       r_bottom_ = interface_fourier(geometry_.bottom, down, up, surface);
-      match_reflection_energy(r_bottom_, up, weights, interface_fractions(geometry_.bottom, up, 1.0, Side::Reflected));
+      bottom_inside_ = interface_albedos_along(geometry_.bottom, up, 1.0);
+      match_reflection_energy(r_bottom_, up, weights, reflectances(bottom_inside_));
       apply_quadrature_weights(r_bottom_, up, weights);
       if (want_exit_) {
         t_bottom_exit_ = interface_fourier(geometry_.bottom, down, down_out, surface);
@@ -202,7 +217,7 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
     if (geometry_.top_open) {
       s_bottom_beam_ = interface_fourier(geometry_.bottom, down_in, up, surface);
       match_column_energy(s_bottom_beam_, up, weights,
-                          interface_fractions(geometry_.bottom, mu_in_, 1.0, Side::Reflected));
+                          reflectances(interface_albedos_along(geometry_.bottom, mu_in_, 1.0)));
       if (want_exit_) {
         t_bottom_beam_ = interface_fourier(geometry_.bottom, down_in, down_out, surface);
         r_bottom_rows_ = interface_fourier(geometry_.bottom, down, mu_out_, surface);
@@ -481,17 +496,8 @@ std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& m
   const QuadratureRule& q = solver.quadrature();
 
   // Energy transmittance of each interface from inside, per node: light travelling up (top) or down (bottom).
-  std::vector<InterfaceAlbedo> top_inside(q.size(), {0.0, 1.0}), bottom_inside(q.size(), {0.0, 1.0});
-  for (int j = 0; j < q.size(); ++j) {
-    const double mu = q.nodes[j];
-    const double sin_theta = std::sqrt(1.0 - mu * mu);
-    if (!geometry.top_open) top_inside[j] = interface_albedo(geometry.top, Vec3(sin_theta, 0.0, -mu));
-    if (geometry.base == Base::Rough) {
-      bottom_inside[j] = geometry.bottom_mirrors_top && !geometry.top_open
-                             ? top_inside[j]
-                             : interface_albedo(geometry.bottom, Vec3(sin_theta, 0.0, mu));
-    }
-  }
+  const std::vector<InterfaceAlbedo>& top_inside = solver.top_inside();
+  const std::vector<InterfaceAlbedo>& bottom_inside = solver.bottom_inside();
   const bool direct_path = geometry.top_open && !std::isinf(material.tau);
   std::vector<std::vector<DirectionalAlbedo>> result;
   for (const double albedo : albedos) {
