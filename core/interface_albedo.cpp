@@ -1,6 +1,8 @@
 #include "core/interface_albedo.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "core/conventions.h"
 #include "core/fresnel.h"
@@ -36,7 +38,28 @@ SlopeGrid slope_grid(double sigma, int radial_nodes, int azimuth_nodes) {
   return grid;
 }
 
-InterfaceAlbedo integrate(const RoughDielectric& interface, const Vec3& wi, const SlopeGrid& grid) {
+// The exact Smith G1 (microfacet.h) of one sigma, tabulated at 4097 cosines uniform in [0, 1] and read back by
+// linear interpolation: |error| <= h^2/8 max|G1''| ~ 1e-6 at sigma 0.05 (G1 bends over dc ~ sigma), under 1e-8 at
+// sigma >= 0.5. Two G1 per slope sample were 2/3 of the integration's cost (erf and exp, ~20 ns each).
+class SmithG1Table {
+ public:
+  explicit SmithG1Table(double sigma) : values_(kSize) {
+    for (int i = 0; i < kSize; ++i) values_[i] = smith_g1_beckmann(static_cast<double>(i) / (kSize - 1), sigma);
+  }
+  double operator()(double cos_theta) const {
+    const double x = std::min(std::abs(cos_theta), 1.0) * (kSize - 1);
+    const int i = std::min(static_cast<int>(x), kSize - 2);
+    const double t = x - i;
+    return values_[i] + t * (values_[i + 1] - values_[i]);
+  }
+
+ private:
+  static constexpr int kSize = 4097;
+  std::vector<double> values_;
+};
+
+InterfaceAlbedo integrate(const RoughDielectric& interface, const Vec3& wi, const SlopeGrid& grid,
+                          const SmithG1Table& smith_g1) {
   if (interface.eta == 1.0) return {0.0, 1.0};
   const double side = wi.z() > 0.0 ? 1.0 : -1.0;
   const double eta_t = side > 0.0 ? interface.eta : 1.0 / interface.eta;
@@ -45,7 +68,7 @@ InterfaceAlbedo integrate(const RoughDielectric& interface, const Vec3& wi, cons
   const double azimuth_of_wi = std::atan2(wi.y(), wi.x());
   const double cos_wi = std::cos(azimuth_of_wi), sin_wi = std::sin(azimuth_of_wi);
   const double sigma = interface.sigma;
-  const double g1_in = smith_g1_beckmann(wi.z(), sigma);
+  const double g1_in = smith_g1_beckmann(wi.z(), sigma);  // exact: once per direction
   double reflectance = 0.0;
   double transmittance = 0.0;
   for (std::size_t a = 0; a < grid.slope.size(); ++a) {
@@ -62,13 +85,13 @@ InterfaceAlbedo integrate(const RoughDielectric& interface, const Vec3& wi, cons
       const double fresnel = fresnel_dielectric(cos_i, eta_t);
       // Reflection: wo = 2 (wi.h) h - wi must leave on wi's side and see the front of h.
       const Vec3 wo_r = 2.0 * cos_i * h - wi;
-      if (wo_r.z() * side > 0.0) reflectance += fresnel * smith_g1_beckmann(wo_r.z(), sigma) * common;
+      if (wo_r.z() * side > 0.0) reflectance += fresnel * smith_g1(wo_r.z()) * common;
       // Refraction (Snell at the facet).
       const double sin2_t = (1.0 - cos_i * cos_i) / (eta_t * eta_t);
       if (sin2_t < 1.0 && fresnel < 1.0) {
         const double cos_t = std::sqrt(1.0 - sin2_t);
         const Vec3 wo_t = -wi / eta_t + (cos_i / eta_t - cos_t) * h;
-        if (wo_t.z() * side < 0.0) transmittance += (1.0 - fresnel) * smith_g1_beckmann(wo_t.z(), sigma) * common;
+        if (wo_t.z() * side < 0.0) transmittance += (1.0 - fresnel) * smith_g1(wo_t.z()) * common;
       }
     }
   }
@@ -87,7 +110,8 @@ std::vector<InterfaceAlbedo> interface_albedo(const RoughDielectric& interface, 
   const SlopeGrid grid = slope_grid(interface.sigma, radial_nodes, azimuth_nodes);
   std::vector<InterfaceAlbedo> result;
   result.reserve(wi.size());
-  for (const Vec3& w : wi) result.push_back(integrate(interface, w, grid));
+  const SmithG1Table smith_g1(interface.sigma);
+  for (const Vec3& w : wi) result.push_back(integrate(interface, w, grid, smith_g1));
   return result;
 }
 
