@@ -14,6 +14,7 @@
 #include "app/cli/quoted.h"
 #include "app/cli/render_command.h"
 #include "app/cli/validate_command.h"
+#include "app/process/heap_retention.h"
 
 namespace {
 
@@ -38,6 +39,7 @@ int dispatch(std::span<const std::string_view> arguments, int argc, char** argv)
 }  // namespace
 
 int main(int argc, char** argv) {
+  skinlayer::retain_freed_heap_memory();
   const std::vector<std::string_view> arguments(argv + 1, argv + argc);
   return skinlayer::cli::run_reporting_errors(std::cerr,
                                              [&arguments, argc, argv] { return dispatch(arguments, argc, argv); });

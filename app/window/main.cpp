@@ -6,10 +6,12 @@
 
 #include "app/cli/error_report.h"
 #include "app/cli/errors.h"
+#include "app/process/heap_retention.h"
 #include "app/window/previewer.h"
 #include "app/window/window_options.h"
 
 int main(int argc, char** argv) {
+  skinlayer::retain_freed_heap_memory();
   const std::vector<std::string_view> arguments(argv + 1, argv + argc);
   return skinlayer::cli::run_reporting_errors(std::cerr, [&arguments] {
     const skinlayer::WindowOptions options = skinlayer::parse_window_options(arguments);

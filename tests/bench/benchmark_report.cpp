@@ -16,6 +16,7 @@
 
 #include "app/figures/font.h"
 #include "app/figures/xy_plot.h"
+#include "app/process/heap_retention.h"
 #include "app/render/png_export.h"
 #include "core/conventions.h"
 #include "core/reference/monte_carlo.h"
@@ -134,7 +135,10 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
   std::ostringstream md;
   md << "# Benchmarks\n\n"
      << "Regenerate with `cmake --build build --target benchmarks-doc` (runs `build/tests/bench/bench_core "
-        "--report=docs/benchmarks.md`; Release build, medians of 3 repetitions). Solver: one channel, one thread.\n\n"
+        "--report=docs/benchmarks.md`; Release build, medians of 3 repetitions). Solver: one channel, one thread. "
+        "The process keeps freed heap memory mapped, as the executables do (app/process/heap_retention.h); with "
+        "glibc's default trimming every solve faults its ~1.4 MB of tables and scratch in anew, which on this "
+        "VM adds ~4 ms to the default solve.\n\n"
      << formatted("Machine: %s, %u logical cores; compiler %s.\n\n", cpu_model().c_str(),
                   std::thread::hardware_concurrency(), __VERSION__);
 
@@ -259,6 +263,7 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
 }  // namespace
 
 int run_benchmarks_with_report(int argc, char** argv) {
+  retain_freed_heap_memory();  // as the executables do
   std::vector<char*> arguments;
   std::filesystem::path report_path;
   for (int k = 0; k < argc; ++k) {
