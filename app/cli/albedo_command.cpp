@@ -28,8 +28,7 @@ std::vector<double> parse_theta_list(std::string_view list) {
     const std::string_view item = list.substr(0, comma);
     const std::optional<double> value = parse_number(item);
     if (!value) {
-      throw UsageError(std::string(kThetaFlag) + " = " + quoted(item) +
-                       " is not a number; give a comma-separated list of angles in [0, 90] degrees, as in "
+      throw UsageError(std::string(kThetaFlag) + " = " + quoted(item) + " " + number_rejection(item) + "; give a comma-separated list of angles in [0, 90] degrees, as in "
                        "--theta-i 0,30,60,80");
     }
     if (!(*value >= 0.0 && *value <= 90.0)) {

@@ -49,7 +49,7 @@ double parse_angle(std::string_view field, std::size_t column, std::size_t line_
   const std::string name(kColumnNames[column]);
   const std::optional<double> value = parse_number(field);
   if (!value) {
-    throw InputError(at_line(line_number) + name + " = " + quoted(field) + " is not a number");
+    throw InputError(at_line(line_number) + name + " = " + quoted(field) + " " + number_rejection(field));
   }
   const bool is_polar = column < 2;
   if (is_polar && !(*value >= 0.0 && *value <= kMaxPolarDegrees)) {

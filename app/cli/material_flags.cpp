@@ -33,7 +33,7 @@ std::optional<double> checked_number(const ParsedFlags& flags, std::string_view 
   const ParameterInfo& info = parameter_info(name);
   const std::optional<double> value = parse_number(*text);
   if (!value) {
-    throw UsageError(std::string(name) + " = " + quoted(*text) + " is not a number; valid range is " +
+    throw UsageError(std::string(name) + " = " + quoted(*text) + " " + number_rejection(*text) + "; valid range is " +
                      range_text(info) + " (" + std::string(info.description) + ")");
   }
   check_parameter(info, *value);

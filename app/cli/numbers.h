@@ -9,8 +9,14 @@ namespace skinlayer::cli {
 
 // Parses the whole token as a double with std::from_chars (general format): no leading '+', no surrounding
 // whitespace, no trailing characters. "nan" and "inf" (any case) are accepted here; callers decide whether a
-// non-finite value is allowed. Returns nullopt for anything else, including values that overflow a double.
+// non-finite value is allowed. Returns nullopt for anything else, including well-formed numbers whose magnitude a
+// double cannot hold: above 1.8e308 (overflow) or nonzero below 4.9e-324 (underflow).
 std::optional<double> parse_number(std::string_view token);
+
+// Why parse_number rejects a token, as the end of an error message ("sigma = '1e-400' " + this): "is not a number",
+// or for a well-formed number out of a double's range "is too large for a double (magnitude above 1.8e308)" or
+// "is too small for a double (nonzero magnitude below 4.9e-324)".
+std::string number_rejection(std::string_view token);
 
 // Formats a value with printf "%.17g": enough digits to read back the same double.
 std::string format_number(double value);

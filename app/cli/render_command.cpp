@@ -52,7 +52,7 @@ std::array<double, 3> parse_albedo(std::string_view text) {
   for (std::size_t c = 0; c < 3; ++c) {
     const std::string_view part = parts[parts.size() == 1 ? 0 : c];
     const std::optional<double> value = parse_number(part);
-    if (!value) throw UsageError("albedo = " + quoted(text) + ": " + quoted(part) + " is not a number");
+    if (!value) throw UsageError("albedo = " + quoted(text) + ": " + quoted(part) + " " + number_rejection(part));
     check_parameter(parameter_info("albedo"), *value);
     rgb[c] = *value;
   }
