@@ -19,7 +19,6 @@ namespace {
 constexpr std::string_view kThetaFlag = "theta-i";
 constexpr std::string_view kDefaultThetas = "0,30,60,80";
 
-
 // The comma-separated list of incidence angles in degrees, each a number in [0, 90].
 std::vector<double> parse_theta_list(std::string_view list) {
   std::vector<double> thetas;
@@ -28,7 +27,8 @@ std::vector<double> parse_theta_list(std::string_view list) {
     const std::string_view item = list.substr(0, comma);
     const std::optional<double> value = parse_number(item);
     if (!value) {
-      throw UsageError(std::string(kThetaFlag) + " = " + quoted(item) + " " + number_rejection(item) + "; give a comma-separated list of angles in [0, 90] degrees, as in "
+      throw UsageError(std::string(kThetaFlag) + " = " + quoted(item) + " " + number_rejection(item) +
+                       "; give a comma-separated list of angles in [0, 90] degrees, as in "
                        "--theta-i 0,30,60,80");
     }
     if (!(*value >= 0.0 && *value <= 90.0)) {

@@ -23,7 +23,6 @@ namespace {
 
 constexpr int kMaxSide = 8192;
 
-
 double number_in(const ParsedFlags& flags, std::string_view name, double fallback, double low, double high,
                  std::string_view unit) {
   const std::optional<std::string_view> text = flags.value(name);
@@ -122,8 +121,8 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
       rewritten.push_back(argument);
     }
   }
-  const std::vector<std::string_view> known = material_flags_and(
-      {kModelFlag, "light-theta", "light-phi", "view", "size", "exposure", "scale", "output"});
+  const std::vector<std::string_view> known =
+      material_flags_and({kModelFlag, "light-theta", "light-phi", "view", "size", "exposure", "scale", "output"});
   const ParsedFlags flags = ParsedFlags::parse(rewritten, known, "skinlayer render");
   ColorMaterial material{material_from_flags(flags), albedo_rgb, model_from_flags(flags)};
   const std::optional<std::string_view> output = flags.value("output");

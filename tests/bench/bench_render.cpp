@@ -3,8 +3,8 @@
 #include <benchmark/benchmark.h>
 
 #include "app/gl/gl_api.h"
-#include "app/process/heap_retention.h"
 #include "app/gl/osmesa_context.h"
+#include "app/process/heap_retention.h"
 #include "app/render/material_solve.h"
 #include "app/render/render_target.h"
 #include "app/render/renderer.h"

@@ -34,7 +34,8 @@ TEST(SolverLimits, SingleScatteringClosedFormForThinSlab) {
     for (double ti_deg : {0.0, 30.0, 60.0}) {
       for (double to_deg : {10.0, 45.0, 70.0}) {
         for (double phi_deg : {0.0, 90.0, 180.0}) {
-          const double ti = degrees_to_radians(ti_deg), to = degrees_to_radians(to_deg), phi = degrees_to_radians(phi_deg);
+          const double ti = degrees_to_radians(ti_deg), to = degrees_to_radians(to_deg),
+                       phi = degrees_to_radians(phi_deg);
           const double mu0 = std::cos(ti), mu = std::cos(to);
           const Vec3 travel_in = -direction_from_angles(ti, 0.0);
           const Vec3 reflected = direction_from_angles(to, phi);

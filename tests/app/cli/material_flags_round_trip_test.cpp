@@ -39,8 +39,8 @@ void expect_same(const Material& a, const Material& b, const std::string& flags)
 TEST(MaterialToFlags, ReadsBackToTheSameMaterial) {
   std::vector<Material> materials(8);
   materials[1].tau = optical_depth_from_transparency(0.1);  // T = 0.1 must read back to the same tau
-  materials[2].tau = INFINITY;                               // semi-infinite: T 0
-  materials[3].tau = 0.0;                                    // T 1
+  materials[2].tau = INFINITY;                              // semi-infinite: T 0
+  materials[3].tau = 0.0;                                   // T 1
   materials[4].sigma = 0.05;
   materials[4].g = -0.95;
   materials[4].albedo = 0.99;

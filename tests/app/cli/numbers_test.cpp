@@ -1,4 +1,6 @@
 // parse_number's rejections and the reasons error messages give for them (app/cli/numbers.h).
+#include "app/cli/numbers.h"
+
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -6,7 +8,6 @@
 
 #include "app/cli/csv_reader.h"
 #include "app/cli/errors.h"
-#include "app/cli/numbers.h"
 
 namespace skinlayer::cli {
 namespace {
