@@ -127,10 +127,10 @@ double LayerTables::transmission_mode(int m, double theta_i, double theta_o) con
   return interpolate(transmission_, m, theta_i, theta_o);
 }
 double LayerTables::brdf_subsurface(double theta_i, double theta_o, double phi) const {
-  return sum_modes(reflection_, theta_i, theta_o, phi);
+  return std::max(0.0, sum_modes(reflection_, theta_i, theta_o, phi));
 }
 double LayerTables::btdf(double theta_i, double theta_o, double phi) const {
-  return sum_modes(transmission_, theta_i, theta_o, phi);
+  return std::max(0.0, sum_modes(transmission_, theta_i, theta_o, phi));
 }
 
 }  // namespace skinlayer

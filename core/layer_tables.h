@@ -33,7 +33,10 @@ class LayerTables {
   std::span<const double> reflection_coefficients() const { return reflection_; }
   std::span<const double> transmission_coefficients() const { return transmission_; }
 
-  // Subsurface BRDF and layer BTDF in 1/sr at arbitrary angles (radians, graphics convention).
+  // Subsurface BRDF and layer BTDF in 1/sr at arbitrary angles (radians, graphics convention), clamped at 0: the
+  // grid values are >= 0, but beside a lobe narrower than a grid step (a sharp refraction lobe, sigma 0.05 with no
+  // medium) the Catmull-Rom spline undershoots between them, by up to ~6% of the lobe's peak. shaders/tables.glsl
+  // clamps alike. The per-mode coefficients (reflection_mode, transmission_mode) are signed and not clamped.
   double brdf_subsurface(double theta_i, double theta_o, double phi) const;
   double btdf(double theta_i, double theta_o, double phi) const;
 

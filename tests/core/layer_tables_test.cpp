@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/conventions.h"
@@ -44,6 +45,35 @@ TEST(LayerTables, SumsModesWithCosines) {
   EXPECT_THROW(LayerTables(16, 2, std::vector<double>(10), std::vector<double>(10)), std::invalid_argument);
 }
 
+// No medium (T = 1) over an index-matched bottom: the BTDF is the top's refraction lobe, at sigma 0.05 and eta 2.5
+// narrower than a grid step. The signed spline sum dips below zero beside it (by percents of the peak); the BSDF
+// accessors must not: they clamp, and only where the sum is negative.
+TEST(LayerTables, BsdfIsNonNegativeBesideALobeNarrowerThanAGridStep) {
+  Material material;
+  material.sigma = 0.05;
+  material.eta = 2.5;
+  material.tau = 0.0;
+  material.bottom.kind = BottomKind::Matched;
+  const LayerTables tables = solve(material);
+  const double theta_i = degrees_to_radians(30.0);
+  double lowest_sum = 0.0, peak = 0.0;
+  for (int step = 0; step <= 900; ++step) {
+    const double theta_o = degrees_to_radians(0.1 * step);
+    for (const double phi : {0.0, kPi}) {
+      double sum = 0.0;
+      for (int m = 0; m < tables.modes(); ++m) sum += tables.transmission_mode(m, theta_i, theta_o) * std::cos(m * phi);
+      const double btdf = tables.btdf(theta_i, theta_o, phi);
+      EXPECT_GE(btdf, 0.0) << "theta_o " << 0.1 * step << " phi " << phi;
+      if (sum >= 0.0) {
+        EXPECT_NEAR(btdf, sum, 1e-12 * std::abs(sum)) << "theta_o " << 0.1 * step;
+      }
+      lowest_sum = std::min(lowest_sum, sum);
+      peak = std::max(peak, sum);
+    }
+  }
+  EXPECT_LT(lowest_sum, -1e-3 * peak) << "the case no longer undershoots: it no longer tests the clamp";
+}
+
 // The spline between grid angles, checked against a solve on a grid twice as fine, whose nodes at odd degrees sit
 // halfway between the coarse grid's nodes.
 TEST(LayerTables, SplineBetweenGridAnglesMatchesAFinerSolve) {
@@ -57,7 +87,8 @@ TEST(LayerTables, SplineBetweenGridAnglesMatchesAFinerSolve) {
   for (int ti = 1; ti < 89; ti += 6) {
     for (int to = 1; to < 89; to += 4) {
       for (double phi : {0.0, 90.0, 180.0}) {
-        const double a = coarse.brdf_subsurface(degrees_to_radians(ti), degrees_to_radians(to), degrees_to_radians(phi));
+        const double a =
+            coarse.brdf_subsurface(degrees_to_radians(ti), degrees_to_radians(to), degrees_to_radians(phi));
         const double b = fine.brdf_subsurface(degrees_to_radians(ti), degrees_to_radians(to), degrees_to_radians(phi));
         worst = std::max(worst, std::abs(a - b) / b);
       }

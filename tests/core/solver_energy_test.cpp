@@ -120,12 +120,8 @@ TEST(SolverEnergy, ExtremeValidParametersGiveFiniteNonNegativeConservingValues) 
 // and bottom air | matched | lambert:1, in the combinations of the three tests below. Each case must give
 //   * directional_albedo: finite; R_sub, T and R_surface >= 0 up to round-off (1e-9); R + T <= 1 + 1e-3 (the
 //     solver's documented albedo accuracy).
-//   * solve(): the subsurface BRDF and the BTDF finite at every angle triple below; the BRDF >= 0 up to round-off;
-//     the BTDF >= -1e-3 of its table's scale (mode 0's largest coefficient). The BTDF is allowed that much because
-//     the Catmull-Rom tables undershoot beside a lobe narrower than a grid step: with no medium (T = 1) over a
-//     matched bottom the BTDF is the top interface's refraction lobe, and between grid nodes it dips below zero
-//     (at the angles here down to -2.4e-4 of the scale, for sigma 1, eta 2.5; on a fine grid down to -6% of the
-//     lobe's peak, for sigma 0.05, eta 2.5). At the grid nodes themselves it is >= 0 up to round-off.
+//   * solve(): the subsurface BRDF and the BTDF finite and >= 0 at every angle triple below (LayerTables clamps the
+//     Catmull-Rom undershoot beside lobes narrower than a grid step; layer_tables_test checks that case itself).
 struct ExtremeCase {
   const char* bottom;
   double sigma, g, transparency, albedo, eta;
@@ -160,21 +156,18 @@ void expect_finite_non_negative_bounded(const ExtremeCase& c) {
   const std::span<const double> mode0 = tables.transmission_coefficients().first(plane);
   const double btdf_scale = std::abs(
       *std::max_element(mode0.begin(), mode0.end(), [](double a, double b) { return std::abs(a) < std::abs(b); }));
-  double lowest_btdf = 0.0;
   for (const double ti : {0.0, 0.7, 1.2, 1.5, 0.5 * kPi}) {
     for (const double to : {0.0, 0.45, 0.9, 1.3, 0.5 * kPi}) {
       for (const double phi : {0.0, 1.0, 2.0, kPi}) {
         const double f = tables.brdf_subsurface(ti, to, phi);
         const double t = tables.btdf(ti, to, phi);
         ASSERT_TRUE(std::isfinite(f) && std::isfinite(t)) << ti << " " << to << " " << phi;
-        EXPECT_GE(f, -1e-9 * (1.0 + std::abs(f))) << "brdf at " << ti << " " << to << " " << phi;
-        EXPECT_GE(t, -1e-3 * btdf_scale - 1e-12) << "btdf at " << ti << " " << to << " " << phi;
-        lowest_btdf = std::min(lowest_btdf, t);
+        EXPECT_GE(f, 0.0) << "brdf at " << ti << " " << to << " " << phi;
+        EXPECT_GE(t, 0.0) << "btdf at " << ti << " " << to << " " << phi;
       }
     }
   }
-  std::printf("  %-56s %3d modes, lowest btdf %.2g of its scale %.3g\n", name, tables.modes(),
-              btdf_scale > 0.0 ? lowest_btdf / btdf_scale : 0.0, btdf_scale);
+  std::printf("  %-56s %3d modes, btdf scale %.3g\n", name, tables.modes(), btdf_scale);
 }
 
 // Every pair of extremes occurs in at least one case (a pairwise covering array).
