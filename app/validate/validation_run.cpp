@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/conventions.h"
+#include "core/reference/bin_average.h"
 #include "core/solver.h"
 
 namespace skinlayer::validation {
@@ -114,21 +115,7 @@ Verdict judge(double monte_carlo, double standard_error, double solver, double e
 
 double solver_bin_average(const Material& material, const LayerTables& tables, double theta_i,
                           const ValidationBin& bin) {
-  const AngularBin range = angular_bin(bin);
-  double sum = 0.0, weight_sum = 0.0;
-  for (int a = 0; a < kBinGrid; ++a) {
-    const double theta = range.theta_min + (a + 0.5) * (range.theta_max - range.theta_min) / kBinGrid;
-    const double weight = std::cos(theta) * std::sin(theta);  // cos theta domega / (dtheta dphi)
-    for (int b = 0; b < kBinGrid; ++b) {
-      const double phi = range.phi_min + (b + 0.5) * (range.phi_max - range.phi_min) / kBinGrid;
-      const double f = bin.side == ExitSide::Reflected
-                           ? tables.brdf_subsurface(theta_i, theta, phi) + brdf_surface(material, theta_i, theta, phi)
-                           : tables.btdf(theta_i, theta, phi);
-      sum += weight * f;
-      weight_sum += weight;
-    }
-  }
-  return sum / weight_sum;
+  return layer_bsdf_bin_average(material, tables, theta_i, angular_bin(bin), kBinGrid);
 }
 
 SetResult run_validation_set(const ValidationSet& set, const RunOptions& options) {

@@ -5,6 +5,8 @@
 //   * Albedos: 1e-3 absolute, the solver's documented accuracy for directional albedos (README "Accuracy").
 //   * Binned BSDF: 1% of the value, for the solver's table splines and the averaging grid over the bin.
 // Paths: 2e6 per albedo case (SE ~1e-4 to 4e-4) and 4e6 for the bins; the whole suite takes ~7 s on 2 cores.
+#include "core/reference/monte_carlo.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +15,7 @@
 #include <vector>
 
 #include "core/conventions.h"
-#include "core/reference/monte_carlo.h"
+#include "core/reference/bin_average.h"
 #include "core/solver.h"
 
 namespace skinlayer {
@@ -81,8 +83,7 @@ TEST(MonteCarlo, DirectionalAlbedosAgreeWithSolver) {
                 static_cast<unsigned long long>(mc.truncated_paths));
     SCOPED_TRACE(c.name);
     expect_agrees("reflectance_surface", mc.reflectance_surface, solver.reflectance_surface, kAlbedoAllowance);
-    expect_agrees("reflectance_subsurface", mc.reflectance_subsurface, solver.reflectance_subsurface,
-                  kAlbedoAllowance);
+    expect_agrees("reflectance_subsurface", mc.reflectance_subsurface, solver.reflectance_subsurface, kAlbedoAllowance);
     expect_agrees("transmittance", mc.transmittance, solver.transmittance, kAlbedoAllowance);
     EXPECT_EQ(mc.truncated_paths, 0u);
   }
@@ -126,26 +127,6 @@ TEST(MonteCarlo, RejectsInvalidInput) {
   EXPECT_THROW(simulate_layer(Material{}, 0.3, {}, mc_options(0, 1)), ParameterError);
 }
 
-// The solver's BSDF averaged over a bin with projected-solid-angle weight, on a midpoint grid.
-double solver_bin_average(const Material& material, const LayerTables& tables, double theta_i, const AngularBin& bin) {
-  constexpr int kGrid = 12;
-  double sum = 0.0;
-  double weight_sum = 0.0;
-  for (int a = 0; a < kGrid; ++a) {
-    const double theta = bin.theta_min + (a + 0.5) * (bin.theta_max - bin.theta_min) / kGrid;
-    const double w = std::cos(theta) * std::sin(theta);
-    for (int b = 0; b < kGrid; ++b) {
-      const double phi = bin.phi_min + (b + 0.5) * (bin.phi_max - bin.phi_min) / kGrid;
-      const double f = bin.side == ExitSide::Reflected
-                           ? tables.brdf_subsurface(theta_i, theta, phi) + brdf_surface(material, theta_i, theta, phi)
-                           : tables.btdf(theta_i, theta, phi);
-      sum += w * f;
-      weight_sum += w;
-    }
-  }
-  return sum / weight_sum;
-}
-
 TEST(MonteCarlo, BinnedBsdfInPlaneOfIncidenceAgreesWithSolver) {
   const Material material;  // the paper default
   const double theta_i = degrees_to_radians(30.0);
@@ -164,7 +145,7 @@ TEST(MonteCarlo, BinnedBsdfInPlaneOfIncidenceAgreesWithSolver) {
   const LayerTables tables = solve(material);
   for (std::size_t i = 0; i < bins.size(); ++i) {
     const AngularBin& b = bins[i];
-    const double solver = solver_bin_average(material, tables, theta_i, b);
+    const double solver = layer_bsdf_bin_average(material, tables, theta_i, b);
     char name[96];
     std::snprintf(name, sizeof name, "%s theta [%.0f,%.0f) phi %.0f", b.side == ExitSide::Reflected ? "BRDF" : "BTDF",
                   radians_to_degrees(b.theta_min), radians_to_degrees(b.theta_max),
