@@ -361,7 +361,8 @@ int ceil_to_int(double x) { return static_cast<int>(std::ceil(x)); }
 // the ordinates the exit sums ripple across exit angles; measured against N = 192 (BSDF averaged over 15-degree
 // bins, both interfaces, eta 1.05-1.4, sigma 0.2-0.5): N w = 1.2 leaves 0.3-3%, N w = 1.6 0.2-0.5%, N w = 1.75
 // under 0.06%. So N >= 1.75 / w, which is 6.1/sigma at eta 1.4 and grows without bound as eta -> 1; at most 128
-// (a 1/4 s solve): near-matched interfaces (eta < 1.07 at sigma 0.2) keep a ripple of ~0.3-1%.
+// (0.15-0.4 s per solve on the 2-core VM): near-matched interfaces (eta < 1.07 at sigma 0.2) keep a ripple of
+// ~0.3% there.
 int refracted_lobe_ordinates(const Geometry& geometry) {
   const auto need = [](const RoughDielectric& interface) {
     const double n = std::max(interface.eta, 1.0 / interface.eta);  // the bottom's eta is n_below / n_layer
