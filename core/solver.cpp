@@ -402,7 +402,14 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
     const bool rough = !geometry.top_open || geometry.base == Base::Rough;
     const double sigma_max = std::max(geometry.top_open ? 0.0 : material.sigma,
                                       geometry.base == Base::Rough ? material.bottom_sigma() : 0.0);
-    const int floor = !rough ? 16 : sigma_max > 0.7 ? 32 : 24;
+    // A transparent layer lets most light cross it unscattered or scattered once, so the radiance meeting the top
+    // from inside stays directional, and its exit near the critical angle (grazing outside) needs finer nodes:
+    // against N = 160, thin layers (g 0.5, Omega 0.99, sigma 0.2-1, light at 45 and 75 degrees) err in the binned
+    // BRDF by up to 0.31% at T 0.6 and 1.3% at T 0.99 with 24 ordinates, 0.25% and 0.49% with 32, 0.24% at T 0.99
+    // with 40.
+    const double transparency = std::exp(-material.tau);
+    const int thin_floor = !rough ? 0 : transparency > 0.8 ? 40 : transparency > 0.5 ? 32 : 0;
+    const int floor = std::max(!rough ? 16 : sigma_max > 0.7 ? 32 : 24, thin_floor);
     // A multiple of 4 at or above the need, at most 64 for the phase function, but never below the interfaces'
     // minimum (120 at sigma 0.05): fewer than 6/sigma would break the quadrature of the interface lobes.
     const auto multiple_of_4 = [](int n) { return (n + 3) / 4 * 4; };

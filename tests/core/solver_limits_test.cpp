@@ -177,5 +177,31 @@ TEST(AutomaticResolution, LowContrastBottomGivesAConvergedBtdf) {
   }
 }
 
+// A nearly transparent layer (T 0.9, g 0.5, Omega 0.99) returns light that crossed it mostly unscattered, still
+// directional when it meets the top from inside; 24 ordinates (the floor for sigma 0.5) put the subsurface BRDF 1.0%
+// of its peak off N = 160, forward and near grazing. The automatic resolution must see the layer's transparency.
+TEST(AutomaticResolution, TransparentLayerGivesAConvergedBrdf) {
+  Material automatic;
+  automatic.tau = optical_depth_from_transparency(0.9);
+  automatic.g = 0.5;
+  automatic.albedo = 0.99;
+  Material fine = automatic;
+  fine.ordinates = 160;
+  const LayerTables a = solve(automatic);
+  const LayerTables b = solve(fine);
+  for (const double theta_i : {degrees_to_radians(45.0), degrees_to_radians(75.0)}) {
+    double peak = 0.0, worst = 0.0;
+    for (int degree = 0; degree <= 89; ++degree) {
+      for (const double phi : {0.0, kPi}) {
+        const double theta_o = degrees_to_radians(degree);
+        const double expected = b.brdf_subsurface(theta_i, theta_o, phi);
+        peak = std::max(peak, expected);
+        worst = std::max(worst, std::abs(a.brdf_subsurface(theta_i, theta_o, phi) - expected));
+      }
+    }
+    EXPECT_LT(worst, 4e-3 * peak) << "theta_i " << theta_i;
+  }
+}
+
 }  // namespace
 }  // namespace skinlayer
