@@ -407,7 +407,7 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
     // against N = 160, thin layers (g 0.5, Omega 0.99, sigma 0.2-1, light at 45 and 75 degrees) err in the binned
     // BRDF by up to 0.31% at T 0.6 and 1.3% at T 0.99 with 24 ordinates, 0.25% and 0.49% with 32, 0.24% at T 0.99
     // with 40.
-    const double transparency = std::exp(-material.tau);
+    const double transparency = material.transparency();
     const int thin_floor = !rough ? 0 : transparency > 0.8 ? 40 : transparency > 0.5 ? 32 : 0;
     const int floor = std::max(!rough ? 16 : sigma_max > 0.7 ? 32 : 24, thin_floor);
     // A multiple of 4 at or above the need, at most 64 for the phase function, but never below the interfaces'
