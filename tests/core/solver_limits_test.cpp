@@ -150,6 +150,28 @@ TEST(AutomaticResolution, SharpInterfacesGiveConvergedAlbedos) {
   }
 }
 
+// The largest |a - b| of one BSDF over the plane of incidence (phi 0 and pi, theta_o every degree up to
+// max_degree), and b's peak there.
+struct PlaneDeviation {
+  double worst = 0.0;
+  double peak = 0.0;
+};
+
+PlaneDeviation deviation_in_plane(const LayerTables& a, const LayerTables& b,
+                                  double (LayerTables::*bsdf)(double, double, double) const, double theta_i,
+                                  int max_degree) {
+  PlaneDeviation d;
+  for (int degree = 0; degree <= max_degree; ++degree) {
+    for (const double phi : {0.0, kPi}) {
+      const double theta_o = degrees_to_radians(degree);
+      const double expected = (b.*bsdf)(theta_i, theta_o, phi);
+      d.peak = std::max(d.peak, expected);
+      d.worst = std::max(d.worst, std::abs((a.*bsdf)(theta_i, theta_o, phi) - expected));
+    }
+  }
+  return d;
+}
+
 // A sharp bottom of low index contrast (sigma3 0.2, eta3 1.2) refracts into a lobe ~ sigma3 (1 - 1/eta3) = 0.033 rad
 // wide inside the layer, narrower than the node spacing at the 32 ordinates that 6/sigma asks for: there the BTDF
 // ripples by 5.6% of its peak across exit angles (and the validation's forward bins by 0.5-0.9%, 6 SE). The
@@ -164,16 +186,8 @@ TEST(AutomaticResolution, LowContrastBottomGivesAConvergedBtdf) {
   const LayerTables a = solve(automatic);
   const LayerTables b = solve(fine);
   for (const double theta_i : {0.0, degrees_to_radians(45.0)}) {
-    double peak = 0.0, worst = 0.0;
-    for (int degree = 0; degree <= 80; ++degree) {
-      for (const double phi : {0.0, kPi}) {
-        const double theta_o = degrees_to_radians(degree);
-        const double expected = b.btdf(theta_i, theta_o, phi);
-        peak = std::max(peak, expected);
-        worst = std::max(worst, std::abs(a.btdf(theta_i, theta_o, phi) - expected));
-      }
-    }
-    EXPECT_LT(worst, 5e-3 * peak) << "theta_i " << theta_i;
+    const PlaneDeviation d = deviation_in_plane(a, b, &LayerTables::btdf, theta_i, 80);
+    EXPECT_LT(d.worst, 5e-3 * d.peak) << "theta_i " << theta_i;
   }
 }
 
@@ -190,16 +204,8 @@ TEST(AutomaticResolution, TransparentLayerGivesAConvergedBrdf) {
   const LayerTables a = solve(automatic);
   const LayerTables b = solve(fine);
   for (const double theta_i : {degrees_to_radians(45.0), degrees_to_radians(75.0)}) {
-    double peak = 0.0, worst = 0.0;
-    for (int degree = 0; degree <= 89; ++degree) {
-      for (const double phi : {0.0, kPi}) {
-        const double theta_o = degrees_to_radians(degree);
-        const double expected = b.brdf_subsurface(theta_i, theta_o, phi);
-        peak = std::max(peak, expected);
-        worst = std::max(worst, std::abs(a.brdf_subsurface(theta_i, theta_o, phi) - expected));
-      }
-    }
-    EXPECT_LT(worst, 4e-3 * peak) << "theta_i " << theta_i;
+    const PlaneDeviation d = deviation_in_plane(a, b, &LayerTables::brdf_subsurface, theta_i, 89);
+    EXPECT_LT(d.worst, 4e-3 * d.peak) << "theta_i " << theta_i;
   }
 }
 
