@@ -45,8 +45,13 @@ SplineTaps spline_taps(double x, int k) {
 
 }  // namespace
 
-LayerTables::LayerTables(int grid_size, int modes, std::vector<double> reflection, std::vector<double> transmission)
-    : grid_size_(grid_size), modes_(modes), reflection_(std::move(reflection)), transmission_(std::move(transmission)) {
+LayerTables::LayerTables(int grid_size, int modes, std::vector<double> reflection, std::vector<double> transmission,
+                         UnscatteredLight unscattered)
+    : grid_size_(grid_size),
+      modes_(modes),
+      reflection_(std::move(reflection)),
+      transmission_(std::move(transmission)),
+      unscattered_(unscattered) {
   const std::size_t expected = static_cast<std::size_t>(grid_size) * grid_size * modes;
   if (grid_size < 4 || reflection_.size() != expected || transmission_.size() != expected) {
     throw std::invalid_argument("LayerTables: table sizes do not match grid_size^2 * modes");
@@ -111,7 +116,7 @@ LayerTables LayerTables::refined(int factor) const {
     }
     return result;
   };
-  return LayerTables(fine, modes_, refine(reflection_), refine(transmission_));
+  return LayerTables(fine, modes_, refine(reflection_), refine(transmission_), unscattered_);
 }
 
 double LayerTables::sum_modes(std::span<const double> table, double theta_i, double theta_o, double phi) const {
@@ -127,10 +132,10 @@ double LayerTables::transmission_mode(int m, double theta_i, double theta_o) con
   return interpolate(transmission_, m, theta_i, theta_o);
 }
 double LayerTables::brdf_subsurface(double theta_i, double theta_o, double phi) const {
-  return std::max(0.0, sum_modes(reflection_, theta_i, theta_o, phi));
+  return std::max(0.0, sum_modes(reflection_, theta_i, theta_o, phi)) + unscattered_.brdf(theta_i, theta_o, phi);
 }
 double LayerTables::btdf(double theta_i, double theta_o, double phi) const {
-  return std::max(0.0, sum_modes(transmission_, theta_i, theta_o, phi));
+  return std::max(0.0, sum_modes(transmission_, theta_i, theta_o, phi)) + unscattered_.btdf(theta_i, theta_o, phi);
 }
 
 }  // namespace skinlayer

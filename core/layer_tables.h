@@ -11,17 +11,24 @@
 // (e^{-tau/mu}). The map is odd about x = 0 and even about x = 1, so the spline continues exactly past both ends:
 // S_m(-theta) = (-1)^m S_m(theta), and x = 1 + d is the same direction as x = 1 - d.
 // Storage: coefficient (m, i, o) at index (m * K + i) * K + o.
+//
+// The light that crosses the slab unscattered through sharp interfaces makes lobes narrower than the grid. The
+// solver leaves it out of the coefficients and stores it as an UnscatteredLight (core/unscattered_light.h), which
+// brdf_subsurface() and btdf() add at the requested directions: the coefficients are the scattered light alone.
 #pragma once
 
 #include <span>
 #include <vector>
+
+#include "core/unscattered_light.h"
 
 namespace skinlayer {
 
 class LayerTables {
  public:
   LayerTables() = default;
-  LayerTables(int grid_size, int modes, std::vector<double> reflection, std::vector<double> transmission);
+  LayerTables(int grid_size, int modes, std::vector<double> reflection, std::vector<double> transmission,
+              UnscatteredLight unscattered = {});
 
   int grid_size() const { return grid_size_; }
   int modes() const { return modes_; }
@@ -32,15 +39,17 @@ class LayerTables {
 
   std::span<const double> reflection_coefficients() const { return reflection_; }
   std::span<const double> transmission_coefficients() const { return transmission_; }
+  const UnscatteredLight& unscattered() const { return unscattered_; }
 
-  // Subsurface BRDF and layer BTDF in 1/sr at arbitrary angles (radians, graphics convention), clamped at 0: the
+  // Subsurface BRDF and layer BTDF in 1/sr at arbitrary angles (radians, graphics convention): the unscattered part
+  // (exact) plus the scattered part (the Fourier sum of the splined coefficients) clamped at 0: the
   // grid values are >= 0, but beside a lobe narrower than a grid step (a sharp refraction lobe, sigma 0.05 with no
   // medium) the Catmull-Rom spline undershoots between them, by up to ~6% of the lobe's peak. shaders/tables.glsl
   // clamps alike. The per-mode coefficients (reflection_mode, transmission_mode) are signed and not clamped.
   double brdf_subsurface(double theta_i, double theta_o, double phi) const;
   double btdf(double theta_i, double theta_o, double phi) const;
 
-  // The same tables on a grid `factor` times finer, K' = factor (K - 1) + 1 points on the same map: every value is
+  // The same tables on a grid `factor` times finer (the unscattered part is carried unchanged), K' = factor (K - 1) + 1 points on the same map: every value is
   // this table's spline at the finer grid angle, so a bilinear lookup of the result approximates the spline to
   // O((h/factor)^2). Built separably: one 1-D Catmull-Rom pass per axis.
   LayerTables refined(int factor) const;
@@ -57,6 +66,7 @@ class LayerTables {
   int modes_ = 0;
   std::vector<double> reflection_;
   std::vector<double> transmission_;
+  UnscatteredLight unscattered_;
 };
 
 }  // namespace skinlayer

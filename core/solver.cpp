@@ -12,6 +12,7 @@
 #include "core/microfacet.h"
 #include "core/quadrature.h"
 #include "core/slab_eigen.h"
+#include "core/unscattered_light.h"
 
 namespace skinlayer {
 namespace {
@@ -107,8 +108,9 @@ class LayerSolver {
  public:
   // mu_in: the outside directions light arrives along; mu_out: those the tables leave along, either none (fluxes
   // only) or the same as mu_in (the exit operators are the source operators by reciprocity).
+  // exact_unscattered: leave out of the exit sums the paths that UnscatteredLight evaluates exactly.
   LayerSolver(const Material& material, const Resolution& resolution, std::span<const double> mu_in,
-              std::span<const double> mu_out);
+              std::span<const double> mu_out, bool exact_unscattered = false);
 
   struct ModeResult {
     Eigen::MatrixXd reflection;    // K_out x K_in, graphics azimuth convention, 1/sr
@@ -137,6 +139,8 @@ class LayerSolver {
   Eigen::VectorXd beam_attenuation_;  // e^{-tau/mu0} per incident direction
   Eigen::VectorXd beam_flux_;         // F = 1/mu0 (so that E_perp mu0 = 1: values are BSDFs)
   bool want_exit_;
+  UnscatteredPath exact_path_ = UnscatteredPath::None;  // the unscattered path left out of the exit sums
+  Eigen::VectorXd node_attenuation_;                     // e^{-tau/mu_j} per node
   PhaseMatrices phase_;
   FourierKernel r_top_, t_source_, t_exit_, t_source_exterior_, r_top_rows_;
   FourierKernel r_bottom_, t_bottom_exit_, s_bottom_beam_, t_bottom_beam_, r_bottom_rows_, r_bottom_beam_rows_;
@@ -144,7 +148,7 @@ class LayerSolver {
 };
 
 LayerSolver::LayerSolver(const Material& material, const Resolution& resolution, std::span<const double> mu_in,
-                         std::span<const double> mu_out)
+                         std::span<const double> mu_out, bool exact_unscattered)
     : geometry_(classify(material)),
       tau_(material.tau),
       lambert_(material.bottom.lambert_albedo),
@@ -157,6 +161,8 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
   for (double& mu : mu_in_) mu = std::max(mu, kMinCosine);
   for (double& mu : mu_out_) mu = std::max(mu, kMinCosine);
   beam_attenuation_ = attenuation(mu_in_, tau_);
+  node_attenuation_ = attenuation(quadrature_.nodes, tau_);
+  if (exact_unscattered && want_exit_) exact_path_ = UnscatteredLight(material).path();
   beam_flux_ =
       Eigen::Map<const Eigen::VectorXd>(mu_in_.data(), static_cast<Eigen::Index>(mu_in_.size())).cwiseInverse();
 
@@ -317,8 +323,11 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
   } else {
     Eigen::MatrixXd upward_at_bottom;
     if (!infinite && geometry_.base == Base::Rough) {
-      upward_at_bottom =
-          r_bottom_rows_[m] * field.down_bottom + r_bottom_beam_rows_[m] * beam_attenuation_.asDiagonal();
+      upward_at_bottom = r_bottom_rows_[m] * field.down_bottom;
+      // The beam reflected by the bottom without scattering: UnscatteredLight::brdf, unless kept here.
+      if (exact_path_ != UnscatteredPath::BottomOnly) {
+        upward_at_bottom += r_bottom_beam_rows_[m] * beam_attenuation_.asDiagonal();
+      }
     } else if (!infinite && lambert_mode) {
       Eigen::RowVectorXd flux(count_in);  // diffuse plus direct flux reaching the base
       for (Eigen::Index k = 0; k < count_in; ++k) {
@@ -337,11 +346,21 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
     result.transmission = Eigen::MatrixXd::Zero(count_out, count_in);
   } else if (geometry_.base == Base::Rough) {
     result.transmission = t_bottom_exit_[m] * field.down_bottom;
-    if (geometry_.top_open) result.transmission += t_bottom_beam_[m] * beam_attenuation_.asDiagonal();
+    // The light that crossed both interfaces unscattered, t23 e^{-tau/mu_j} t12, is on the nodes as the first-pass
+    // part of down_bottom (exactly: the discrete-ordinate equations propagate it without scattering); it and the
+    // open top's beam through the bottom are UnscatteredLight::btdf when evaluated exactly.
+    if (exact_path_ == UnscatteredPath::TopThenBottom) {
+      result.transmission -= t_bottom_exit_[m] * (node_attenuation_.asDiagonal() * t_source_[m]);
+    }
+    if (geometry_.top_open && exact_path_ != UnscatteredPath::BottomOnly) {
+      result.transmission += t_bottom_beam_[m] * beam_attenuation_.asDiagonal();
+    }
   } else {
     Eigen::MatrixXd downward_at_top;
     if (!geometry_.top_open) {
-      downward_at_top = t_source_exterior_[m] + r_top_rows_[m] * field.up_top;
+      downward_at_top = r_top_rows_[m] * field.up_top;
+      // The light refracted by the top straight through to the matched bottom: UnscatteredLight::btdf, unless kept.
+      if (exact_path_ != UnscatteredPath::TopOnly) downward_at_top += t_source_exterior_[m];
     } else {
       exit.beam_row = solved_albedo * beam_rows_down_[m] * beam_flux_.asDiagonal();
     }
@@ -437,11 +456,12 @@ struct TableSolve {
 };
 
 TableSolve solve_tables(const Material& material, std::span<const double> albedos, const Resolution& resolution,
-                        double tolerance) {
+                        double tolerance, bool exact_unscattered) {
   const int k = resolution.table_size;
   std::vector<double> grid(k);
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
-  const LayerSolver solver(material, resolution, grid, grid);
+  const LayerSolver solver(material, resolution, grid, grid, exact_unscattered);
+  const UnscatteredLight unscattered = exact_unscattered ? UnscatteredLight(material) : UnscatteredLight();
 
   const std::size_t plane = static_cast<std::size_t>(k) * k;
   TableSolve result{{}, true};
@@ -474,7 +494,7 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
       modes = m + 1;
     }
     result.converged = result.converged && quiet_modes >= 2;
-    result.tables.emplace_back(k, modes, std::move(reflection), std::move(transmission));
+    result.tables.emplace_back(k, modes, std::move(reflection), std::move(transmission), unscattered);
   }
   return result;
 }
@@ -494,12 +514,12 @@ std::vector<LayerTables> solve(const Material& material, std::span<const double>
   }
   // The automatic cap on Fourier modes suits most materials; thin, strongly forward-scattering layers seen near
   // grazing need more, so an unconverged series is solved again with twice the cap (up to 256 modes).
-  TableSolve result = solve_tables(material, albedos, resolution, options.fourier_tolerance);
+  TableSolve result = solve_tables(material, albedos, resolution, options.fourier_tolerance, options.exact_unscattered);
   while (!result.converged && options.max_modes == 0 && resolution.max_modes < 256) {
     SolveOptions doubled = options;
     doubled.max_modes = 2 * resolution.max_modes;
     resolution = choose_resolution(material, doubled);
-    result = solve_tables(material, albedos, resolution, options.fourier_tolerance);
+    result = solve_tables(material, albedos, resolution, options.fourier_tolerance, options.exact_unscattered);
   }
   return std::move(result.tables);
 }

@@ -18,6 +18,10 @@ struct SolveOptions {
   int table_size = 0;                // polar grid points on [0, pi/2] for the tables; 0 = default
   double fourier_tolerance = 1e-4;   // stop when two successive modes are below this fraction of mode 0's peak
   int max_modes = 0;                 // hard cap on Fourier modes; 0 = automatic
+  // true: the light that crosses the slab unscattered through the rough interfaces is evaluated exactly at the
+  // requested directions (core/unscattered_light.h) and the tables hold the rest; false: every path on the discrete
+  // ordinates and the tables, as Stam 2001 publishes the method (for convergence studies and comparisons).
+  bool exact_unscattered = true;
 };
 
 // The discretization a solve uses, chosen from the material (and its ordinates override).

@@ -1,0 +1,70 @@
+// The sharp part of the layer's BSDF: light that crosses the slab without being scattered by the medium, through one
+// or two rough interfaces, evaluated exactly at the requested directions (as the surface term is) instead of on the
+// discrete ordinates and the 48-point tables, which cannot hold a lobe narrower than their spacing.
+//
+// With d the internal propagation direction (d.z < 0, travelling down), omega_i toward the light and omega_o toward
+// the viewer below (core/conventions.h; every vector here is in the layer's frame, +z up), and dA = |d.z| d omega_d
+// the projected solid angle (the area element of the projected disk (d.x, d.y)):
+//
+//   rough top, matched bottom (one interface; closed form):
+//     f_T(omega_i, omega_o) = f_t12(omega_i -> omega_o) e^{-tau / |omega_o.z|}                               [1/sr]
+//   open top (eta = 1), rough bottom (one interface; closed form):
+//     f_T(omega_i, omega_o) = e^{-tau / mu_i} f_t23(omega_i -> omega_o)
+//     f_R(omega_i, omega_o) = e^{-tau / mu_i} f_r23(omega_i -> omega_o) e^{-tau / mu_o}
+//   rough top, rough bottom (two interfaces; a lobe-adapted quadrature over the internal direction):
+//     f_T(omega_i, omega_o) = int_disk f_t12(omega_i -> d) e^{-tau / |d.z|} f_t23(-d -> omega_o) dA(d)
+//
+// f_t12, f_t23, f_r23 are the interfaces' microfacet BSDFs (core/microfacet.h), radiance BTDFs, in 1/sr. The solver
+// removes exactly these paths from its ordinates (their node-sum images), so the tables carry only light that was
+// scattered at least once or reflected between the interfaces, which is smooth; LayerTables adds this part back.
+// Light reflected by a rough bottom under a rough top without scattering, t12 R23 t21, stays on the ordinates: its
+// lobe is the bottom's reflection lobe (about 2 sigma3 wide inside, against sigma (1 - 1/eta) for a refracted one).
+#pragma once
+
+#include "core/microfacet.h"
+
+namespace skinlayer {
+
+struct Material;
+
+enum class UnscatteredPath {
+  None,            // nothing crosses unscattered with a BSDF value: semi-infinite, Lambertian base, or no interface
+  TopOnly,         // rough top over an index-matched bottom
+  BottomOnly,      // open top (eta = 1) over a rough bottom
+  TopThenBottom,   // rough top over a rough bottom
+};
+
+// The unscattered part of one material. A value type: default-constructed, it contributes nothing.
+class UnscatteredLight {
+ public:
+  UnscatteredLight() = default;
+  explicit UnscatteredLight(const Material& material);
+
+  UnscatteredPath path() const { return path_; }
+
+  // The unscattered part of the layer BTDF and of the subsurface BRDF, in 1/sr (graphics convention, radians).
+  double btdf(double theta_i, double theta_o, double phi) const;
+  double brdf(double theta_i, double theta_o, double phi) const;
+
+  const RoughDielectric& top() const { return top_; }
+  const RoughDielectric& bottom() const { return bottom_; }  // frame +z up into the layer: eta = n_below / n_layer
+  double tau() const { return tau_; }
+
+ private:
+  UnscatteredPath path_ = UnscatteredPath::None;
+  RoughDielectric top_{};
+  RoughDielectric bottom_{};
+  double tau_ = 0.0;
+};
+
+// f_T of two rough interfaces in sequence (the TopThenBottom formula above) for unit vectors wi (z > 0) and wo
+// (z < 0), both in the layer's frame. The quadrature: each interface's lobe in the projected disk is approximated by
+// a Gaussian whose covariance is the Beckmann slope covariance (sigma^2 / 2) I mapped through the Jacobian of
+// refraction at the flat facet; the integrand's mass sits where the two Gaussians overlap, at the product Gaussian
+// (precision P = C_top^-1 + C_bottom^-1). A 25 x 25 trapezoidal rule on +-6 standard deviations of the product,
+// widened by 1.3, along its principal axes integrates it: the trapezoidal rule converges spectrally on a smooth
+// bump, and what is left is the kinks of total internal reflection and facet visibility.
+double two_interface_btdf(const RoughDielectric& top, const RoughDielectric& bottom, double tau, const Vec3& wi,
+                          const Vec3& wo);
+
+}  // namespace skinlayer
