@@ -56,7 +56,8 @@ TEST(SolverEnergy, WhiteFurnaceRoughInterfacesBalancesShadowingLoss) {
   }
 }
 
-// The tables' BRDF integrated over the hemisphere equals the solver's directional-hemispherical reflectance.
+// The tables' BRDF and BTDF (coefficients plus the exact unscattered part) integrated over the hemisphere equal the
+// solver's directional-hemispherical reflectance and transmittance, computed from its node fluxes.
 TEST(SolverEnergy, TablesIntegrateToTheDirectionalAlbedo) {
   for (const char* bottom : {"air", "lambert:0.5"}) {
     Material m;
@@ -72,6 +73,13 @@ TEST(SolverEnergy, TablesIntegrateToTheDirectionalAlbedo) {
         const double w = theta.weights[a] * std::cos(t) * std::sin(t) * 2.0 * kPi;  // mode 0 only survives
         reflected += w * tables.reflection_mode(0, incidence[k], t);
         transmitted += w * tables.transmission_mode(0, incidence[k], t);
+        // The unscattered part is not in the coefficients: integrated over azimuth here (symmetric about phi = 0).
+        const QuadratureRule phi = gauss_legendre(48, 0.0, kPi);
+        for (int b = 0; b < phi.size(); ++b) {
+          const double wp = theta.weights[a] * std::cos(t) * std::sin(t) * 2.0 * phi.weights[b];
+          reflected += wp * tables.unscattered().brdf(incidence[k], t, phi.nodes[b]);
+          transmitted += wp * tables.unscattered().btdf(incidence[k], t, phi.nodes[b]);
+        }
       }
       EXPECT_NEAR(reflected, albedo[k].reflectance_subsurface, 5e-3 * albedo[k].reflectance_subsurface) << bottom;
       EXPECT_NEAR(transmitted, albedo[k].transmittance, 5e-3 * albedo[k].transmittance + 1e-9) << bottom;
