@@ -131,11 +131,17 @@ double LayerTables::reflection_mode(int m, double theta_i, double theta_o) const
 double LayerTables::transmission_mode(int m, double theta_i, double theta_o) const {
   return interpolate(transmission_, m, theta_i, theta_o);
 }
+double LayerTables::brdf_scattered(double theta_i, double theta_o, double phi) const {
+  return std::max(0.0, sum_modes(reflection_, theta_i, theta_o, phi));
+}
+double LayerTables::btdf_scattered(double theta_i, double theta_o, double phi) const {
+  return std::max(0.0, sum_modes(transmission_, theta_i, theta_o, phi));
+}
 double LayerTables::brdf_subsurface(double theta_i, double theta_o, double phi) const {
-  return std::max(0.0, sum_modes(reflection_, theta_i, theta_o, phi)) + unscattered_.brdf(theta_i, theta_o, phi);
+  return brdf_scattered(theta_i, theta_o, phi) + unscattered_.brdf(theta_i, theta_o, phi);
 }
 double LayerTables::btdf(double theta_i, double theta_o, double phi) const {
-  return std::max(0.0, sum_modes(transmission_, theta_i, theta_o, phi)) + unscattered_.btdf(theta_i, theta_o, phi);
+  return btdf_scattered(theta_i, theta_o, phi) + unscattered_.btdf(theta_i, theta_o, phi);
 }
 
 }  // namespace skinlayer

@@ -48,6 +48,9 @@ class LayerTables {
   // clamps alike. The per-mode coefficients (reflection_mode, transmission_mode) are signed and not clamped.
   double brdf_subsurface(double theta_i, double theta_o, double phi) const;
   double btdf(double theta_i, double theta_o, double phi) const;
+  // The scattered parts alone (the clamped Fourier sums of the coefficients), without unscattered().
+  double brdf_scattered(double theta_i, double theta_o, double phi) const;
+  double btdf_scattered(double theta_i, double theta_o, double phi) const;
 
   // The same tables on a grid `factor` times finer (the unscattered part is carried unchanged), K' = factor (K - 1) + 1 points on the same map: every value is
   // this table's spline at the finer grid angle, so a bilinear lookup of the result approximates the spline to

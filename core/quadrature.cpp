@@ -1,5 +1,6 @@
 #include "core/quadrature.h"
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <stdexcept>
 
@@ -47,5 +48,19 @@ QuadratureRule gauss_legendre(int n, double a, double b) {
 }
 
 QuadratureRule double_gauss_half_range(int n) { return gauss_legendre(n, 0.0, 1.0); }
+
+QuadratureRule gauss_hermite(int n) {
+  if (n < 1 || n > 100) throw std::invalid_argument("gauss_hermite: n must be in [1, 100]");
+  Eigen::MatrixXd jacobi = Eigen::MatrixXd::Zero(n, n);
+  for (int k = 1; k < n; ++k) jacobi(k, k - 1) = jacobi(k - 1, k) = std::sqrt(0.5 * k);
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(jacobi);
+  QuadratureRule rule;
+  for (int k = 0; k < n; ++k) {
+    rule.nodes.push_back(solver.eigenvalues()(k));
+    const double v = solver.eigenvectors()(0, k);
+    rule.weights.push_back(std::sqrt(kPi) * v * v);
+  }
+  return rule;
+}
 
 }  // namespace skinlayer

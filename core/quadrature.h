@@ -19,4 +19,9 @@ QuadratureRule gauss_legendre(int n, double a = -1.0, double b = 1.0);
 // int_0^1 mu^k dmu are exact for k <= 2n - 1. Nodes ascending.
 QuadratureRule double_gauss_half_range(int n);
 
+// n-point Gauss-Hermite rule: int_R e^{-x^2} f(x) dx ~ sum_k w_k f(x_k), exact for polynomials of degree <= 2n - 1
+// (Golub & Welsch 1969: nodes are the eigenvalues of the Jacobi matrix with off-diagonal sqrt(k/2), weights
+// sqrt(pi) times the squared first components of its unit eigenvectors). Nodes ascending; n <= 100.
+QuadratureRule gauss_hermite(int n);
+
 }  // namespace skinlayer

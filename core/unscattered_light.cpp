@@ -4,7 +4,9 @@
 #include <cmath>
 #include <optional>
 
+#include "core/conventions.h"
 #include "core/material.h"
+#include "core/quadrature.h"
 
 namespace skinlayer {
 namespace {
@@ -59,6 +61,58 @@ std::optional<Lobe> refracted_lobe(const Vec3& p, double side, double eta_rel, d
   return Lobe{*centre, covariance};
 }
 
+// d omega_h / d omega_o for refraction between i (index n_i side) and o (n_o side), eta_o = n_o / n_i, about the
+// microfacet normal h (Walter et al. 2007, eq. 17):  eta_o^2 |o.h| / (i.h + eta_o o.h)^2.
+double refraction_jacobian(const Vec3& i, const Vec3& o, const Vec3& h, double eta_o) {
+  const double denominator = i.dot(h) + eta_o * o.dot(h);
+  return eta_o * eta_o * std::abs(o.dot(h)) / (denominator * denominator);
+}
+
+// The Beckmann slope density P(p, q) = e^{-(p^2 + q^2) / sigma^2} / (pi sigma^2), and D(h) d omega_h = P dp dq /
+// cos(theta_h) with d omega_h = cos^3(theta_h) dp dq: a Gauss-Hermite rule in (p, q) / sigma integrates it exactly.
+double slope_density(double p, double q, double sigma) {
+  return std::exp(-(p * p + q * q) / (sigma * sigma)) / (kPi * sigma * sigma);
+}
+
+// One interface's refraction lobe parameterized by its facet slopes: the internal direction d (travelling down) that
+// the facet of slopes (p, q) sends the light to, and weight = f |d.z| (d omega_d / d omega_h) cos^3(theta_h) / P, so
+// that  int f(d) g(d) |d.z| d omega_d = int P(p, q) weight g(d(p, q)) dp dq.
+struct SlopeSample {
+  Vec3 d;
+  double weight;
+};
+
+// Light from omega_i refracted into the layer by the top's facet (p, q): f = f_t12(omega_i -> d).
+std::optional<SlopeSample> sample_entry(const RoughDielectric& top, const Vec3& wi, double p, double q) {
+  const Vec3 h = facet_normal(p, q, 1.0);
+  if (wi.dot(h) <= 0.0) return std::nullopt;
+  const std::optional<Vec3> d = refract(-wi, h, top.eta);
+  if (!d || d->z() >= 0.0) return std::nullopt;
+  const double f = microfacet_btdf(top, wi, *d);
+  if (f == 0.0) return std::nullopt;
+  const double cos_h = h.z();
+  return SlopeSample{*d, f * -d->z() * cos_h * cos_h * cos_h /
+                             (refraction_jacobian(wi, *d, h, top.eta) * slope_density(p, q, top.sigma))};
+}
+
+// The exit direction omega_o traced backward up through the bottom's facet (p, q) into the layer: f = f_t23(-d ->
+// omega_o); the bottom's frame has +z into the layer and eta = n_below / n_layer.
+std::optional<SlopeSample> sample_exit(const RoughDielectric& bottom, const Vec3& wo, double p, double q) {
+  const Vec3 h = facet_normal(p, q, 1.0);
+  if (wo.dot(h) >= 0.0) return std::nullopt;
+  const std::optional<Vec3> up = refract(-wo, -h, 1.0 / bottom.eta);
+  if (!up || up->z() <= 0.0) return std::nullopt;
+  const Vec3 d = -*up;
+  const double f = microfacet_btdf(bottom, -d, wo);
+  if (f == 0.0) return std::nullopt;
+  const double cos_h = h.z();
+  return SlopeSample{d, f * -d.z() * cos_h * cos_h * cos_h /
+                            (refraction_jacobian(wo, -d, h, 1.0 / bottom.eta) * slope_density(p, q, bottom.sigma))};
+}
+
+// Gauss-Hermite nodes per slope axis: 32 x 32 evaluations per direction pair.
+constexpr int kSlopeNodes = 32;
+
 }  // namespace
 
 UnscatteredLight::UnscatteredLight(const Material& material) : tau_(material.tau) {
@@ -109,40 +163,26 @@ double UnscatteredLight::brdf(double theta_i, double theta_o, double phi) const 
 double two_interface_btdf(const RoughDielectric& top, const RoughDielectric& bottom, double tau, const Vec3& wi,
                           const Vec3& wo) {
   if (wi.z() <= 0.0 || wo.z() >= 0.0) return 0.0;
-  // Light from the air travelling down into the layer (eta_rel = n_layer / n_air), and the exit direction traced
-  // backward: travelling up from below into the layer (eta_rel = n_layer / n_below), then reversed.
+  // Sample the narrower lobe by its slopes; the other is then the smoother factor.
   const std::optional<Lobe> entry = refracted_lobe(-wi, 1.0, top.eta, top.sigma, 1.0);
   const std::optional<Lobe> exit = refracted_lobe(-wo, -1.0, 1.0 / bottom.eta, bottom.sigma, -1.0);
-  if (!entry || !exit) return 0.0;
-  const Mat2 precision_entry = entry->covariance.inverse();
-  const Mat2 precision_exit = exit->covariance.inverse();
-  const Mat2 covariance = (precision_entry + precision_exit).inverse();
-  const Vec2 centre = covariance * (precision_entry * entry->centre + precision_exit * exit->centre);
-  const Eigen::SelfAdjointEigenSolver<Mat2> axes(covariance);
-  constexpr double kWiden = 1.3;
-  const Mat2 frame = axes.eigenvectors() * axes.eigenvalues().cwiseMax(0.0).cwiseSqrt().asDiagonal() * kWiden;
-  const double area = std::abs(frame.determinant());
-
-  constexpr int kPoints = 25;
-  constexpr double kHalfRange = 6.0;
-  constexpr double kStep = 2.0 * kHalfRange / (kPoints - 1);
-  const double g1_wi = smith_g1_beckmann(wi.z(), top.sigma);
-  const double g1_wo = smith_g1_beckmann(wo.z(), bottom.sigma);
+  const bool by_exit = entry && exit && exit->covariance.determinant() < entry->covariance.determinant();
+  static const QuadratureRule rule = gauss_hermite(kSlopeNodes);
   double sum = 0.0;
-  for (int a = 0; a < kPoints; ++a) {
-    for (int b = 0; b < kPoints; ++b) {
-      const Vec2 u(-kHalfRange + a * kStep, -kHalfRange + b * kStep);
-      const Vec2 x = centre + frame * u;
-      const double r2 = x.squaredNorm();
-      if (r2 >= 1.0) continue;
-      const Vec3 d(x.x(), x.y(), -std::sqrt(1.0 - r2));
-      const double into = microfacet_btdf(top, wi, d, g1_wi, smith_g1_beckmann(d.z(), top.sigma));
-      if (into == 0.0) continue;
-      const double out = microfacet_btdf(bottom, -d, wo, smith_g1_beckmann(d.z(), bottom.sigma), g1_wo);
-      sum += into * attenuation(tau, -d.z()) * out;
+  for (int a = 0; a < rule.size(); ++a) {
+    for (int b = 0; b < rule.size(); ++b) {
+      const double w = rule.weights[a] * rule.weights[b] * kInvPi;
+      if (by_exit) {
+        const std::optional<SlopeSample> s =
+            sample_exit(bottom, wo, bottom.sigma * rule.nodes[a], bottom.sigma * rule.nodes[b]);
+        if (s) sum += w * s->weight * attenuation(tau, -s->d.z()) * microfacet_btdf(top, wi, s->d);
+      } else {
+        const std::optional<SlopeSample> s = sample_entry(top, wi, top.sigma * rule.nodes[a], top.sigma * rule.nodes[b]);
+        if (s) sum += w * s->weight * attenuation(tau, -s->d.z()) * microfacet_btdf(bottom, -s->d, wo);
+      }
     }
   }
-  return sum * area * kStep * kStep;
+  return sum;
 }
 
 }  // namespace skinlayer

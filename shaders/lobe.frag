@@ -33,7 +33,8 @@ void main() {
   vec3 wi = vec3(sin(u_theta_i), 0.0, cos(u_theta_i));
   vec3 wo = vec3(sin(theta_o) * cos(phi), 0.0, cos(theta_o));
   float surface = reflection ? microfacet_brdf(wi, wo, u_eta, u_sigma) : 0.0;
-  vec3 sub = reflection ? brdf_subsurface(u_theta_i, theta_o, phi) : btdf_layer(u_theta_i, theta_o, phi);
+  vec3 sub = reflection ? brdf_subsurface(u_theta_i, theta_o, phi) + vec3(unscattered_brdf(wi, wo))
+                        : btdf_layer(u_theta_i, theta_o, phi) + vec3(unscattered_btdf_in_plane(p.x >= 0.0 ? theta_o : -theta_o));
   float f_sub = (sub.r + sub.g + sub.b) / 3.0;
   float r_sub = lobe_radius(f_sub);
   float r_total = lobe_radius(f_sub + surface);

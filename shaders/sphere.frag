@@ -41,7 +41,7 @@ void main() {
       vec3 a = local_angles(n, u_light, v);
       vec3 wi = vec3(sin(a.x), 0.0, cos(a.x));
       vec3 wo = vec3(sin(a.y) * cos(a.z), sin(a.y) * sin(a.z), cos(a.y));
-      vec3 f = vec3(microfacet_brdf(wi, wo, u_eta, u_sigma)) + brdf_subsurface(a.x, a.y, a.z);
+      vec3 f = vec3(microfacet_brdf(wi, wo, u_eta, u_sigma) + unscattered_brdf(wi, wo)) + brdf_subsurface(a.x, a.y, a.z);
       radiance = f * u_irradiance * cos_i;
     }
   }

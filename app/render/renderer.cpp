@@ -14,7 +14,8 @@ gl::Program build(std::string_view fragment) {
   const std::string_view version = shader_source("version.glsl");
   const std::vector<std::string_view> vertex = {version, shader_source("fullscreen.vert")};
   const std::vector<std::string_view> pieces = {version, shader_source("table_layout.h"), shader_source("common.glsl"),
-                                                shader_source("tables.glsl"), shader_source(fragment)};
+                                                shader_source("tables.glsl"), shader_source("unscattered.glsl"),
+                                                shader_source(fragment)};
   return gl::link_program(vertex, pieces);
 }
 
@@ -39,8 +40,11 @@ std::array<double, 2> view_extent(const Viewport& viewport, double margin) {
 }
 
 Renderer::Renderer()
-    : sphere_(build("sphere.frag")), lobe_(build("lobe.frag")), vertex_array_(gl::create_vertex_array()) {
-  const TableTextureData empty{2, 0, std::vector<float>(16, 0.0f), std::vector<float>(16, 0.0f)};
+    : sphere_(build("sphere.frag")),
+      lobe_(build("lobe.frag")),
+      unscattered_plane_(gl::create_texture()),
+      vertex_array_(gl::create_vertex_array()) {
+  const TableTextureData empty{2, 0, std::vector<float>(16, 0.0f), std::vector<float>(16, 0.0f), {}};
   for (int slot = 0; slot < kTableSlots; ++slot) {
     slots_[slot].reflection = gl::create_texture();
     slots_[slot].transmission = gl::create_texture();
@@ -54,6 +58,7 @@ void Renderer::upload(const TableTextureData& tables, int slot) {
   upload_array(target.reflection.get(), tables.size, tables.modes, tables.reflection);
   upload_array(target.transmission.get(), tables.size, tables.modes, tables.transmission);
   target.modes = tables.modes;
+  target.unscattered = tables.unscattered;
   gl::check_errors("Renderer::upload");
 }
 
@@ -66,6 +71,12 @@ void Renderer::bind_tables(GLuint program, int slot) const {
   glUniform1i(location(program, "u_reflection"), 0);
   glUniform1i(location(program, "u_transmission"), 1);
   glUniform1i(location(program, "u_modes"), tables.modes);
+  // The closed-form unscattered BRDF of an open top over a rough bottom (shaders/unscattered.glsl).
+  const UnscatteredLight& light = tables.unscattered;
+  glUniform1i(location(program, "u_unscattered_reflects"), light.path() == UnscatteredPath::BottomOnly ? 1 : 0);
+  glUniform1f(location(program, "u_tau"), static_cast<float>(light.tau()));
+  glUniform1f(location(program, "u_bottom_eta"), static_cast<float>(light.bottom().eta));
+  glUniform1f(location(program, "u_bottom_sigma"), static_cast<float>(light.bottom().sigma));
 }
 
 GLuint Renderer::begin_view(GLuint program, const SurfaceParams& surface, const Viewport& viewport, double margin,
@@ -102,8 +113,23 @@ void Renderer::draw_lobes(const LobeView& view, const SurfaceParams& surface, co
   glUniform1f(location(program, "u_peak"), static_cast<float>(view.peak));
   glUniform1f(location(program, "u_decades"), static_cast<float>(view.decades));
   glUniform1i(location(program, "u_output_linear"), view.linear_output ? 1 : 0);
+  const UnscatteredPlane& plane = view.unscattered;
+  const std::vector<float> none(2, 0.0f);
+  const std::vector<float>& samples = plane.btdf.size() >= 2 ? plane.btdf : none;
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_2D, unscattered_plane_.get());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, static_cast<GLsizei>(samples.size()), 1, 0, GL_RED, GL_FLOAT,
+               samples.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glUniform1i(location(program, "u_unscattered_plane"), 2);
+  glUniform4f(location(program, "u_unscattered_map"), static_cast<float>(plane.centre), static_cast<float>(plane.scale),
+              static_cast<float>(plane.u_min), static_cast<float>(plane.u_max));
   glBindVertexArray(vertex_array_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glActiveTexture(GL_TEXTURE0);
   gl::check_errors("Renderer::draw_lobes");
 }
 

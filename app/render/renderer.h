@@ -7,6 +7,7 @@
 
 #include "app/gl/gl_objects.h"
 #include "app/render/table_textures.h"
+#include "app/render/unscattered_plane.h"
 
 namespace skinlayer {
 
@@ -35,6 +36,7 @@ struct LobeView {
   double peak = 1.0;     // BSDF value [1/sr] drawn at the outer circle
   double decades = 3.0;  // log scale: decades between the outer circle and the centre
   bool linear_output = false;  // write (total radius, subsurface radius, pixel radius) in RGB (tests)
+  UnscatteredPlane unscattered;  // the shown model's unscattered BTDF in the plane of incidence at theta_i
 };
 
 // Half-size of a view in units of the sphere radius / plot radius: the larger axis shows `margin` radii.
@@ -61,6 +63,7 @@ class Renderer {
     gl::Texture reflection;
     gl::Texture transmission;
     int modes = 0;
+    UnscatteredLight unscattered;
   };
 
   void bind_tables(GLuint program, int slot) const;
@@ -70,6 +73,7 @@ class Renderer {
 
   gl::Program sphere_;
   gl::Program lobe_;
+  gl::Texture unscattered_plane_;  // the lobe plot's in-plane unscattered BTDF, refilled by every draw_lobes
   gl::VertexArray vertex_array_;
   std::array<TableSlot, kTableSlots> slots_;
 };

@@ -29,17 +29,28 @@ Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, d
   scene.sphere.exposure = exposure;
   scene.lobes.theta_i = light_theta;
   scene.lobes.log_scale = log_scale;
+  scene.lobes.unscattered = sample_unscattered_plane(tables.channels[0].unscattered(), light_theta);
+  // The peak over the plot: every half degree, and every sample of the unscattered lobe (which can be narrower).
+  // The BTDF is the tables' scattered part plus the sampled unscattered part, as the lobe shader adds them.
+  std::vector<double> signed_angles;
+  for (int k = -180; k <= 180; ++k) signed_angles.push_back(0.5 * kPi * k / 180.0);
+  const std::vector<float>& samples = scene.lobes.unscattered.btdf;
+  for (std::size_t k = 0; k < samples.size(); ++k) {
+    const UnscatteredPlane& plane = scene.lobes.unscattered;
+    const double u = plane.u_min + (plane.u_max - plane.u_min) * static_cast<double>(k) /
+                     static_cast<double>(samples.size() - 1);
+    signed_angles.push_back(std::clamp(plane.centre + plane.scale * std::sinh(u), -0.5 * kPi, 0.5 * kPi));
+  }
   double peak = 0.0;
-  for (int k = 0; k <= 180; ++k) {
-    const double theta_o = 0.5 * kPi * k / 180.0;
-    for (double phi : {0.0, kPi}) {
-      double reflected = 0.0, transmitted = 0.0;
-      for (int c = 0; c < 3; ++c) {
-        reflected += brdf_total(tables, c, light_theta, theta_o, phi) / 3.0;
-        transmitted += btdf_total(tables, c, light_theta, theta_o, phi) / 3.0;
-      }
-      peak = std::max({peak, reflected, transmitted});
+  for (const double s : signed_angles) {
+    const double theta_o = std::abs(s);
+    const double phi = s >= 0.0 ? kPi : 0.0;
+    double reflected = 0.0, transmitted = unscattered_plane_value(scene.lobes.unscattered, s);
+    for (int c = 0; c < 3; ++c) {
+      reflected += brdf_total(tables, c, light_theta, theta_o, phi) / 3.0;
+      transmitted += tables.channels[c].btdf_scattered(light_theta, theta_o, phi) / 3.0;
     }
+    peak = std::max({peak, reflected, transmitted});
   }
   scene.lobes.peak = peak > 0.0 ? peak : 1.0;
   return scene;

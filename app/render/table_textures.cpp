@@ -19,6 +19,7 @@ TableTextureData make_table_textures(const ColorTables& tables) {
     source[c] = distinct.size() - 1;
   }
   data.size = distinct.front().grid_size();
+  data.unscattered = tables.channels[0].unscattered();  // the same for every channel: no albedo in it
   const std::size_t plane = static_cast<std::size_t>(data.size) * data.size;
   data.reflection.assign(static_cast<std::size_t>(data.modes) * plane * 4, 0.0f);
   data.transmission.assign(data.reflection.size(), 0.0f);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/render/material_solve.h"
+#include "core/unscattered_light.h"
 
 namespace skinlayer {
 
@@ -13,6 +14,7 @@ struct TableTextureData {
   int modes = 0;  // layers
   std::vector<float> reflection;    // [mode][row = theta_i][column = theta_o][RGBA]
   std::vector<float> transmission;  // same layout
+  UnscatteredLight unscattered;     // not in the textures: the shaders evaluate it (shaders/unscattered.glsl)
 };
 
 TableTextureData make_table_textures(const ColorTables& tables);

@@ -1,0 +1,57 @@
+#include "app/render/unscattered_plane.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/conventions.h"
+
+namespace skinlayer {
+namespace {
+
+// n_below / n_above of the whole layer: the flat interfaces' exit obeys sin(theta_o) = sin(theta_i) / ratio.
+double index_ratio(const UnscatteredLight& light) {
+  switch (light.path()) {
+    case UnscatteredPath::TopOnly:
+      return light.top().eta;
+    case UnscatteredPath::BottomOnly:
+      return light.bottom().eta;
+    case UnscatteredPath::TopThenBottom:
+      return light.top().eta * light.bottom().eta;
+    case UnscatteredPath::None:
+      break;
+  }
+  return 1.0;
+}
+
+double sample_angle(const UnscatteredPlane& plane, int k, int n) {
+  const double u = plane.u_min + (plane.u_max - plane.u_min) * k / (n - 1);
+  return plane.centre + plane.scale * std::sinh(u);
+}
+
+}  // namespace
+
+UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double theta_i, int samples) {
+  UnscatteredPlane plane;
+  if (light.path() == UnscatteredPath::None || samples < 2) return plane;
+  plane.centre = std::asin(std::min(1.0, std::sin(theta_i) / index_ratio(light)));
+  plane.u_min = std::asinh((-0.5 * kPi - plane.centre) / plane.scale);
+  plane.u_max = std::asinh((0.5 * kPi - plane.centre) / plane.scale);
+  plane.btdf.resize(static_cast<std::size_t>(samples));
+  for (int k = 0; k < samples; ++k) {
+    const double s = std::clamp(sample_angle(plane, k, samples), -0.5 * kPi, 0.5 * kPi);
+    plane.btdf[static_cast<std::size_t>(k)] = static_cast<float>(light.btdf(theta_i, std::abs(s), s >= 0.0 ? kPi : 0.0));
+  }
+  return plane;
+}
+
+double unscattered_plane_value(const UnscatteredPlane& plane, double signed_theta_o) {
+  const int n = static_cast<int>(plane.btdf.size());
+  if (n < 2) return 0.0;
+  const double u = std::asinh((signed_theta_o - plane.centre) / plane.scale);
+  const double x = std::clamp((u - plane.u_min) / (plane.u_max - plane.u_min), 0.0, 1.0) * (n - 1);
+  const int cell = std::min(static_cast<int>(x), n - 2);
+  const double t = x - cell;
+  return (1.0 - t) * plane.btdf[static_cast<std::size_t>(cell)] + t * plane.btdf[static_cast<std::size_t>(cell) + 1];
+}
+
+}  // namespace skinlayer
