@@ -97,5 +97,57 @@ TEST_P(LobePlot, RadiusAlongRaysMatchesCpu) {
 
 INSTANTIATE_TEST_SUITE_P(Scales, LobePlot, ::testing::Values(false, true));
 
+// Sharp refraction lobes, narrower than the tables' grid: the GPU adds the unscattered part from its in-plane
+// texture, and must agree with the CPU's exact evaluation at every pixel across the lobe, the peak included. Each
+// pixel is judged at its own centre's angle (a pixel spans ~0.5 degree here, half the lobe's width).
+TEST(LobePlotSharp, EveryPixelAcrossTheUnscatteredLobeMatchesCpu) {
+  struct Case {
+    double sigma, transparency, albedo;
+    BottomKind bottom;
+    double theta_i_deg, exit_deg;  // the lobe's flat-interface exit angle (forward side)
+  };
+  const Case cases[] = {
+      {0.05, 0.2, 0.0, BottomKind::Matched, 30.0, 20.92},  // one interface: into the index-matched medium
+      {0.1, 0.5, 0.5, BottomKind::Air, 30.0, 30.0},        // two interfaces, air on both sides
+  };
+  for (const Case& c : cases) {
+    ColorMaterial material;
+    material.layer.sigma = c.sigma;
+    material.layer.tau = optical_depth_from_transparency(c.transparency);
+    material.layer.bottom.kind = c.bottom;
+    material.albedo_rgb = {c.albedo, c.albedo, c.albedo};
+    const double theta_i = degrees_to_radians(c.theta_i_deg);
+    const ColorTables tables = solve_color(material, theta_i);
+    gl::OsmesaContext context(kSize, kSize);
+    Renderer renderer;
+    renderer.upload(make_table_textures(tables));
+    Scene scene = make_scene(tables, ViewKind::Polar, theta_i, 0.0, 1.0, false);
+    scene.lobes.linear_output = true;
+    RenderTarget target(kSize, kSize, PixelFormat::Rgba32F);
+    target.bind();
+    draw_scene(renderer, scene, kSize, kSize);
+    RenderTarget::unbind();
+    const std::vector<float> radii = target.read_rgba32f();
+    const std::array<double, 2> extent = view_extent({0, 0, kSize, kSize}, Renderer::kLobeMargin);
+    double largest = 0.0;
+    int judged = 0;
+    // Pixels along the ray through the lobe's centre at plot radius 0.5, stepping one pixel sideways each.
+    const double centre = kPi - degrees_to_radians(c.exit_deg);
+    for (int step = -12; step <= 12; ++step) {
+      const auto [x, y] = pixel_at(centre + step * 0.0075, 0.5);
+      const double px = ((x + 0.5) / kSize * 2.0 - 1.0) * extent[0];
+      const double py = (1.0 - (y + 0.5) / kSize * 2.0) * extent[1];
+      const double f = cpu_lobe_value(tables, theta_i, std::atan2(px, py));
+      largest = std::max(largest, f / scene.lobes.peak);
+      const float gpu = radii[(static_cast<std::size_t>(y) * kSize + x) * 4];
+      EXPECT_NEAR(gpu, f / scene.lobes.peak, 1e-2 * f / scene.lobes.peak + 2e-3)
+          << "sigma " << c.sigma << " pixel " << x << ", " << y;
+      ++judged;
+    }
+    EXPECT_EQ(judged, 25);
+    EXPECT_GT(largest, 0.9) << "the pixels must cross the lobe's peak (the plot's largest value)";
+  }
+}
+
 }  // namespace
 }  // namespace skinlayer
