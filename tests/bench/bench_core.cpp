@@ -16,6 +16,7 @@
 #include "core/reference/monte_carlo.h"
 #include "core/slab_eigen.h"
 #include "core/solver.h"
+#include "core/unscattered_light.h"
 #include "tests/bench/benchmark_report.h"
 #include "tests/bench/solve_stages.h"
 
@@ -34,6 +35,18 @@ void BM_SolveDefault(benchmark::State& state) {
   state.counters["modes"] = solve(material).modes();
 }
 BENCHMARK(BM_SolveDefault)->Unit(benchmark::kMillisecond);
+
+// One evaluation of the unscattered BTDF (core/unscattered_light.h) at the default material: two rough interfaces,
+// the 32 x 32 slope quadrature, near the straight-through direction. The cost of every tables.btdf() call there.
+void BM_UnscatteredBtdfTwoInterfaces(benchmark::State& state) {
+  const UnscatteredLight light{Material{}};
+  double theta_o = degrees_to_radians(40.0);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(light.btdf(degrees_to_radians(45.0), theta_o, kPi));
+    theta_o = theta_o > degrees_to_radians(50.0) ? degrees_to_radians(40.0) : theta_o + 1e-3;
+  }
+}
+BENCHMARK(BM_UnscatteredBtdfTwoInterfaces)->Unit(benchmark::kMicrosecond);
 
 // The solve at a fixed number of ordinates per hemisphere, N = 8 .. 128. N = 8 is below the default material's
 // minimum (6/sigma and the g = 0.8 phase function need 12), so the sweep uses sigma 0.8 and g 0.5, the rest default.
