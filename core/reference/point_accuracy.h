@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/material.h"
+#include "core/solver.h"
 
 namespace skinlayer {
 
@@ -36,6 +37,9 @@ struct PointAccuracy {
 std::vector<double> judged_exit_angles(const Material& material, double theta_i);
 
 // Compares at theta_i (radians) for each of `incidence`, at phi 0, 90 and 180 degrees and judged_exit_angles.
-PointAccuracy point_accuracy(const Material& material, std::span<const double> incidence);
+// `options` apply to both solves (the converged one gets its table size on top): exact_unscattered = false judges
+// the all-ordinates method.
+PointAccuracy point_accuracy(const Material& material, std::span<const double> incidence,
+                             const SolveOptions& options = {});
 
 }  // namespace skinlayer
