@@ -60,41 +60,30 @@ std::vector<SweepCase> sweep_cases() {
   vary("T", {0.0, 0.05, 0.5, 0.9}, [](Material& m, double v) { m.tau = optical_depth_from_transparency(v); });
   vary("g", {0.0, 0.9}, [](Material& m, double v) { m.g = v; });
   vary("albedo", {0.0, 1.0}, [](Material& m, double v) { m.albedo = v; });
-  for (const char* bottom : {"matched", "lambert:0.8"}) {
+  // Named variants of the base, several parameters at once: sharp interfaces with thin or forward-scattering layers.
+  const auto add = [&](const std::string& parameter, const std::string& value, const std::string& sigma,
+                       const std::string& eta, const std::string& transparency, const std::string& g,
+                       const std::string& albedo, const std::string& bottom) {
     Material m = base_material();
-    m.bottom = parse_bottom(bottom);
-    cases.push_back({"bottom", bottom, m});
-  }
+    if (!sigma.empty()) m.sigma = std::stod(sigma);
+    if (!eta.empty()) m.eta = std::stod(eta);
+    if (!transparency.empty()) m.tau = optical_depth_from_transparency(std::stod(transparency));
+    if (!g.empty()) m.g = std::stod(g);
+    if (!albedo.empty()) m.albedo = std::stod(albedo);
+    if (!bottom.empty()) m.bottom = parse_bottom(bottom);
+    cases.push_back({parameter, value, m});
+  };
+  add("bottom", "matched", "", "", "", "", "", "matched");
+  add("bottom", "lambert:0.8", "", "", "", "", "", "lambert:0.8");
   {
     Material m = base_material();
     m.bottom.sigma = 0.1;
     m.bottom.eta = 1.2;
     cases.push_back({"bottom", "air, unlike the top (σ3 0.1, η3 1.2)", m});
   }
-  {
-    Material m = base_material();
-    m.sigma = 0.05;
-    m.tau = optical_depth_from_transparency(0.9);
-    m.g = 0.9;
-    m.albedo = 1.0;
-    cases.push_back({"interacting", "σ 0.05 T 0.9 g 0.9 Ω 1", m});
-  }
-  {
-    Material m = base_material();
-    m.sigma = 0.05;
-    m.tau = optical_depth_from_transparency(0.5);
-    m.g = 0.9;
-    m.albedo = 1.0;
-    m.bottom = parse_bottom("matched");
-    cases.push_back({"interacting", "σ 0.05 T 0.5 g 0.9 Ω 1 matched", m});
-  }
-  {
-    Material m = base_material();
-    m.sigma = 0.1;
-    m.eta = 1.05;
-    m.tau = optical_depth_from_transparency(0.5);
-    cases.push_back({"interacting", "σ 0.1 η 1.05 T 0.5", m});
-  }
+  add("interacting", "σ 0.05 T 0.9 g 0.9 Ω 1", "0.05", "", "0.9", "0.9", "1", "");
+  add("interacting", "σ 0.05 T 0.5 g 0.9 Ω 1 matched", "0.05", "", "0.5", "0.9", "1", "matched");
+  add("interacting", "σ 0.1 η 1.05 T 0.5", "0.1", "1.05", "0.5", "", "", "");
   return cases;
 }
 

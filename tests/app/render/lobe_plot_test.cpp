@@ -37,6 +37,23 @@ std::array<int, 2> pixel_at(double angle, double r) {
   return {static_cast<int>((px / extent[0] + 1.0) * 0.5 * kSize), static_cast<int>((1.0 - py / extent[1]) * 0.5 * kSize)};
 }
 
+// The lobe plot of `tables` (uploaded to the renderer, whose context is current) at theta_i drawn offscreen into a
+// float target: the scene and the (total radius, subsurface radius, pixel radius) texels.
+struct LobeRender {
+  Scene scene;
+  std::vector<float> radii;
+};
+LobeRender render_lobe_radii(const Renderer& renderer, const ColorTables& tables, double theta_i, bool log_scale) {
+  LobeRender result{make_scene(tables, ViewKind::Polar, theta_i, 0.0, 1.0, log_scale), {}};
+  result.scene.lobes.linear_output = true;
+  RenderTarget target(kSize, kSize, PixelFormat::Rgba32F);
+  target.bind();
+  draw_scene(renderer, result.scene, kSize, kSize);
+  RenderTarget::unbind();
+  result.radii = target.read_rgba32f();
+  return result;
+}
+
 class LobePlot : public ::testing::TestWithParam<bool> {};
 
 TEST_P(LobePlot, RadiusAlongRaysMatchesCpu) {
@@ -48,13 +65,9 @@ TEST_P(LobePlot, RadiusAlongRaysMatchesCpu) {
   gl::OsmesaContext context(kSize, kSize);
   Renderer renderer;
   renderer.upload(make_table_textures(tables));
-  Scene scene = make_scene(tables, ViewKind::Polar, theta_i, 0.0, 1.0, log_scale);
-  scene.lobes.linear_output = true;
-  RenderTarget target(kSize, kSize, PixelFormat::Rgba32F);
-  target.bind();
-  draw_scene(renderer, scene, kSize, kSize);
-  RenderTarget::unbind();
-  const std::vector<float> radii = target.read_rgba32f();
+  LobeRender lobes = render_lobe_radii(renderer, tables, theta_i, log_scale);
+  Scene& scene = lobes.scene;
+  const std::vector<float>& radii = lobes.radii;
   int checked = 0;
   for (double degrees : {-80.0, -45.0, -10.0, 20.0, 50.0, 75.0, 110.0, 150.0, 170.0, -150.0}) {
     const double angle = degrees_to_radians(degrees);
@@ -121,13 +134,9 @@ TEST(LobePlotSharp, EveryPixelAcrossTheUnscatteredLobeMatchesCpu) {
     gl::OsmesaContext context(kSize, kSize);
     Renderer renderer;
     renderer.upload(make_table_textures(tables));
-    Scene scene = make_scene(tables, ViewKind::Polar, theta_i, 0.0, 1.0, false);
-    scene.lobes.linear_output = true;
-    RenderTarget target(kSize, kSize, PixelFormat::Rgba32F);
-    target.bind();
-    draw_scene(renderer, scene, kSize, kSize);
-    RenderTarget::unbind();
-    const std::vector<float> radii = target.read_rgba32f();
+    const LobeRender lobes = render_lobe_radii(renderer, tables, theta_i, false);
+    const Scene& scene = lobes.scene;
+    const std::vector<float>& radii = lobes.radii;
     const std::array<double, 2> extent = view_extent({0, 0, kSize, kSize}, Renderer::kLobeMargin);
     double largest = 0.0;
     int judged = 0;
