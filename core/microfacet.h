@@ -25,6 +25,8 @@ double smith_g1_beckmann(double cos_theta, double sigma);
 struct RoughDielectric {
   double eta = 1.4;    // n_below / n_above
   double sigma = 0.5;  // Beckmann RMS slope
+
+  bool operator==(const RoughDielectric&) const = default;
 };
 
 // Reflection on either side:

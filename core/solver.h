@@ -6,6 +6,7 @@
 // interface, tabulated on a polar-angle grid and splined.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -13,6 +14,8 @@
 #include "core/material.h"
 
 namespace skinlayer {
+
+class SolveCache;
 
 struct SolveOptions {
   int table_size = 0;                // polar grid points on [0, pi/2] for the tables; 0 = default
@@ -22,6 +25,12 @@ struct SolveOptions {
   // requested directions (core/unscattered_light.h) and the tables hold the rest; false: every path on the discrete
   // ordinates and the tables, as Stam 2001 publishes the method (for convergence studies and comparisons).
   bool exact_unscattered = true;
+  // The caller's cache of interface operators (core/solve_cache.h); null = build them for this solve only.
+  SolveCache* cache = nullptr;
+  // The caller's parallel-for: runs body(0) ... body(count - 1), each once, possibly side by side, and returns when
+  // all have (rethrowing the first exception). The solver runs independent albedos (RGB channels) through it; core
+  // itself starts no threads. Empty = one after another.
+  std::function<void(int count, const std::function<void(int)>& body)> parallel_for;
 };
 
 // The discretization a solve uses, chosen from the material (and its ordinates override).
@@ -29,6 +38,8 @@ struct Resolution {
   int ordinates;          // N, discrete ordinates per hemisphere
   int max_modes;          // cap on Fourier modes
   int table_size;         // K, polar grid size of the tables
+  int interface_modes;    // Fourier modes the interface operators are projected onto: max_modes rounded up to a
+                          // multiple of 16, so that a change of g or of the mode cap keeps them (SolveCache)
   int interface_azimuths; // azimuth samples on [0, pi] for projecting interface BSDFs
   int phase_azimuths;     // azimuth samples on [0, pi] for projecting the phase function
 };

@@ -50,6 +50,8 @@ class UnscatteredLight {
   const RoughDielectric& bottom() const { return bottom_; }  // frame +z up into the layer: eta = n_below / n_layer
   double tau() const { return tau_; }
 
+  bool operator==(const UnscatteredLight&) const = default;
+
  private:
   UnscatteredPath path_ = UnscatteredPath::None;
   RoughDielectric top_{};

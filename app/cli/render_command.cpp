@@ -10,6 +10,7 @@
 #include "app/cli/model_flag.h"
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/process/parallel_for.h"
 #include "app/gl/osmesa_context.h"
 #include "app/render/material_solve.h"
 #include "app/render/png_export.h"
@@ -138,7 +139,9 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
   const std::string_view scale = flags.value("scale").value_or("linear");
   if (scale != "linear" && scale != "log") throw UsageError("scale = " + quoted(scale) + " is not linear or log");
 
-  const ColorTables tables = solve_color(material, light_theta);
+  SolveOptions solve_options;  // the RGB channels side by side
+  solve_options.parallel_for = parallel_for_threads;
+  const ColorTables tables = solve_color(material, light_theta, solve_options);
   gl::OsmesaContext context(width, height);
   Renderer renderer;
   renderer.upload(make_table_textures(tables));
@@ -146,7 +149,7 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
     for (std::size_t k = 0; k < kCompareSlots.size(); ++k) {
       ColorMaterial compared = material;
       compared.model = kCompareModels[k];
-      const ColorTables solved = compared.model == material.model ? tables : solve_color(compared, light_theta);
+      const ColorTables solved = compared.model == material.model ? tables : solve_color(compared, light_theta, solve_options);
       renderer.upload(make_table_textures(solved), kCompareSlots[k]);
     }
   }

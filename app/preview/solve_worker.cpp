@@ -1,5 +1,6 @@
 #include "app/preview/solve_worker.h"
 
+#include "app/process/parallel_for.h"
 #include "app/render/scene.h"
 
 #include <chrono>
@@ -8,7 +9,7 @@
 
 namespace skinlayer {
 
-SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation) {
+SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation, const SolveOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   SolveResult result;
   result.generation = generation;
@@ -19,7 +20,7 @@ SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation)
       if (!needed[m]) continue;
       ColorMaterial material = request.material;
       material.model = static_cast<SubsurfaceModel>(m);
-      result.by_model[m] = solve_color(material, request.theta_i);
+      result.by_model[m] = solve_color(material, request.theta_i, options);
       result.textures_by_model[m] = make_table_textures(*result.by_model[m]);
     }
   } catch (const std::exception& error) {
@@ -73,7 +74,10 @@ void SolveWorker::run(std::stop_token stop) {
       pending_.reset();
       generation = submitted_;
     }
-    SolveResult result = compute_solve(request, generation);
+    SolveOptions options;
+    options.cache = &cache_;
+    options.parallel_for = parallel_for_threads;
+    SolveResult result = compute_solve(request, generation, options);
     std::optional<SolveResult> dropped;  // a stale or unpolled result, freed after the lock is released
     bool published = false;
     {

@@ -24,6 +24,7 @@
 #include "app/preview/solve_request.h"
 #include "app/render/material_solve.h"
 #include "app/render/table_textures.h"
+#include "core/solve_cache.h"
 
 namespace skinlayer {
 
@@ -82,10 +83,12 @@ class SolveWorker {
   std::uint64_t published_ = 0;          // generation of the newest result made available to poll()
   std::optional<SolveResult> finished_;  // published, not yet polled
   SolveWorkerStats stats_;
+  SolveCache cache_;     // used by the worker thread only: re-solves that keep the interfaces reuse their operators
   std::jthread thread_;  // last: started after every member above exists, joined before they go
 };
 
 // Runs one request on the calling thread: what the worker does for each job. Exceptions become SolveResult::error.
-SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation);
+// `options` carry the worker's cache of interface operators and the parallel-for over the RGB channels.
+SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation, const SolveOptions& options = {});
 
 }  // namespace skinlayer

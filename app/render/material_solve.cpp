@@ -32,7 +32,7 @@ DirectionalAlbedo model_albedo(const LayerTables& tables, const DirectionalAlbed
 
 }  // namespace
 
-ColorTables solve_color(const ColorMaterial& material, double theta_i) {
+ColorTables solve_color(const ColorMaterial& material, double theta_i, const SolveOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   ColorTables result;
   result.material = material;
@@ -48,15 +48,15 @@ ColorTables solve_color(const ColorMaterial& material, double theta_i) {
   std::vector<LayerTables> tables;
   std::vector<DirectionalAlbedo> albedo;
   const std::vector<std::vector<DirectionalAlbedo>> layer_albedo =
-      directional_albedo(material.layer, std::vector<double>{theta_i}, distinct);
+      directional_albedo(material.layer, std::vector<double>{theta_i}, distinct, options);
   if (material.model == SubsurfaceModel::Stam) {
-    tables = solve(material.layer, distinct);
+    tables = solve(material.layer, distinct, options);
     for (const std::vector<DirectionalAlbedo>& rows : layer_albedo) albedo.push_back(rows.front());
   } else {
     for (std::size_t d = 0; d < distinct.size(); ++d) {
       Material layer = material.layer;
       layer.albedo = distinct[d];
-      tables.push_back(solve_model(layer, material.model));
+      tables.push_back(solve_model(layer, material.model, options));
       albedo.push_back(model_albedo(tables.back(), layer_albedo[d].front()));
     }
   }

@@ -29,7 +29,8 @@ struct ColorTables {
 // Validates the material (every channel) and solves each distinct albedo value once; also the directional albedo
 // at theta_i (radians): the layer's from the solver, or for a comparison model its tables integrated over the
 // hemisphere (with the same surface reflectance). Throws ParameterError for invalid parameters.
-ColorTables solve_color(const ColorMaterial& material, double theta_i = 0.0);
+// `options` pass the caller's cache and parallel-for through to core (SolveOptions).
+ColorTables solve_color(const ColorMaterial& material, double theta_i = 0.0, const SolveOptions& options = {});
 
 // The surface term plus the subsurface BRDF of one channel, and the BTDF, in 1/sr (graphics convention, radians).
 double brdf_total(const ColorTables& tables, int channel, double theta_i, double theta_o, double phi);

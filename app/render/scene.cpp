@@ -21,7 +21,7 @@ std::array<double, 3> light_direction(double theta, double phi) {
 }
 
 Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, double light_phi, double exposure,
-                 bool log_scale) {
+                 bool log_scale, const Scene* previous) {
   Scene scene;
   scene.view = view;
   scene.surface = {tables.material.layer.eta, tables.material.layer.sigma};
@@ -29,7 +29,8 @@ Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, d
   scene.sphere.exposure = exposure;
   scene.lobes.theta_i = light_theta;
   scene.lobes.log_scale = log_scale;
-  scene.lobes.unscattered = sample_unscattered_plane(tables.channels[0].unscattered(), light_theta);
+  scene.lobes.unscattered = sample_unscattered_plane(tables.channels[0].unscattered(), light_theta, 128,
+                                                     previous ? &previous->lobes.unscattered : nullptr);
   // The peak over the plot: every half degree, and every sample of the unscattered lobe (which can be narrower).
   // The BTDF is the tables' scattered part plus the sampled unscattered part, as the lobe shader adds them.
   std::vector<double> signed_angles;

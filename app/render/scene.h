@@ -36,9 +36,10 @@ struct Scene {
 std::array<double, 3> light_direction(double theta, double phi);
 
 // The scene for a solved material: light, exposure, and the lobe plot scaled so that its largest value (BRDF or
-// BTDF in the plane of incidence, from the CPU evaluation) reaches the outer circle.
+// BTDF in the plane of incidence, from the CPU evaluation) reaches the outer circle. `previous`: the scene shown
+// before, whose sampled unscattered lobe is reused when the interfaces, the depth and the light's angle are the same.
 Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, double light_phi, double exposure,
-                 bool log_scale);
+                 bool log_scale, const Scene* previous = nullptr);
 
 // Viewports of the scene's views in a width x height frame (sphere left, polar right for Both; three equal
 // columns for Compare).

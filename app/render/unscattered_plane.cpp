@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/process/parallel_for.h"
 #include "core/conventions.h"
 
 namespace skinlayer {
@@ -23,6 +24,18 @@ double index_ratio(const UnscatteredLight& light) {
   return 1.0;
 }
 
+// A quarter of the narrowest refracted lobe's width, sigma (1 - 1/n) for an interface of index ratio n >= 1.
+double lobe_scale(const UnscatteredLight& light) {
+  const auto width = [](const RoughDielectric& interface) {
+    const double n = std::max(interface.eta, 1.0 / interface.eta);
+    return interface.sigma * (1.0 - 1.0 / n);
+  };
+  double w = 1.0;
+  if (light.path() != UnscatteredPath::BottomOnly) w = std::min(w, width(light.top()));
+  if (light.path() != UnscatteredPath::TopOnly) w = std::min(w, width(light.bottom()));
+  return std::clamp(0.25 * w, 1e-3, 0.1);
+}
+
 double sample_angle(const UnscatteredPlane& plane, int k, int n) {
   const double u = plane.u_min + (plane.u_max - plane.u_min) * k / (n - 1);
   return plane.centre + plane.scale * std::sinh(u);
@@ -30,17 +43,29 @@ double sample_angle(const UnscatteredPlane& plane, int k, int n) {
 
 }  // namespace
 
-UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double theta_i, int samples) {
+UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double theta_i, int samples,
+                                          const UnscatteredPlane* previous) {
+  if (previous != nullptr && previous->samples(light, theta_i) &&
+      previous->btdf.size() == static_cast<std::size_t>(light.path() == UnscatteredPath::None ? 0 : samples)) {
+    return *previous;
+  }
   UnscatteredPlane plane;
+  plane.light = light;
+  plane.theta_i = theta_i;
   if (light.path() == UnscatteredPath::None || samples < 2) return plane;
   plane.centre = std::asin(std::min(1.0, std::sin(theta_i) / index_ratio(light)));
+  plane.scale = lobe_scale(light);
   plane.u_min = std::asinh((-0.5 * kPi - plane.centre) / plane.scale);
   plane.u_max = std::asinh((0.5 * kPi - plane.centre) / plane.scale);
   plane.btdf.resize(static_cast<std::size_t>(samples));
-  for (int k = 0; k < samples; ++k) {
-    const double s = std::clamp(sample_angle(plane, k, samples), -0.5 * kPi, 0.5 * kPi);
-    plane.btdf[static_cast<std::size_t>(k)] = static_cast<float>(light.btdf(theta_i, std::abs(s), s >= 0.0 ? kPi : 0.0));
-  }
+  constexpr int kChunk = 16;  // samples per task
+  parallel_for_threads((samples + kChunk - 1) / kChunk, [&](int chunk) {
+    for (int k = chunk * kChunk; k < std::min(samples, (chunk + 1) * kChunk); ++k) {
+      const double s = std::clamp(sample_angle(plane, k, samples), -0.5 * kPi, 0.5 * kPi);
+      plane.btdf[static_cast<std::size_t>(k)] =
+          static_cast<float>(light.btdf(theta_i, std::abs(s), s >= 0.0 ? kPi : 0.0));
+    }
+  });
   return plane;
 }
 

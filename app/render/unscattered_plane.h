@@ -4,7 +4,9 @@
 //
 // Samples lie at signed exit angles s (radians; s > 0 forward, phi = pi; s < 0 back, phi = 0) spaced as
 //   s = centre + scale sinh(u),   u uniform in [u_min, u_max],  s spanning [-pi/2, pi/2],
-// finest (scale du ~ 1e-4 rad for 1024 samples) at the flat interfaces' exit direction, 1 degree apart at grazing.
+// finest at the flat interfaces' exit direction, with scale a quarter of the lobe's estimated width
+// (sigma (1 - 1/n) of the sharper interface, n its index ratio): 128 samples put ~9 within one lobe width there and
+// are a few degrees apart at grazing. The samples are computed side by side on the machine's cores.
 // shaders/unscattered.glsl reads it with linear filtering; unscattered_plane_value() is the CPU twin.
 #pragma once
 
@@ -16,13 +18,21 @@ namespace skinlayer {
 
 struct UnscatteredPlane {
   double centre = 0.0;  // the flat interfaces' exit angle, signed [rad]
-  double scale = 0.01;  // [rad]
+  double scale = 0.01;  // [rad], a quarter of the lobe's estimated width
   double u_min = -1.0;
   double u_max = 1.0;
   std::vector<float> btdf;  // [1/sr] at u_k = u_min + k (u_max - u_min) / (n - 1); empty when there is none
+  UnscatteredLight light;   // what was sampled, and at which incident angle
+  double theta_i = -1.0;
+
+  bool samples(const UnscatteredLight& other, double other_theta_i) const {
+    return light == other && theta_i == other_theta_i;
+  }
 };
 
-UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double theta_i, int samples = 1024);
+// With `previous` sampling the same light at the same angle (an albedo or g change), that is returned unchanged.
+UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double theta_i, int samples = 128,
+                                          const UnscatteredPlane* previous = nullptr);
 
 // The texture's value at signed exit angle s: linear interpolation in u, as the GPU filters it.
 double unscattered_plane_value(const UnscatteredPlane& plane, double signed_theta_o);

@@ -184,7 +184,7 @@ class Previewer {
     const double theta = degrees_to_radians(state_.light.theta_degrees);
     const double phi = degrees_to_radians(state_.light.phi_degrees);
     if (scene_generation_ != shown_->generation || scene_theta_ != theta) {  // plots' model scales the lobes
-      scene_ = make_scene(plot_tables(), state_.view.view, theta, phi, 1.0, false);
+      scene_ = make_scene(plot_tables(), state_.view.view, theta, phi, 1.0, false, &scene_);
       scene_generation_ = shown_->generation;
       scene_theta_ = theta;
     }

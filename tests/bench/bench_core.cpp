@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "app/process/parallel_for.h"
 #include "core/boundary_solve.h"
 #include "core/conventions.h"
 #include "core/henyey_greenstein.h"
@@ -15,6 +16,7 @@
 #include "core/quadrature.h"
 #include "core/reference/monte_carlo.h"
 #include "core/slab_eigen.h"
+#include "core/solve_cache.h"
 #include "core/solver.h"
 #include "core/unscattered_light.h"
 #include "tests/bench/benchmark_report.h"
@@ -47,6 +49,55 @@ void BM_UnscatteredBtdfTwoInterfaces(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_UnscatteredBtdfTwoInterfaces)->Unit(benchmark::kMicrosecond);
+
+// A single-channel re-solve after one slider step, the cache warm as the previewer's worker keeps it: Omega and T
+// reuse the interface operators and the phase projections; g (a new value each step) reuses the interface operators
+// and projects the phase function anew; sigma changes the interfaces, so it pays for them (a new value each step).
+template <typename Change>
+void BM_Resolve(benchmark::State& state, Change change) {
+  SolveCache cache;
+  SolveOptions options;
+  options.cache = &cache;
+  Material material;
+  (void)solve(material, options);
+  int step = 0;
+  for (auto _ : state) {
+    change(material, ++step);
+    LayerTables tables = solve(material, options);
+    benchmark::DoNotOptimize(tables);
+  }
+  state.counters["cache_hits"] = cache.hits();
+}
+BENCHMARK_CAPTURE(BM_Resolve, albedo, [](Material& m, int step) { m.albedo = step % 2 ? 0.9 : 0.95; })
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Resolve, T, [](Material& m, int step) {
+  m.tau = optical_depth_from_transparency(step % 2 ? 0.25 : 0.2);
+})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Resolve, g, [](Material& m, int step) { m.g = 0.8 - 1e-5 * (step % 1000); })
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Resolve, sigma, [](Material& m, int step) { m.sigma = 0.5 + 1e-4 * step; })
+    ->Unit(benchmark::kMillisecond);
+
+// The same with the executables' parallel-for (app/process/parallel_for.h): one channel's modes on every core.
+template <typename Change>
+void BM_ResolveParallel(benchmark::State& state, Change change) {
+  SolveCache cache;
+  SolveOptions options;
+  options.cache = &cache;
+  options.parallel_for = parallel_for_threads;
+  Material material;
+  (void)solve(material, options);
+  int step = 0;
+  for (auto _ : state) {
+    change(material, ++step);
+    LayerTables tables = solve(material, options);
+    benchmark::DoNotOptimize(tables);
+  }
+}
+BENCHMARK_CAPTURE(BM_ResolveParallel, albedo, [](Material& m, int step) { m.albedo = step % 2 ? 0.9 : 0.95; })
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveParallel, sigma, [](Material& m, int step) { m.sigma = 0.5 + 1e-4 * step; })
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The solve at a fixed number of ordinates per hemisphere, N = 8 .. 128. N = 8 is below the default material's
 // minimum (6/sigma and the g = 0.8 phase function need 12), so the sweep uses sigma 0.8 and g 0.5, the rest default.

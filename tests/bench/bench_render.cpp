@@ -5,11 +5,13 @@
 #include "app/gl/gl_api.h"
 #include "app/gl/osmesa_context.h"
 #include "app/process/heap_retention.h"
+#include "app/process/parallel_for.h"
 #include "app/render/material_solve.h"
 #include "app/render/render_target.h"
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
 #include "app/render/table_textures.h"
+#include "core/solve_cache.h"
 
 namespace {
 
@@ -55,6 +57,44 @@ void BM_ParameterChangeLatency(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ParameterChangeLatency)->Arg(0)->Arg(1)->ArgNames({"rgb"})->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The previewer's path for one slider step of each parameter, RGB albedo (0.95, 0.8, 0.7), 512 x 512: the worker's
+// cache warm and its parallel-for over the channels, then textures, upload and a finished frame. The value
+// alternates between two nearby settings; sigma takes a new value each step (its interfaces change: a cache miss).
+template <typename Change>
+void BM_SliderToFrame(benchmark::State& state, Change change) {
+  const int size = 512;
+  gl::OsmesaContext context(size, size);
+  Renderer renderer;
+  RenderTarget target(size, size, PixelFormat::Rgba8);
+  target.bind();
+  SolveCache cache;
+  SolveOptions options;
+  options.cache = &cache;
+  options.parallel_for = parallel_for_threads;
+  ColorMaterial material;
+  material.albedo_rgb = {0.95, 0.8, 0.7};
+  (void)solve_color(material, 0.785, options);
+  int step = 0;
+  Scene shown;  // the previewer reuses the shown scene's sampled unscattered lobe when it still applies
+  for (auto _ : state) {
+    change(material, ++step);
+    const ColorTables tables = solve_color(material, 0.785, options);
+    renderer.upload(make_table_textures(tables));
+    shown = make_scene(tables, ViewKind::Both, 0.785, 3.14159, 1.0, false, &shown);
+    draw_scene(renderer, shown, size, size);
+    glFinish();
+  }
+}
+BENCHMARK_CAPTURE(BM_SliderToFrame, albedo, [](ColorMaterial& m, int step) { m.albedo_rgb[0] = step % 2 ? 0.9 : 0.95; })
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_SliderToFrame, T, [](ColorMaterial& m, int step) {
+  m.layer.tau = optical_depth_from_transparency(step % 2 ? 0.25 : 0.2);
+})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_SliderToFrame, g, [](ColorMaterial& m, int step) { m.layer.g = 0.8 - 1e-5 * (step % 1000); })
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_SliderToFrame, sigma, [](ColorMaterial& m, int step) { m.layer.sigma = 0.5 + 1e-4 * step; })
+    ->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The CPU resampling of solved tables into the GPU layout.
 void BM_TableTextures(benchmark::State& state) {

@@ -54,7 +54,7 @@ PhaseMatrices phase_stage(const StageInputs& in) {
 }
 
 InterfaceStage interface_stage(const StageInputs& in) {
-  const CosineProjector projector(in.resolution.max_modes, in.resolution.interface_azimuths);
+  const CosineProjector projector(in.resolution.interface_modes, in.resolution.interface_azimuths);
   const RoughDielectric top{in.material.eta, in.material.sigma};
   const std::vector<double>& up = in.quadrature.nodes;
   const std::vector<double> down = negated(up);

@@ -1,0 +1,163 @@
+#include "core/layer_interfaces.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/interface_operators.h"
+
+namespace skinlayer {
+std::vector<double> negated(std::span<const double> cosines) {
+  std::vector<double> result(cosines.begin(), cosines.end());
+  for (double& v : result) v = -v;
+  return result;
+}
+
+namespace {
+
+// Generalized reciprocity of the radiance BTDF (Walter et al. 2007): f_t12(a -> b) / n2^2 = f_t21(b -> a) / n1^2.
+// The reversed pair of propagation directions has the same azimuth difference, so the coefficients of the exit
+// kernel (layer -> air, mu_j up to mu_o up) are those of the source kernel (air -> layer, -mu_o to -mu_j) / eta^2.
+FourierKernel transmission_by_reciprocity(const FourierKernel& air_to_layer, double eta) {
+  FourierKernel layer_to_air(air_to_layer.size());
+  for (std::size_t m = 0; m < air_to_layer.size(); ++m) layer_to_air[m] = air_to_layer[m].transpose() / (eta * eta);
+  return layer_to_air;
+}
+
+// The accurate albedos (interface_albedo) of an interface for light arriving along each cosine, with the direction
+// back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame. That frame has +z up: into the
+// air for the top (light from the air: z_sign +1; from inside the layer: -1) and into the layer for the bottom (light
+// from inside the layer: +1).
+std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
+                                                     double z_sign) {
+  std::vector<Vec3> toward_light;
+  toward_light.reserve(cosines.size());
+  for (const double mu : cosines) {
+    toward_light.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, z_sign * std::abs(mu));
+  }
+  return interface_albedo(interface, toward_light);
+}
+
+std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos) {
+  std::vector<double> result;
+  for (const InterfaceAlbedo& a : albedos) result.push_back(a.reflectance);
+  return result;
+}
+
+std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos) {
+  std::vector<double> result;
+  for (const InterfaceAlbedo& a : albedos) result.push_back(a.transmittance);
+  return result;
+}
+
+std::size_t kernel_bytes(const FourierKernel& kernel) {
+  std::size_t bytes = 0;
+  for (const Eigen::MatrixXd& m : kernel) bytes += sizeof(double) * static_cast<std::size_t>(m.size());
+  return bytes;
+}
+
+}  // namespace
+
+LayerGeometry classify_layer(const Material& material) {
+  LayerGeometry geometry;
+  geometry.top_open = material.eta == 1.0;
+  geometry.top = {material.eta, material.sigma};
+  switch (material.bottom.kind) {
+    case BottomKind::Air:
+      geometry.base = material.bottom_eta() == 1.0 ? LayerBase::Open : LayerBase::Rough;
+      break;
+    case BottomKind::Matched:
+      geometry.base = LayerBase::Open;
+      break;
+    case BottomKind::Lambert:
+      geometry.base = LayerBase::Lambert;
+      break;
+  }
+  if (geometry.base == LayerBase::Rough) geometry.bottom = {1.0 / material.bottom_eta(), material.bottom_sigma()};
+  geometry.bottom_mirrors_top = geometry.base == LayerBase::Rough && material.bottom_eta() == material.eta &&
+                                material.bottom_sigma() == material.sigma;
+  return geometry;
+}
+
+std::size_t InterfaceKernels::bytes() const {
+  std::size_t total = 0;
+  for (const FourierKernel* k : {&r_top, &t_source, &t_exit, &t_source_exterior, &r_top_rows, &r_bottom,
+                                 &t_bottom_exit, &s_bottom_beam, &t_bottom_beam, &r_bottom_rows, &r_bottom_beam_rows}) {
+    total += kernel_bytes(*k);
+  }
+  return total + sizeof(InterfaceAlbedo) * (top_inside.size() + bottom_inside.size());
+}
+
+InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes,
+                                   int interface_azimuths, std::span<const double> mu_in,
+                                   std::span<const double> mu_out) {
+  InterfaceKernels k;
+  k.geometry = geometry;
+  k.quadrature = double_gauss_half_range(ordinates);
+  k.mu_in.assign(mu_in.begin(), mu_in.end());
+  k.mu_out.assign(mu_out.begin(), mu_out.end());
+  const std::size_t n = k.quadrature.nodes.size();
+  k.top_inside.assign(n, InterfaceAlbedo{0.0, 1.0});
+  k.bottom_inside.assign(n, InterfaceAlbedo{0.0, 1.0});
+  const bool want_exit = !mu_out.empty();
+  const CosineProjector surface(max_modes, interface_azimuths);
+  const std::span<const double> up = k.quadrature.nodes;
+  const std::span<const double> weights = k.quadrature.weights;
+  const std::vector<double> down = negated(up);
+  const std::vector<double> down_in = negated(mu_in);
+  const std::vector<double> down_out = negated(mu_out);
+
+  if (!geometry.top_open) {
+    k.r_top = interface_fourier(geometry.top, up, down, surface);
+    k.top_inside = interface_albedos_along(geometry.top, up, -1.0);
+    match_reflection_energy(k.r_top, up, weights, reflectances(k.top_inside));
+    apply_quadrature_weights(k.r_top, up, weights);
+    k.t_source = interface_fourier(geometry.top, down_in, down, surface);
+    match_column_energy(k.t_source, up, weights, transmittances(interface_albedos_along(geometry.top, mu_in, 1.0)));
+    if (want_exit) {
+      // By reciprocity the exit operator inherits the energy matching of the source columns, row by row.
+      k.t_exit = transmission_by_reciprocity(k.t_source, geometry.top.eta);
+      apply_quadrature_weights(k.t_exit, up, weights);
+      if (geometry.base == LayerBase::Open) {
+        k.t_source_exterior = interface_fourier(geometry.top, down_in, down_out, surface);
+        k.r_top_rows = interface_fourier(geometry.top, up, down_out, surface);
+        apply_quadrature_weights(k.r_top_rows, up, weights);
+      }
+    }
+  }
+  if (geometry.base != LayerBase::Rough) return k;
+  if (geometry.bottom_mirrors_top && !geometry.top_open) {
+    k.r_bottom = k.r_top;
+    k.t_bottom_exit = k.t_exit;
+    k.bottom_inside = k.top_inside;
+  } else {
+    k.r_bottom = interface_fourier(geometry.bottom, down, up, surface);
+    k.bottom_inside = interface_albedos_along(geometry.bottom, up, 1.0);
+    match_reflection_energy(k.r_bottom, up, weights, reflectances(k.bottom_inside));
+    apply_quadrature_weights(k.r_bottom, up, weights);
+    if (want_exit) {
+      // As for the top: the exit rows are the transposed source columns from the air below (propagating up), each
+      // matched to its slope-space transmittance. A sharp, low-contrast bottom (sigma3 0.2, eta3 1.2) has an
+      // interior lobe ~ sigma3 (1 - 1/eta3) wide, narrower than the node spacing: its unmatched node sums ripple
+      // by percents across exit angles.
+      FourierKernel from_below = interface_fourier(geometry.bottom, mu_out, up, surface);
+      match_column_energy(from_below, up, weights,
+                          transmittances(interface_albedos_along(geometry.bottom, mu_out, -1.0)));
+      k.t_bottom_exit = transmission_by_reciprocity(from_below, 1.0 / geometry.bottom.eta);
+      apply_quadrature_weights(k.t_bottom_exit, up, weights);
+    }
+  }
+  if (geometry.top_open) {
+    k.s_bottom_beam = interface_fourier(geometry.bottom, down_in, up, surface);
+    match_column_energy(k.s_bottom_beam, up, weights,
+                        reflectances(interface_albedos_along(geometry.bottom, mu_in, 1.0)));
+    if (want_exit) {
+      k.t_bottom_beam = interface_fourier(geometry.bottom, down_in, down_out, surface);
+      k.r_bottom_rows = interface_fourier(geometry.bottom, down, mu_out, surface);
+      apply_quadrature_weights(k.r_bottom_rows, up, weights);
+      k.r_bottom_beam_rows = interface_fourier(geometry.bottom, down_in, mu_out, surface);
+    }
+  }
+  return k;
+}
+
+}  // namespace skinlayer

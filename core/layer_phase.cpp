@@ -1,0 +1,40 @@
+#include "core/layer_phase.h"
+
+#include "core/layer_interfaces.h"
+
+namespace skinlayer {
+
+std::size_t PhaseKernels::bytes() const {
+  std::size_t total = 0;
+  for (const std::vector<Eigen::MatrixXd>* kernel : {&phase.same, &phase.opposite, &beam_up_nodes, &beam_down_nodes,
+                                                     &beam_rows_up, &beam_rows_down, &same_rows, &opposite_rows}) {
+    for (const Eigen::MatrixXd& m : *kernel) total += sizeof(double) * static_cast<std::size_t>(m.size());
+  }
+  return total;
+}
+
+PhaseKernels phase_kernels(double g, const QuadratureRule& quadrature, int max_modes, int phase_azimuths,
+                           std::span<const double> mu_in, std::span<const double> mu_out, bool beam, bool exterior) {
+  PhaseKernels k;
+  const CosineProjector projector(max_modes, phase_azimuths);
+  const std::span<const double> up = quadrature.nodes;
+  const std::vector<double> down = negated(up);
+  const std::vector<double> down_in = negated(mu_in);
+  const std::vector<double> down_out = negated(mu_out);
+  k.phase = henyey_greenstein_matrices(g, up, quadrature.weights, projector);
+  if (beam) {
+    k.beam_up_nodes = henyey_greenstein_fourier(g, down_in, up, projector);
+    k.beam_down_nodes = henyey_greenstein_fourier(g, down_in, down, projector);
+    if (exterior) {
+      k.beam_rows_up = henyey_greenstein_fourier(g, down_in, mu_out, projector);
+      k.beam_rows_down = henyey_greenstein_fourier(g, down_in, down_out, projector);
+    }
+  }
+  if (exterior) {
+    k.same_rows = henyey_greenstein_fourier(g, up, mu_out, projector);
+    k.opposite_rows = henyey_greenstein_fourier(g, down, mu_out, projector);
+  }
+  return k;
+}
+
+}  // namespace skinlayer
