@@ -1,5 +1,7 @@
 #include "app/validate/validation_grid.h"
 
+#include <cstdio>
+#include <string>
 #include <utility>
 
 namespace skinlayer::validation {
@@ -102,6 +104,22 @@ std::vector<ValidationSet> validation_grid() {
   bare_half_space.g = 0.0;
   grid.push_back(set("deep-eta-1", "semi-infinite, no interface, isotropic, Ω 0.5 (Chandrasekhar's H)",
                      bare_half_space, 60.0));
+  // Thin layers between sharp interfaces: the light that crosses unscattered makes lobes a degree wide, which only
+  // the peak bins can see (issue 10).
+  for (const double sigma : {0.2, 0.05}) {
+    for (const char* bottom : {"air", "matched"}) {
+      Material m = with_transparency(paper, std::string(bottom) == "air" ? 0.5 : 0.2);
+      m.sigma = sigma;
+      m.albedo = 0.9;
+      m.g = 0.5;
+      m.bottom = parse_bottom(bottom);
+      char name[48], description[96];
+      std::snprintf(name, sizeof name, "sharp-%g-%s", sigma, bottom);
+      std::snprintf(description, sizeof description, "a thin layer (T %g, Ω 0.9, g 0.5) between σ %g interfaces, %s below",
+                    std::string(bottom) == "air" ? 0.5 : 0.2, sigma, bottom);
+      grid.push_back(set(name, description, m, 30.0));
+    }
+  }
   for (std::size_t k = 0; k < grid.size(); ++k) grid[k].grid_index = k;
   return grid;
 }

@@ -51,7 +51,7 @@ XyPlot panel(const SetResult& result, ExitSide side, bool across) {
   XySeries points{"Monte Carlo ± 2 SE", mc_color, {}, {}, {}};
   for (std::size_t k = 0; k < result.bins.size(); ++k) {
     const ValidationBin& bin = result.bins[k];
-    if (bin.side != side || (bin.plane == BinPlane::Across) != across) continue;
+    if (bin.side != side || (bin.plane == BinPlane::Across) != across || bin.peak != nullptr) continue;
     const Comparison& c = result.bin_comparisons[k];
     const double x = signed_centre(bin);
     const double half = 0.5 * (bin.theta_max_deg - bin.theta_min_deg);

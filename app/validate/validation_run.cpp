@@ -44,10 +44,33 @@ bool transmits(const Material& material) {
 }
 
 std::string bin_name(const ValidationBin& bin) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%s %s θo [%.0f,%.0f)", bin.side == ExitSide::Reflected ? "BRDF" : "BTDF",
-                plane_label(bin.plane), bin.theta_min_deg, bin.theta_max_deg);
+  char text[96];
+  if (bin.peak != nullptr) {
+    std::snprintf(text, sizeof text, "%s %s θo [%.1f,%.1f)", bin.side == ExitSide::Reflected ? "BRDF" : "BTDF",
+                  bin.peak, bin.theta_min_deg, bin.theta_max_deg);
+  } else {
+    std::snprintf(text, sizeof text, "%s %s θo [%.0f,%.0f)", bin.side == ExitSide::Reflected ? "BRDF" : "BTDF",
+                  plane_label(bin.plane), bin.theta_min_deg, bin.theta_max_deg);
+  }
   return text;
+}
+
+constexpr double kPeakHalfWidthDeg = 2.0;
+
+// A peak bin about the exit angle theta_deg in the forward plane (the normal's cone when theta_deg is within the
+// half width of it).
+ValidationBin peak_bin(ExitSide side, const char* peak, double theta_deg) {
+  if (theta_deg <= kPeakHalfWidthDeg) return {side, BinPlane::Back, 0.0, kPeakHalfWidthDeg, kPi, peak};
+  const double top = std::min(theta_deg + kPeakHalfWidthDeg, 89.9);
+  return {side, BinPlane::Forward, top - 2.0 * kPeakHalfWidthDeg, top,
+          degrees_to_radians(kPeakHalfWidthDeg) / std::sin(degrees_to_radians(theta_deg)), peak};
+}
+
+// n_below / n_above of the whole layer: the flat interfaces send light at theta_i straight through to
+// sin(theta_t) = sin(theta_i) / n.
+double layer_index_ratio(const Material& material) {
+  if (material.bottom.kind == BottomKind::Matched) return material.eta;
+  return material.eta / material.bottom_eta();
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -64,15 +87,23 @@ double worst(const Rows& rows, double (Comparison::*measure)() const, double wor
 
 }  // namespace
 
-std::vector<ValidationBin> validation_bins(const Material& material) {
+std::vector<ValidationBin> validation_bins(const Material& material, double theta_i_deg) {
   std::vector<ValidationBin> bins;
   for (const ExitSide side : {ExitSide::Reflected, ExitSide::Transmitted}) {
     if (side == ExitSide::Transmitted && !transmits(material)) continue;
     for (const BinPlane plane : {BinPlane::Back, BinPlane::Forward, BinPlane::Across}) {
       for (double theta = 0.0; theta < 90.0; theta += kThetaBandDeg) {
-        bins.push_back({side, plane, theta, theta + kThetaBandDeg});
+        bins.push_back({side, plane, theta, theta + kThetaBandDeg, kAzimuthHalfWidth, nullptr});
       }
     }
+  }
+  const double sin_i = std::sin(degrees_to_radians(theta_i_deg));
+  if (theta_i_deg > kPeakHalfWidthDeg) bins.push_back(peak_bin(ExitSide::Reflected, "mirror", theta_i_deg));
+  bins.push_back(peak_bin(ExitSide::Reflected, "normal", 0.0));
+  if (transmits(material)) {
+    const double straight = radians_to_degrees(std::asin(std::min(1.0, sin_i / layer_index_ratio(material))));
+    if (straight > kPeakHalfWidthDeg) bins.push_back(peak_bin(ExitSide::Transmitted, "straight through", straight));
+    bins.push_back(peak_bin(ExitSide::Transmitted, "normal", 0.0));
   }
   return bins;
 }
@@ -80,7 +111,7 @@ std::vector<ValidationBin> validation_bins(const Material& material) {
 AngularBin angular_bin(const ValidationBin& bin) {
   const double phi = plane_azimuth(bin.plane);
   return {bin.side, degrees_to_radians(bin.theta_min_deg), degrees_to_radians(bin.theta_max_deg),
-          phi - kAzimuthHalfWidth, phi + kAzimuthHalfWidth};
+          phi - bin.phi_half_width, phi + bin.phi_half_width};
 }
 
 double Comparison::sigmas() const {
@@ -115,7 +146,8 @@ Verdict judge(double monte_carlo, double standard_error, double solver, double e
 
 double solver_bin_average(const Material& material, const LayerTables& tables, double theta_i,
                           const ValidationBin& bin) {
-  return layer_bsdf_bin_average(material, tables, theta_i, angular_bin(bin), kBinGrid);
+  // A peak bin is 4 degrees wide and the lobes in it can be under a degree: a finer grid there.
+  return layer_bsdf_bin_average(material, tables, theta_i, angular_bin(bin), bin.peak ? 2 * kBinGrid : kBinGrid);
 }
 
 SetResult run_validation_set(const ValidationSet& set, const RunOptions& options) {
@@ -128,7 +160,7 @@ SetResult run_validation_set(const ValidationSet& set, const RunOptions& options
   const double angles[] = {theta_i};
   const DirectionalAlbedo albedo = directional_albedo(material, angles).front();
   result.tables = solve(material);
-  result.bins = validation_bins(material);
+  result.bins = validation_bins(material, set.theta_i_deg);
   std::vector<double> solver_bins;
   for (const ValidationBin& bin : result.bins) {
     solver_bins.push_back(solver_bin_average(material, result.tables, theta_i, bin));

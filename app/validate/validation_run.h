@@ -36,11 +36,16 @@ struct ValidationBin {
   BinPlane plane = BinPlane::Back;
   double theta_min_deg = 0.0;
   double theta_max_deg = 0.0;
+  double phi_half_width = 0.25;  // radians about the plane's azimuth
+  const char* peak = nullptr;    // a peak bin: "mirror", "straight through" or "normal"; null for a band
 };
 
-// The bins of a set: theta bands of 15 degrees from 0 to 90, +-0.25 rad of azimuth about each plane, on the
-// reflected side and, when the layer transmits, on the transmitted side.
-std::vector<ValidationBin> validation_bins(const Material& material);
+// The bins of a set lit at theta_i_deg: theta bands of 15 degrees from 0 to 90, +-0.25 rad of azimuth about each
+// plane, on the reflected side and, when the layer transmits, on the transmitted side; and peak bins that can see a
+// lobe a bin of 15 degrees averages away: about 2 degrees either way (4 degrees in theta, 4 degrees of arc in
+// azimuth; the normal's is the cone theta < 2 degrees) at the mirror direction, the flat interfaces' straight-through
+// direction and the normal on each side.
+std::vector<ValidationBin> validation_bins(const Material& material, double theta_i_deg);
 AngularBin angular_bin(const ValidationBin& bin);
 
 struct Comparison {

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "app/validate/validation_grid.h"
 #include "app/validate/validation_run.h"
@@ -36,18 +37,45 @@ TEST(ValidationJudge, SparseBinsAreReportedNotJudgedUnlessEitherSideSeesLight) {
 
 TEST(ValidationBins, CoverBothPlanesAndAcrossOnEachSideThatLeaks) {
   const Material layer;  // transmits: air below
-  EXPECT_EQ(validation_bins(layer).size(), 36u);
+  EXPECT_EQ(validation_bins(layer, 45.0).size(), 36u + 4u);  // + mirror, normal; straight through, normal
   Material base;
   base.bottom = parse_bottom("lambert:0.5");
-  EXPECT_EQ(validation_bins(base).size(), 18u);
+  EXPECT_EQ(validation_bins(base, 45.0).size(), 18u + 2u);
   Material deep;
   deep.tau = optical_depth_from_transparency(0.0);
-  EXPECT_EQ(validation_bins(deep).size(), 18u);
-  for (const ValidationBin& bin : validation_bins(layer)) {
+  EXPECT_EQ(validation_bins(deep, 0.0).size(), 18u + 1u);  // at normal incidence the mirror is the normal
+  for (const ValidationBin& bin : validation_bins(layer, 45.0)) {
     const AngularBin a = angular_bin(bin);
     EXPECT_LT(a.theta_min, a.theta_max);
-    EXPECT_NEAR(a.phi_max - a.phi_min, 0.5, 1e-12);
+    if (bin.peak == nullptr) {
+      EXPECT_NEAR(a.phi_max - a.phi_min, 0.5, 1e-12);
+    }
   }
+}
+
+// Peak bins sit on the mirror and straight-through directions, about 2 degrees either way in both angles.
+TEST(ValidationBins, PeakBinsAreSmallConesOnTheSharpDirections) {
+  Material matched;
+  matched.bottom = parse_bottom("matched");
+  int peaks = 0;
+  for (const ValidationBin& bin : validation_bins(matched, 30.0)) {
+    if (bin.peak == nullptr) continue;
+    ++peaks;
+    const AngularBin a = angular_bin(bin);
+    const double centre = 0.5 * (a.theta_min + a.theta_max);
+    if (std::string(bin.peak) == "normal") {
+      EXPECT_EQ(a.theta_min, 0.0);
+      EXPECT_NEAR(a.theta_max, degrees_to_radians(2.0), 1e-12);
+      EXPECT_NEAR(a.phi_max - a.phi_min, 2.0 * kPi, 1e-12);
+      continue;
+    }
+    const double expected = bin.side == ExitSide::Reflected ? degrees_to_radians(30.0)
+                                                            : std::asin(std::sin(degrees_to_radians(30.0)) / 1.4);
+    EXPECT_NEAR(centre, expected, 1e-12) << bin.peak;
+    EXPECT_NEAR(a.theta_max - a.theta_min, degrees_to_radians(4.0), 1e-12);
+    EXPECT_NEAR((a.phi_max - a.phi_min) * std::sin(centre), degrees_to_radians(4.0), 1e-12);
+  }
+  EXPECT_EQ(peaks, 4);
 }
 
 // No medium, no top interface, a Lambertian base of albedo A: the BRDF is A/pi everywhere, so every reflected bin
@@ -58,7 +86,7 @@ TEST(ValidationBins, SolverAverageOfAConstantBrdfIsTheConstant) {
   bare_base.tau = optical_depth_from_transparency(1.0);
   bare_base.bottom = parse_bottom("lambert:0.6");
   const LayerTables tables = solve(bare_base);
-  for (const ValidationBin& bin : validation_bins(bare_base)) {
+  for (const ValidationBin& bin : validation_bins(bare_base, 30.0)) {
     EXPECT_NEAR(solver_bin_average(bare_base, tables, 0.4, bin), 0.6 * kInvPi, 1e-6);
   }
 }
