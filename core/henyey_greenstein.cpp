@@ -1,5 +1,6 @@
 #include "core/henyey_greenstein.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -21,13 +22,43 @@ FourierKernel henyey_greenstein_fourier(double g, std::span<const double> mu_fro
   return project_propagation_kernel(kernel_for_pair, mu_from, mu_to, projector);
 }
 
+namespace {
+
+// p^m between the nodes, travelling along sign * mu_a and mu_b: cos Theta = sign mu_a mu_b + s_a s_b cos(Delta phi)
+// is symmetric in a and b, so each pair a <= b is sampled and projected once (half of henyey_greenstein_fourier's
+// work for the same coefficients).
+FourierKernel symmetric_node_kernel(double g, std::span<const double> nodes, double sign,
+                                    const CosineProjector& projector) {
+  const int n = static_cast<int>(nodes.size());
+  Eigen::MatrixXd samples(projector.samples(), n * (n + 1) / 2);
+  int column = 0;
+  for (int a = 0; a < n; ++a) {
+    const double sin_a = std::sqrt(std::max(0.0, 1.0 - nodes[a] * nodes[a]));
+    for (int b = a; b < n; ++b, ++column) {
+      const double sin_b = std::sqrt(std::max(0.0, 1.0 - nodes[b] * nodes[b]));
+      for (int k = 0; k < projector.samples(); ++k) {
+        samples(k, column) = henyey_greenstein(sign * nodes[a] * nodes[b] + sin_a * sin_b * projector.cos_angle(k), g);
+      }
+    }
+  }
+  const Eigen::MatrixXd coefficients = projector.project(samples);
+  FourierKernel result(projector.modes(), Eigen::MatrixXd(n, n));
+  for (int m = 0; m < projector.modes(); ++m) {
+    column = 0;
+    for (int a = 0; a < n; ++a) {
+      for (int b = a; b < n; ++b, ++column) result[m](a, b) = result[m](b, a) = coefficients(m, column);
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
 PhaseMatrices henyey_greenstein_matrices(double g, std::span<const double> nodes, std::span<const double> weights,
                                          const CosineProjector& projector) {
   const int n = static_cast<int>(nodes.size());
-  std::vector<double> down(nodes.begin(), nodes.end());
-  for (double& mu : down) mu = -mu;
-  PhaseMatrices phase{henyey_greenstein_fourier(g, nodes, nodes, projector),
-                      henyey_greenstein_fourier(g, down, nodes, projector)};
+  PhaseMatrices phase{symmetric_node_kernel(g, nodes, 1.0, projector),
+                      symmetric_node_kernel(g, nodes, -1.0, projector)};
   const double c0 = fourier_azimuth_weight(0);
   for (int i = 0; i < n; ++i) {
     double total = 0.0;

@@ -1,7 +1,9 @@
 #include "core/unscattered_light.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #include <optional>
 
 #include "core/conventions.h"
@@ -110,8 +112,24 @@ std::optional<SlopeSample> sample_exit(const RoughDielectric& bottom, const Vec3
                             (refraction_jacobian(wo, -d, h, 1.0 / bottom.eta) * slope_density(p, q, bottom.sigma))};
 }
 
-// Gauss-Hermite nodes per slope axis: 32 x 32 evaluations per direction pair.
+// Gauss-Hermite nodes per slope axis: 32 x 32, less the products whose weight is below 1e-15 of the largest (they
+// lie beyond ~8 standard deviations of the slope density and add nothing a double can hold).
 constexpr int kSlopeNodes = 32;
+struct SlopeNode {
+  double x, y, weight;  // (p, q) / sigma, and w_a w_b / pi
+};
+std::vector<SlopeNode> slope_nodes() {
+  const QuadratureRule rule = gauss_hermite(kSlopeNodes);
+  const double largest = *std::max_element(rule.weights.begin(), rule.weights.end());
+  std::vector<SlopeNode> nodes;
+  for (int a = 0; a < rule.size(); ++a) {
+    for (int b = 0; b < rule.size(); ++b) {
+      const double w = rule.weights[a] * rule.weights[b];
+      if (w >= 1e-15 * largest * largest) nodes.push_back({rule.nodes[a], rule.nodes[b], w * kInvPi});
+    }
+  }
+  return nodes;
+}
 
 }  // namespace
 
@@ -167,19 +185,15 @@ double two_interface_btdf(const RoughDielectric& top, const RoughDielectric& bot
   const std::optional<Lobe> entry = refracted_lobe(-wi, 1.0, top.eta, top.sigma, 1.0);
   const std::optional<Lobe> exit = refracted_lobe(-wo, -1.0, 1.0 / bottom.eta, bottom.sigma, -1.0);
   const bool by_exit = entry && exit && exit->covariance.determinant() < entry->covariance.determinant();
-  static const QuadratureRule rule = gauss_hermite(kSlopeNodes);
+  static const std::vector<SlopeNode> nodes = slope_nodes();
   double sum = 0.0;
-  for (int a = 0; a < rule.size(); ++a) {
-    for (int b = 0; b < rule.size(); ++b) {
-      const double w = rule.weights[a] * rule.weights[b] * kInvPi;
-      if (by_exit) {
-        const std::optional<SlopeSample> s =
-            sample_exit(bottom, wo, bottom.sigma * rule.nodes[a], bottom.sigma * rule.nodes[b]);
-        if (s) sum += w * s->weight * attenuation(tau, -s->d.z()) * microfacet_btdf(top, wi, s->d);
-      } else {
-        const std::optional<SlopeSample> s = sample_entry(top, wi, top.sigma * rule.nodes[a], top.sigma * rule.nodes[b]);
-        if (s) sum += w * s->weight * attenuation(tau, -s->d.z()) * microfacet_btdf(bottom, -s->d, wo);
-      }
+  for (const SlopeNode& node : nodes) {
+    if (by_exit) {
+      const std::optional<SlopeSample> s = sample_exit(bottom, wo, bottom.sigma * node.x, bottom.sigma * node.y);
+      if (s) sum += node.weight * s->weight * attenuation(tau, -s->d.z()) * microfacet_btdf(top, wi, s->d);
+    } else {
+      const std::optional<SlopeSample> s = sample_entry(top, wi, top.sigma * node.x, top.sigma * node.y);
+      if (s) sum += node.weight * s->weight * attenuation(tau, -s->d.z()) * microfacet_btdf(bottom, -s->d, wo);
     }
   }
   return sum;
