@@ -53,11 +53,14 @@ BENCHMARK(BM_UnscatteredBtdfTwoInterfaces)->Unit(benchmark::kMicrosecond);
 // A single-channel re-solve after one slider step, the cache warm as the previewer's worker keeps it: Omega and T
 // reuse the interface operators and the phase projections; g (a new value each step) reuses the interface operators
 // and projects the phase function anew; sigma changes the interfaces, so it pays for them (a new value each step).
+// BM_Resolve runs on one thread; BM_ResolveParallel hands the executables' parallel-for (app/process/parallel_for.h)
+// to the solver, which then solves one channel's modes on every core.
 template <typename Change>
-void BM_Resolve(benchmark::State& state, Change change) {
+void resolve_benchmark(benchmark::State& state, Change change, bool parallel) {
   SolveCache cache;
   SolveOptions options;
   options.cache = &cache;
+  if (parallel) options.parallel_for = parallel_for_threads;
   Material material;
   (void)solve(material, options);
   int step = 0;
@@ -68,6 +71,14 @@ void BM_Resolve(benchmark::State& state, Change change) {
   }
   state.counters["cache_hits"] = cache.hits();
 }
+template <typename Change>
+void BM_Resolve(benchmark::State& state, Change change) {
+  resolve_benchmark(state, change, false);
+}
+template <typename Change>
+void BM_ResolveParallel(benchmark::State& state, Change change) {
+  resolve_benchmark(state, change, true);
+}
 BENCHMARK_CAPTURE(BM_Resolve, albedo, [](Material& m, int step) { m.albedo = step % 2 ? 0.9 : 0.95; })
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Resolve, T, [](Material& m, int step) {
@@ -77,23 +88,6 @@ BENCHMARK_CAPTURE(BM_Resolve, g, [](Material& m, int step) { m.g = 0.8 - 1e-5 * 
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Resolve, sigma, [](Material& m, int step) { m.sigma = 0.5 + 1e-4 * step; })
     ->Unit(benchmark::kMillisecond);
-
-// The same with the executables' parallel-for (app/process/parallel_for.h): one channel's modes on every core.
-template <typename Change>
-void BM_ResolveParallel(benchmark::State& state, Change change) {
-  SolveCache cache;
-  SolveOptions options;
-  options.cache = &cache;
-  options.parallel_for = parallel_for_threads;
-  Material material;
-  (void)solve(material, options);
-  int step = 0;
-  for (auto _ : state) {
-    change(material, ++step);
-    LayerTables tables = solve(material, options);
-    benchmark::DoNotOptimize(tables);
-  }
-}
 BENCHMARK_CAPTURE(BM_ResolveParallel, albedo, [](Material& m, int step) { m.albedo = step % 2 ? 0.9 : 0.95; })
     ->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK_CAPTURE(BM_ResolveParallel, sigma, [](Material& m, int step) { m.sigma = 0.5 + 1e-4 * step; })

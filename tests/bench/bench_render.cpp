@@ -35,14 +35,21 @@ void BM_HeadlessFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_HeadlessFrame)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// From a parameter change to a finished frame that shows it, at the paper's default material with an RGB albedo
-// (three channel solves), at 512 x 512: solve, texture resampling, upload and draw.
-void BM_ParameterChangeLatency(benchmark::State& state) {
-  const int size = 512;
-  gl::OsmesaContext context(size, size);
+// A 512 x 512 offscreen frame to draw the previewer's picture into: the context, the renderer and the bound target.
+struct PreviewFrame {
+  static constexpr int kSize = 512;
+  gl::OsmesaContext context{kSize, kSize};
   Renderer renderer;
-  RenderTarget target(size, size, PixelFormat::Rgba8);
-  target.bind();
+  RenderTarget target{kSize, kSize, PixelFormat::Rgba8};
+  PreviewFrame() { target.bind(); }
+};
+
+// From a parameter change to a finished frame that shows it, at the paper's default material with an RGB albedo
+// (three channel solves), at 512 x 512: solve, texture resampling, upload and draw; no cache, one thread.
+void BM_ParameterChangeLatency(benchmark::State& state) {
+  PreviewFrame frame;
+  const int size = PreviewFrame::kSize;
+  Renderer& renderer = frame.renderer;
   ColorMaterial material;
   const bool color = state.range(0) == 1;
   if (color) material.albedo_rgb = {0.95, 0.8, 0.7};
@@ -63,11 +70,9 @@ BENCHMARK(BM_ParameterChangeLatency)->Arg(0)->Arg(1)->ArgNames({"rgb"})->Unit(be
 // alternates between two nearby settings; sigma takes a new value each step (its interfaces change: a cache miss).
 template <typename Change>
 void BM_SliderToFrame(benchmark::State& state, Change change) {
-  const int size = 512;
-  gl::OsmesaContext context(size, size);
-  Renderer renderer;
-  RenderTarget target(size, size, PixelFormat::Rgba8);
-  target.bind();
+  PreviewFrame frame;
+  const int size = PreviewFrame::kSize;
+  Renderer& renderer = frame.renderer;
   SolveCache cache;
   SolveOptions options;
   options.cache = &cache;
