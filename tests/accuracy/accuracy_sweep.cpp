@@ -1,7 +1,8 @@
 // The pointwise accuracy sweep of issue 10: every parameter of the grid varied about a sharp base material, plus
 // interacting extremes, each solved at the automatic resolution and judged point by point against a converged solve
 // (core/reference/point_accuracy.h). Writes Markdown (docs/accuracy.md through `cmake --build build --target
-// accuracy-doc`); progress goes to stderr. Exit status 1 if any material errs by more than 1%.
+// accuracy-doc`, or to stdout); progress and the verdict go to stderr. Without --report, exit status 1 if any
+// material errs by more than 1%.
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -153,5 +154,7 @@ int main(int argc, char** argv) {
     std::ofstream(output) << md.str();
     std::cerr << "wrote " << output << "\n";
   }
-  return worst <= 0.01 ? 0 : 1;
+  std::cerr << (worst <= 0.01 ? "every material within 1%\n" : "the 1% criterion is not met everywhere\n");
+  // Writing the report (the accuracy-doc target) succeeds whatever it says; the console check fails above 1%.
+  return worst <= 0.01 || !output.empty() ? 0 : 1;
 }
