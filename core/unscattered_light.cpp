@@ -36,9 +36,9 @@ std::optional<Vec3> refract(const Vec3& p, const Vec3& h, double eta_rel) {
 // The facet normal of slopes (sx, sy), facing +z (side +1) or -z (side -1).
 Vec3 facet_normal(double sx, double sy, double side) { return side * Vec3(-sx, -sy, 1.0).normalized(); }
 
-// A refracted lobe in the projected disk, as a Gaussian: centre (the flat facet's refraction) and covariance
-// (sigma^2 / 2) J J^T, J the Jacobian of the projected refracted direction by the facet slopes at 0 (central
-// differences). `flip` maps the refracted propagation direction to the internal coordinate (+1 for light entering
+// A refracted lobe in the projected disk, linearized as a Gaussian to compare the two lobes' widths: centre (the flat
+// facet's refraction) and covariance (sigma^2 / 2) J J^T, J the Jacobian of the projected refracted direction by the
+// facet slopes at 0 (central differences). `flip` maps the refracted propagation direction to the internal coordinate (+1 for light entering
 // through the top, which travels down; -1 for the bottom's lobe, traced backward up from the exit direction).
 struct Lobe {
   Vec2 centre;

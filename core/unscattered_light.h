@@ -60,12 +60,13 @@ class UnscatteredLight {
 };
 
 // f_T of two rough interfaces in sequence (the TopThenBottom formula above) for unit vectors wi (z > 0) and wo
-// (z < 0), both in the layer's frame. The quadrature: each interface's lobe in the projected disk is approximated by
-// a Gaussian whose covariance is the Beckmann slope covariance (sigma^2 / 2) I mapped through the Jacobian of
-// refraction at the flat facet; the integrand's mass sits where the two Gaussians overlap, at the product Gaussian
-// (precision P = C_top^-1 + C_bottom^-1). A 25 x 25 trapezoidal rule on +-6 standard deviations of the product,
-// widened by 1.3, along its principal axes integrates it: the trapezoidal rule converges spectrally on a smooth
-// bump, and what is left is the kinks of total internal reflection and facet visibility.
+// (z < 0), both in the layer's frame. The quadrature changes variables from the internal direction d to the facet
+// slopes (p, q) of the interface whose refraction lobe is narrower (judged by the area of its lobe linearized at the
+// flat facet): f |d.z| d omega_d = f (d omega_d / d omega_h) cos^3(theta_h) dp dq (Walter et al. 2007, eq. 17), and
+// the Beckmann slope density in f is the Gaussian e^{-(p^2+q^2)/sigma^2} / (pi sigma^2), which a 32 x 32
+// Gauss-Hermite rule in (p, q) / sigma integrates exactly. The other interface's lobe, wider, is the smooth factor.
+// A Gaussian fitted in the projected disk instead (the first version) was 5-40% off for sigma >= 0.5 at oblique
+// angles, where refraction is far from linear in the slope.
 double two_interface_btdf(const RoughDielectric& top, const RoughDielectric& bottom, double tau, const Vec3& wi,
                           const Vec3& wo);
 
