@@ -80,16 +80,15 @@ LayerGeometry classify_layer(const Material& material) {
 
 std::size_t InterfaceKernels::bytes() const {
   std::size_t total = 0;
-  for (const FourierKernel* k : {&r_top, &t_source, &t_exit, &t_source_exterior, &r_top_rows, &r_bottom,
-                                 &t_bottom_exit, &s_bottom_beam, &t_bottom_beam, &r_bottom_rows, &r_bottom_beam_rows}) {
+  for (const FourierKernel* k : {&r_top, &t_source, &t_exit, &t_source_exterior, &r_top_rows, &r_bottom, &t_bottom_exit,
+                                 &s_bottom_beam, &t_bottom_beam, &r_bottom_rows, &r_bottom_beam_rows}) {
     total += kernel_bytes(*k);
   }
   return total + sizeof(InterfaceAlbedo) * (top_inside.size() + bottom_inside.size());
 }
 
-InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes,
-                                   int interface_azimuths, std::span<const double> mu_in,
-                                   std::span<const double> mu_out) {
+InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
+                                   std::span<const double> mu_in, std::span<const double> mu_out) {
   InterfaceKernels k;
   k.geometry = geometry;
   k.quadrature = double_gauss_half_range(ordinates);

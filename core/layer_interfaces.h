@@ -22,7 +22,7 @@ struct LayerGeometry {
   bool top_open = false;  // eta = 1: no top interface, the incident beam enters unscattered
   LayerBase base = LayerBase::Rough;
   RoughDielectric top;
-  RoughDielectric bottom;   // frame +z up into the layer: eta = n_below / n_layer
+  RoughDielectric bottom;           // frame +z up into the layer: eta = n_below / n_layer
   bool bottom_mirrors_top = false;  // the bottom is the top mirrored: R23 = R21 and T23 = T21
 
   bool operator==(const LayerGeometry&) const = default;
@@ -34,7 +34,7 @@ LayerGeometry classify_layer(const Material& material);
 // for it. Node operators (r_top, r_bottom, t_exit, ...) carry the quadrature weights (apply_quadrature_weights).
 struct InterfaceKernels {
   LayerGeometry geometry;
-  QuadratureRule quadrature;  // double-Gauss, N per hemisphere
+  QuadratureRule quadrature;          // double-Gauss, N per hemisphere
   std::vector<double> mu_in, mu_out;  // the outside cosines of the columns and of the exit rows
   // Per node, the albedos of the top interface for light travelling up to it and of the bottom interface for light
   // travelling down to it (R = 0, T = 1 where there is no interface): the energy targets of R21 and R23.
@@ -51,8 +51,7 @@ struct InterfaceKernels {
 // The cosines with their signs flipped: the same polar angles travelling the other way.
 std::vector<double> negated(std::span<const double> cosines);
 
-InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes,
-                                   int interface_azimuths, std::span<const double> mu_in,
-                                   std::span<const double> mu_out);
+InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
+                                   std::span<const double> mu_in, std::span<const double> mu_out);
 
 }  // namespace skinlayer

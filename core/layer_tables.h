@@ -52,9 +52,9 @@ class LayerTables {
   double brdf_scattered(double theta_i, double theta_o, double phi) const;
   double btdf_scattered(double theta_i, double theta_o, double phi) const;
 
-  // The same tables on a grid `factor` times finer (the unscattered part is carried unchanged), K' = factor (K - 1) + 1 points on the same map: every value is
-  // this table's spline at the finer grid angle, so a bilinear lookup of the result approximates the spline to
-  // O((h/factor)^2). Built separably: one 1-D Catmull-Rom pass per axis.
+  // The same tables on a grid `factor` times finer (the unscattered part is carried unchanged), K' = factor (K - 1) + 1
+  // points on the same map: every value is this table's spline at the finer grid angle, so a bilinear lookup of the
+  // result approximates the spline to O((h/factor)^2). Built separably: one 1-D Catmull-Rom pass per axis.
   LayerTables refined(int factor) const;
 
   // The m-th azimuthal coefficient, spline-interpolated.

@@ -44,12 +44,8 @@ std::vector<double> clamped_cosines(std::span<const double> mu) {
 std::shared_ptr<const InterfaceKernels> kernels_for(const Material& material, const Resolution& resolution,
                                                     std::span<const double> mu_in, std::span<const double> mu_out,
                                                     SolveCache* cache) {
-  InterfaceKernelKey key{classify_layer(material),
-                         resolution.ordinates,
-                         resolution.interface_modes,
-                         resolution.interface_azimuths,
-                         clamped_cosines(mu_in),
-                         clamped_cosines(mu_out)};
+  InterfaceKernelKey key{classify_layer(material),      resolution.ordinates,   resolution.interface_modes,
+                         resolution.interface_azimuths, clamped_cosines(mu_in), clamped_cosines(mu_out)};
   const auto build = [&] {
     return interface_kernels(key.geometry, key.ordinates, key.modes, key.azimuths, key.mu_in, key.mu_out);
   };
@@ -89,7 +85,7 @@ class LayerSolver {
   Eigen::VectorXd beam_flux_;         // F = 1/mu0 (so that E_perp mu0 = 1: values are BSDFs)
   bool want_exit_;
   UnscatteredPath exact_path_ = UnscatteredPath::None;  // the unscattered path left out of the exit sums
-  Eigen::VectorXd node_attenuation_;                     // e^{-tau/mu_j} per node
+  Eigen::VectorXd node_attenuation_;                    // e^{-tau/mu_j} per node
   std::shared_ptr<const PhaseKernels> phase_kernels_;
 };
 
@@ -110,11 +106,16 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
   if (exact_unscattered && want_exit_) exact_path_ = UnscatteredLight(material).path();
 
   const bool exterior = want_exit_ && (geometry_.top_open || geometry_.base == LayerBase::Open);
-  PhaseKernelKey key{material.g, resolution.ordinates, resolution.max_modes, resolution.phase_azimuths,
-                     mu_in_,     mu_out_,              geometry_.top_open,   exterior};
+  PhaseKernelKey key{material.g,
+                     resolution.ordinates,
+                     resolution.max_modes,
+                     resolution.phase_azimuths,
+                     mu_in_,
+                     mu_out_,
+                     geometry_.top_open,
+                     exterior};
   const auto build = [&] {
-    return phase_kernels(key.g, quadrature_, key.modes, key.azimuths, key.mu_in, key.mu_out, key.beam,
-                         key.exterior);
+    return phase_kernels(key.g, quadrature_, key.modes, key.azimuths, key.mu_in, key.mu_out, key.beam, key.exterior);
   };
   phase_kernels_ = cache ? cache->phase_kernels(key, build) : std::make_shared<const PhaseKernels>(build());
 }
@@ -136,7 +137,8 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
   const Eigen::Index count_in = static_cast<Eigen::Index>(mu_in_.size());
   const Eigen::Index count_out = static_cast<Eigen::Index>(mu_out_.size());
   const double scattering = solved_albedo * fourier_azimuth_weight(m);
-  SlabEigenSolution eigen = slab_eigen(nodes, weights, phase_kernels_->phase.same[m], phase_kernels_->phase.opposite[m], scattering);
+  SlabEigenSolution eigen =
+      slab_eigen(nodes, weights, phase_kernels_->phase.same[m], phase_kernels_->phase.opposite[m], scattering);
   if (m == 0 && conservative && std::isinf(tau_)) {
     // Conservative scattering in a semi-infinite slab: the slowest mode of the clamped albedo tends to the exact
     // bounded solution k = 0, u = constant (exact on the quadrature, since mode 0's phase matrix conserves energy).
@@ -172,14 +174,14 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
       // c_0 sum_j a_j (p^0(mu_j, -mu0) + p^0(-mu_j, -mu0)) = 1, as mode 0's phase matrix does between nodes.
       const Eigen::Map<const Eigen::VectorXd> a(weights.data(), n);
       for (Eigen::Index k = 0; k < count_in; ++k) {
-        const double scattered =
-            fourier_azimuth_weight(0) * a.dot(phase_kernels_->beam_up_nodes[0].col(k) + phase_kernels_->beam_down_nodes[0].col(k));
+        const double scattered = fourier_azimuth_weight(0) * a.dot(phase_kernels_->beam_up_nodes[0].col(k) +
+                                                                   phase_kernels_->beam_down_nodes[0].col(k));
         source_up.col(k) /= scattered;
         source_down.col(k) /= scattered;
       }
     }
-    beam = beam_particular_solution(nodes, weights, phase_kernels_->phase.same[m], phase_kernels_->phase.opposite[m], scattering, source_up,
-                                    source_down, mu_in_);
+    beam = beam_particular_solution(nodes, weights, phase_kernels_->phase.same[m], phase_kernels_->phase.opposite[m],
+                                    scattering, source_up, source_down, mu_in_);
     problem.beam = &beam;
   }
 
@@ -277,8 +279,8 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
   validate(material);
   const LayerGeometry geometry = classify_layer(material);
   const double forwardness = 1.0 - std::abs(material.g);
-  const double sigma_min =
-      std::min(geometry.top_open ? 1.0 : material.sigma, geometry.base == LayerBase::Rough ? material.bottom_sigma() : 1.0);
+  const double sigma_min = std::min(geometry.top_open ? 1.0 : material.sigma,
+                                    geometry.base == LayerBase::Rough ? material.bottom_sigma() : 1.0);
   Resolution resolution{};
   // N >= 6/sigma keeps the node quadrature of the interface lobes energy-conserving (model-spec §4.1); half of
   // layerlab's full-sphere HG heuristic 8.6/(1-g) - 0.2 resolves the phase function.
@@ -320,8 +322,7 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
           : std::clamp(std::max({24, ceil_to_int(5.4 / forwardness) + 2, ceil_to_int(4.0 / sigma_min)}), 24, 128);
   resolution.table_size = options.table_size > 0 ? options.table_size : kDefaultTableSize;
   resolution.interface_modes = resolution.max_modes == 1 ? 1 : (resolution.max_modes + 15) / 16 * 16;
-  resolution.interface_azimuths =
-      std::max({2 * resolution.interface_modes + 1, ceil_to_int(24.0 / sigma_min) + 1, 49});
+  resolution.interface_azimuths = std::max({2 * resolution.interface_modes + 1, ceil_to_int(24.0 / sigma_min) + 1, 49});
   resolution.phase_azimuths = std::max({2 * resolution.max_modes + 1, ceil_to_int(20.0 / forwardness) + 1, 49});
   return resolution;
 }

@@ -18,9 +18,9 @@ namespace skinlayer {
 class SolveCache;
 
 struct SolveOptions {
-  int table_size = 0;                // polar grid points on [0, pi/2] for the tables; 0 = default
-  double fourier_tolerance = 1e-4;   // stop when two successive modes are below this fraction of mode 0's peak
-  int max_modes = 0;                 // hard cap on Fourier modes; 0 = automatic
+  int table_size = 0;               // polar grid points on [0, pi/2] for the tables; 0 = default
+  double fourier_tolerance = 1e-4;  // stop when two successive modes are below this fraction of mode 0's peak
+  int max_modes = 0;                // hard cap on Fourier modes; 0 = automatic
   // true: the light that crosses the slab unscattered through the rough interfaces is evaluated exactly at the
   // requested directions (core/unscattered_light.h) and the tables hold the rest; false: every path on the discrete
   // ordinates and the tables, as Stam 2001 publishes the method (for convergence studies and comparisons).
@@ -35,13 +35,13 @@ struct SolveOptions {
 
 // The discretization a solve uses, chosen from the material (and its ordinates override).
 struct Resolution {
-  int ordinates;          // N, discrete ordinates per hemisphere
-  int max_modes;          // cap on Fourier modes
-  int table_size;         // K, polar grid size of the tables
-  int interface_modes;    // Fourier modes the interface operators are projected onto: max_modes rounded up to a
-                          // multiple of 16, so that a change of g or of the mode cap keeps them (SolveCache)
-  int interface_azimuths; // azimuth samples on [0, pi] for projecting interface BSDFs
-  int phase_azimuths;     // azimuth samples on [0, pi] for projecting the phase function
+  int ordinates;           // N, discrete ordinates per hemisphere
+  int max_modes;           // cap on Fourier modes
+  int table_size;          // K, polar grid size of the tables
+  int interface_modes;     // Fourier modes the interface operators are projected onto: max_modes rounded up to a
+                           // multiple of 16, so that a change of g or of the mode cap keeps them (SolveCache)
+  int interface_azimuths;  // azimuth samples on [0, pi] for projecting interface BSDFs
+  int phase_azimuths;      // azimuth samples on [0, pi] for projecting the phase function
 };
 Resolution choose_resolution(const Material& material, const SolveOptions& options = {});
 

@@ -3,8 +3,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <vector>
 #include <optional>
+#include <vector>
 
 #include "core/conventions.h"
 #include "core/material.h"
@@ -38,8 +38,9 @@ Vec3 facet_normal(double sx, double sy, double side) { return side * Vec3(-sx, -
 
 // A refracted lobe in the projected disk, linearized as a Gaussian to compare the two lobes' widths: centre (the flat
 // facet's refraction) and covariance (sigma^2 / 2) J J^T, J the Jacobian of the projected refracted direction by the
-// facet slopes at 0 (central differences). `flip` maps the refracted propagation direction to the internal coordinate (+1 for light entering
-// through the top, which travels down; -1 for the bottom's lobe, traced backward up from the exit direction).
+// facet slopes at 0 (central differences). `flip` maps the refracted propagation direction to the internal coordinate
+// (+1 for light entering through the top, which travels down; -1 for the bottom's lobe, traced backward up from the
+// exit direction).
 struct Lobe {
   Vec2 centre;
   Mat2 covariance;

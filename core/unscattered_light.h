@@ -28,10 +28,10 @@ namespace skinlayer {
 struct Material;
 
 enum class UnscatteredPath {
-  None,            // nothing crosses unscattered with a BSDF value: semi-infinite, Lambertian base, or no interface
-  TopOnly,         // rough top over an index-matched bottom
-  BottomOnly,      // open top (eta = 1) over a rough bottom
-  TopThenBottom,   // rough top over a rough bottom
+  None,           // nothing crosses unscattered with a BSDF value: semi-infinite, Lambertian base, or no interface
+  TopOnly,        // rough top over an index-matched bottom
+  BottomOnly,     // open top (eta = 1) over a rough bottom
+  TopThenBottom,  // rough top over a rough bottom
 };
 
 // The unscattered part of one material. A value type: default-constructed, it contributes nothing.

@@ -10,8 +10,8 @@
 #include "app/cli/model_flag.h"
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
-#include "app/process/parallel_for.h"
 #include "app/gl/osmesa_context.h"
+#include "app/process/parallel_for.h"
 #include "app/render/material_solve.h"
 #include "app/render/png_export.h"
 #include "app/render/render_target.h"
@@ -149,7 +149,8 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
     for (std::size_t k = 0; k < kCompareSlots.size(); ++k) {
       ColorMaterial compared = material;
       compared.model = kCompareModels[k];
-      const ColorTables solved = compared.model == material.model ? tables : solve_color(compared, light_theta, solve_options);
+      const ColorTables solved =
+          compared.model == material.model ? tables : solve_color(compared, light_theta, solve_options);
       renderer.upload(make_table_textures(solved), kCompareSlots[k]);
     }
   }

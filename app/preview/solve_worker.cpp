@@ -1,11 +1,11 @@
 #include "app/preview/solve_worker.h"
 
-#include "app/process/parallel_for.h"
-#include "app/render/scene.h"
-
 #include <chrono>
 #include <exception>
 #include <utility>
+
+#include "app/process/parallel_for.h"
+#include "app/render/scene.h"
 
 namespace skinlayer {
 

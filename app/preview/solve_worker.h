@@ -11,6 +11,7 @@
 //  - Destruction requests stop and joins the thread; a solve in progress is finished first (it is not published).
 #pragma once
 
+#include <array>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -18,7 +19,6 @@
 #include <optional>
 #include <stop_token>
 #include <string>
-#include <array>
 #include <thread>
 
 #include "app/preview/solve_request.h"

@@ -13,15 +13,15 @@
 namespace skinlayer {
 
 struct ColorMaterial {
-  Material layer;                                  // layer.albedo is ignored; albedo_rgb is used instead
+  Material layer;  // layer.albedo is ignored; albedo_rgb is used instead
   std::array<double, 3> albedo_rgb = {1.0, 1.0, 1.0};
   SubsurfaceModel model = SubsurfaceModel::Stam;  // the comparison models share the surface term
 };
 
 struct ColorTables {
   ColorMaterial material;
-  std::array<LayerTables, 3> channels;             // red, green, blue
-  std::array<DirectionalAlbedo, 3> albedo{};       // at albedo_theta_i, per channel
+  std::array<LayerTables, 3> channels;        // red, green, blue
+  std::array<DirectionalAlbedo, 3> albedo{};  // at albedo_theta_i, per channel
   double albedo_theta_i = 0.0;
   double solve_seconds = 0.0;
 };

@@ -13,8 +13,11 @@ namespace {
 gl::Program build(std::string_view fragment) {
   const std::string_view version = shader_source("version.glsl");
   const std::vector<std::string_view> vertex = {version, shader_source("fullscreen.vert")};
-  const std::vector<std::string_view> pieces = {version, shader_source("table_layout.h"), shader_source("common.glsl"),
-                                                shader_source("tables.glsl"), shader_source("unscattered.glsl"),
+  const std::vector<std::string_view> pieces = {version,
+                                                shader_source("table_layout.h"),
+                                                shader_source("common.glsl"),
+                                                shader_source("tables.glsl"),
+                                                shader_source("unscattered.glsl"),
                                                 shader_source(fragment)};
   return gl::link_program(vertex, pieces);
 }
@@ -118,8 +121,7 @@ void Renderer::draw_lobes(const LobeView& view, const SurfaceParams& surface, co
   const std::vector<float>& samples = plane.btdf.size() >= 2 ? plane.btdf : none;
   glActiveTexture(GL_TEXTURE2);
   glBindTexture(GL_TEXTURE_2D, unscattered_plane_.get());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, static_cast<GLsizei>(samples.size()), 1, 0, GL_RED, GL_FLOAT,
-               samples.data());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, static_cast<GLsizei>(samples.size()), 1, 0, GL_RED, GL_FLOAT, samples.data());
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);

@@ -25,17 +25,17 @@ struct SurfaceParams {
 
 struct SphereView {
   std::array<double, 3> light = {0.0, 0.0, 1.0};  // unit vector toward the light; camera frame, +z toward viewer
-  double irradiance = 3.141592653589793;           // E on a plane normal to the beam (pi: white Lambert -> cos)
-  double exposure = 1.0;                           // linear multiplier before the exponential tone map
-  bool linear_output = false;                      // write linear radiance (float targets, tests)
+  double irradiance = 3.141592653589793;          // E on a plane normal to the beam (pi: white Lambert -> cos)
+  double exposure = 1.0;                          // linear multiplier before the exponential tone map
+  bool linear_output = false;                     // write linear radiance (float targets, tests)
 };
 
 struct LobeView {
   double theta_i = 0.7853981633974483;  // incident angle, radians
   bool log_scale = false;
-  double peak = 1.0;     // BSDF value [1/sr] drawn at the outer circle
-  double decades = 3.0;  // log scale: decades between the outer circle and the centre
-  bool linear_output = false;  // write (total radius, subsurface radius, pixel radius) in RGB (tests)
+  double peak = 1.0;             // BSDF value [1/sr] drawn at the outer circle
+  double decades = 3.0;          // log scale: decades between the outer circle and the centre
+  bool linear_output = false;    // write (total radius, subsurface radius, pixel radius) in RGB (tests)
   UnscatteredPlane unscattered;  // the shown model's unscattered BTDF in the plane of incidence at theta_i
 };
 
@@ -51,8 +51,7 @@ class Renderer {
 
   void upload(const TableTextureData& tables, int slot = 0);
 
-  void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport,
-                   int slot = 0) const;
+  void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0) const;
   void draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0) const;
 
   static constexpr double kSphereMargin = 1.08;

@@ -35,12 +35,8 @@ Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, d
   // The BTDF is the tables' scattered part plus the sampled unscattered part, as the lobe shader adds them.
   std::vector<double> signed_angles;
   for (int k = -180; k <= 180; ++k) signed_angles.push_back(0.5 * kPi * k / 180.0);
-  const std::vector<float>& samples = scene.lobes.unscattered.btdf;
-  for (std::size_t k = 0; k < samples.size(); ++k) {
-    const UnscatteredPlane& plane = scene.lobes.unscattered;
-    const double u = plane.u_min + (plane.u_max - plane.u_min) * static_cast<double>(k) /
-                     static_cast<double>(samples.size() - 1);
-    signed_angles.push_back(std::clamp(plane.centre + plane.scale * std::sinh(u), -0.5 * kPi, 0.5 * kPi));
+  for (std::size_t k = 0; k < scene.lobes.unscattered.btdf.size(); ++k) {
+    signed_angles.push_back(unscattered_plane_angle(scene.lobes.unscattered, k));
   }
   double peak = 0.0;
   for (const double s : signed_angles) {

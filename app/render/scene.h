@@ -20,9 +20,8 @@ std::optional<ViewKind> parse_view_kind(std::string_view name);
 // The renderer slot of each sphere of the Compare view, left to right, and the model it shows. A model's slot is
 // its enum value (Stam 0, Lambert 1, Hanrahan-Krueger 2), as the previewer uploads them.
 inline constexpr std::array<int, 3> kCompareSlots = {1, 2, 0};
-inline constexpr std::array<SubsurfaceModel, 3> kCompareModels = {SubsurfaceModel::Lambert,
-                                                                  SubsurfaceModel::HanrahanKrueger,
-                                                                  SubsurfaceModel::Stam};
+inline constexpr std::array<SubsurfaceModel, 3> kCompareModels = {
+    SubsurfaceModel::Lambert, SubsurfaceModel::HanrahanKrueger, SubsurfaceModel::Stam};
 
 struct Scene {
   ViewKind view = ViewKind::Both;

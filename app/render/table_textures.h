@@ -10,8 +10,8 @@
 namespace skinlayer {
 
 struct TableTextureData {
-  int size = 0;   // texels per axis
-  int modes = 0;  // layers
+  int size = 0;                     // texels per axis
+  int modes = 0;                    // layers
   std::vector<float> reflection;    // [mode][row = theta_i][column = theta_o][RGBA]
   std::vector<float> transmission;  // same layout
   UnscatteredLight unscattered;     // not in the textures: the shaders evaluate it (shaders/unscattered.glsl)

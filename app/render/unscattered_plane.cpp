@@ -36,11 +36,6 @@ double lobe_scale(const UnscatteredLight& light) {
   return std::clamp(0.25 * w, 1e-3, 0.1);
 }
 
-double sample_angle(const UnscatteredPlane& plane, int k, int n) {
-  const double u = plane.u_min + (plane.u_max - plane.u_min) * k / (n - 1);
-  return plane.centre + plane.scale * std::sinh(u);
-}
-
 }  // namespace
 
 UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double theta_i, int samples,
@@ -61,12 +56,18 @@ UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double 
   constexpr int kChunk = 16;  // samples per task
   parallel_for_threads((samples + kChunk - 1) / kChunk, [&](int chunk) {
     for (int k = chunk * kChunk; k < std::min(samples, (chunk + 1) * kChunk); ++k) {
-      const double s = std::clamp(sample_angle(plane, k, samples), -0.5 * kPi, 0.5 * kPi);
+      const double s = unscattered_plane_angle(plane, static_cast<std::size_t>(k));
       plane.btdf[static_cast<std::size_t>(k)] =
           static_cast<float>(light.btdf(theta_i, std::abs(s), s >= 0.0 ? kPi : 0.0));
     }
   });
   return plane;
+}
+
+double unscattered_plane_angle(const UnscatteredPlane& plane, std::size_t k) {
+  const double n = static_cast<double>(plane.btdf.size());
+  const double u = plane.u_min + (plane.u_max - plane.u_min) * static_cast<double>(k) / (n - 1.0);
+  return std::clamp(plane.centre + plane.scale * std::sinh(u), -0.5 * kPi, 0.5 * kPi);
 }
 
 double unscattered_plane_value(const UnscatteredPlane& plane, double signed_theta_o) {

@@ -34,6 +34,9 @@ struct UnscatteredPlane {
 UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double theta_i, int samples = 128,
                                           const UnscatteredPlane* previous = nullptr);
 
+// The signed exit angle of sample k (radians, clamped to [-pi/2, pi/2]).
+double unscattered_plane_angle(const UnscatteredPlane& plane, std::size_t k);
+
 // The texture's value at signed exit angle s: linear interpolation in u, as the GPU filters it.
 double unscattered_plane_value(const UnscatteredPlane& plane, double signed_theta_o);
 

@@ -14,7 +14,11 @@ constexpr std::uint64_t kLongFull = 4'000'000, kLongQuick = 400'000;
 
 ValidationSet set(std::string name, std::string description, const Material& material, double theta_i_deg,
                   bool long_walks = false) {
-  return {std::move(name), std::move(description), material, theta_i_deg, long_walks ? kLongFull : kShortFull,
+  return {std::move(name),
+          std::move(description),
+          material,
+          theta_i_deg,
+          long_walks ? kLongFull : kShortFull,
           long_walks ? kLongQuick : kShortQuick};
 }
 
@@ -102,8 +106,8 @@ std::vector<ValidationSet> validation_grid() {
   bare_half_space.eta = 1.0;
   bare_half_space.albedo = 0.5;
   bare_half_space.g = 0.0;
-  grid.push_back(set("deep-eta-1", "semi-infinite, no interface, isotropic, Ω 0.5 (Chandrasekhar's H)",
-                     bare_half_space, 60.0));
+  grid.push_back(
+      set("deep-eta-1", "semi-infinite, no interface, isotropic, Ω 0.5 (Chandrasekhar's H)", bare_half_space, 60.0));
   // Thin layers between sharp interfaces: the light that crosses unscattered makes lobes a degree wide, which only
   // the peak bins can see (issue 10).
   for (const double sigma : {0.2, 0.05}) {
@@ -115,7 +119,8 @@ std::vector<ValidationSet> validation_grid() {
       m.bottom = parse_bottom(bottom);
       char name[48], description[96];
       std::snprintf(name, sizeof name, "sharp-%g-%s", sigma, bottom);
-      std::snprintf(description, sizeof description, "a thin layer (T %g, Ω 0.9, g 0.5) between σ %g interfaces, %s below",
+      std::snprintf(description, sizeof description,
+                    "a thin layer (T %g, Ω 0.9, g 0.5) between σ %g interfaces, %s below",
                     std::string(bottom) == "air" ? 0.5 : 0.2, sigma, bottom);
       grid.push_back(set(name, description, m, 30.0));
     }

@@ -30,7 +30,8 @@ constexpr double kErrorBarSigmas = 2.0;
 double solver_bsdf(const SetResult& result, ExitSide side, double theta_o, double phi) {
   const double theta_i = degrees_to_radians(result.set.theta_i_deg);
   if (side == ExitSide::Transmitted) return result.tables.btdf(theta_i, theta_o, phi);
-  return result.tables.brdf_subsurface(theta_i, theta_o, phi) + brdf_surface(result.set.material, theta_i, theta_o, phi);
+  return result.tables.brdf_subsurface(theta_i, theta_o, phi) +
+         brdf_surface(result.set.material, theta_i, theta_o, phi);
 }
 
 // The signed plotting angle of a bin's centre: negative on the back side, positive forward and across.
@@ -75,16 +76,16 @@ XyPlot panel(const SetResult& result, ExitSide side, bool across) {
 }  // namespace
 
 Image draw_validation_plot(const SetResult& result, const figures::Font& font) {
-  const bool transmits =
-      std::any_of(result.bins.begin(), result.bins.end(), [](const ValidationBin& b) { return b.side == ExitSide::Transmitted; });
+  const bool transmits = std::any_of(result.bins.begin(), result.bins.end(),
+                                     [](const ValidationBin& b) { return b.side == ExitSide::Transmitted; });
   const int rows = transmits ? 2 : 1;
   Canvas canvas(kPlaneWidth + kAcrossWidth, kHeader + rows * kPanelHeight, figures::kPlotBackground);
   char title[256];
   std::snprintf(title, sizeof title, "%s: %s, θi %g°", result.set.name.c_str(), result.set.description.c_str(),
                 result.set.theta_i_deg);
   canvas.text(font, title, {canvas.width() / 2.0, 24}, 18, figures::kPlotInk, figures::Align::Center);
-  canvas.text(font, cli::material_to_flags(result.set.material), {canvas.width() / 2.0, 48}, 13,
-              figures::kPlotMuted, figures::Align::Center);
+  canvas.text(font, cli::material_to_flags(result.set.material), {canvas.width() / 2.0, 48}, 13, figures::kPlotMuted,
+              figures::Align::Center);
   int row = 0;
   for (const ExitSide side : {ExitSide::Reflected, ExitSide::Transmitted}) {
     if (side == ExitSide::Transmitted && !transmits) continue;

@@ -23,18 +23,24 @@ constexpr double kExactTolerance = 1e-12;
 
 double plane_azimuth(BinPlane plane) {
   switch (plane) {
-    case BinPlane::Back: return 0.0;
-    case BinPlane::Forward: return kPi;
-    case BinPlane::Across: return 0.5 * kPi;
+    case BinPlane::Back:
+      return 0.0;
+    case BinPlane::Forward:
+      return kPi;
+    case BinPlane::Across:
+      return 0.5 * kPi;
   }
   return 0.0;
 }
 
 const char* plane_label(BinPlane plane) {
   switch (plane) {
-    case BinPlane::Back: return "φ 0°";
-    case BinPlane::Forward: return "φ 180°";
-    case BinPlane::Across: return "φ 90°";
+    case BinPlane::Back:
+      return "φ 0°";
+    case BinPlane::Forward:
+      return "φ 180°";
+    case BinPlane::Across:
+      return "φ 90°";
   }
   return "";
 }
@@ -62,8 +68,12 @@ constexpr double kPeakHalfWidthDeg = 2.0;
 ValidationBin peak_bin(ExitSide side, const char* peak, double theta_deg) {
   if (theta_deg <= kPeakHalfWidthDeg) return {side, BinPlane::Back, 0.0, kPeakHalfWidthDeg, kPi, peak};
   const double top = std::min(theta_deg + kPeakHalfWidthDeg, 89.9);
-  return {side, BinPlane::Forward, top - 2.0 * kPeakHalfWidthDeg, top,
-          degrees_to_radians(kPeakHalfWidthDeg) / std::sin(degrees_to_radians(theta_deg)), peak};
+  return {side,
+          BinPlane::Forward,
+          top - 2.0 * kPeakHalfWidthDeg,
+          top,
+          degrees_to_radians(kPeakHalfWidthDeg) / std::sin(degrees_to_radians(theta_deg)),
+          peak};
 }
 
 // n_below / n_above of the whole layer: the flat interfaces send light at theta_i straight through to

@@ -70,7 +70,7 @@ struct SetResult {
   std::vector<Comparison> albedos;  // R surface, R subsurface, T
   std::vector<ValidationBin> bins;
   std::vector<Comparison> bin_comparisons;  // one per bin, in the same order
-  LayerTables tables;  // the solver's tables, for plotting
+  LayerTables tables;                       // the solver's tables, for plotting
 
   bool agrees() const;  // no comparison disagrees
   // The largest |sigmas()| and |relative()| over the judged comparisons.

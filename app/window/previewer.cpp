@@ -17,9 +17,9 @@
 #include "app/window/control_panel.h"
 #include "app/window/glfw_window.h"
 #include "app/window/help_overlay.h"
-#include "app/window/ui_context.h"
 #include "app/window/screenshot.h"
 #include "app/window/shortcuts.h"
+#include "app/window/ui_context.h"
 #include "app/window/view_overlays.h"
 #include "core/conventions.h"
 

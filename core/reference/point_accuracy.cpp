@@ -38,8 +38,7 @@ std::vector<double> judged_exit_angles(const Material& material, double theta_i)
   return angles;
 }
 
-PointAccuracy point_accuracy(const Material& material, std::span<const double> incidence,
-                             const SolveOptions& options) {
+PointAccuracy point_accuracy(const Material& material, std::span<const double> incidence, const SolveOptions& options) {
   PointAccuracy result;
   result.ordinates = choose_resolution(material).ordinates;
   const auto start = std::chrono::steady_clock::now();
@@ -62,7 +61,8 @@ PointAccuracy point_accuracy(const Material& material, std::span<const double> i
           p.theta_o = theta_o;
           p.phi = phi;
           p.transmission = transmission;
-          p.value = transmission ? automatic.btdf(theta_i, theta_o, phi) : automatic.brdf_subsurface(theta_i, theta_o, phi);
+          p.value =
+              transmission ? automatic.btdf(theta_i, theta_o, phi) : automatic.brdf_subsurface(theta_i, theta_o, phi);
           p.converged =
               transmission ? converged.btdf(theta_i, theta_o, phi) : converged.brdf_subsurface(theta_i, theta_o, phi);
           (transmission ? peak_t : peak_r) = std::max(transmission ? peak_t : peak_r, p.converged);

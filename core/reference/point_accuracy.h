@@ -18,17 +18,17 @@
 namespace skinlayer {
 
 struct PointError {
-  double relative = 0.0;  // |f - f_converged| / f_converged
-  double value = 0.0;     // f at the automatic resolution [1/sr]
-  double converged = 0.0; // [1/sr]
+  double relative = 0.0;                           // |f - f_converged| / f_converged
+  double value = 0.0;                              // f at the automatic resolution [1/sr]
+  double converged = 0.0;                          // [1/sr]
   double theta_i = 0.0, theta_o = 0.0, phi = 0.0;  // radians (graphics convention)
   bool transmission = false;
 };
 
 struct PointAccuracy {
-  PointError worst;         // the largest relative error among the judged points
-  int judged = 0;           // points above 1e-3 of the peak
-  int ordinates = 0;        // the automatic N
+  PointError worst;            // the largest relative error among the judged points
+  int judged = 0;              // points above 1e-3 of the peak
+  int ordinates = 0;           // the automatic N
   double solve_seconds = 0.0;  // the automatic solve's wall time
 };
 

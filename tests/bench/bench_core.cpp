@@ -79,19 +79,24 @@ template <typename Change>
 void BM_ResolveParallel(benchmark::State& state, Change change) {
   resolve_benchmark(state, change, true);
 }
-BENCHMARK_CAPTURE(BM_Resolve, albedo, [](Material& m, int step) { m.albedo = step % 2 ? 0.9 : 0.95; })
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Resolve, albedo, [](Material& m, int step) {
+  m.albedo = step % 2 ? 0.9 : 0.95;
+})->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Resolve, T, [](Material& m, int step) {
   m.tau = optical_depth_from_transparency(step % 2 ? 0.25 : 0.2);
 })->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Resolve, g, [](Material& m, int step) { m.g = 0.8 - 1e-5 * (step % 1000); })
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Resolve, sigma, [](Material& m, int step) { m.sigma = 0.5 + 1e-4 * step; })
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Resolve, g, [](Material& m, int step) {
+  m.g = 0.8 - 1e-5 * (step % 1000);
+})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Resolve, sigma, [](Material& m, int step) {
+  m.sigma = 0.5 + 1e-4 * step;
+})->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ResolveParallel, albedo, [](Material& m, int step) { m.albedo = step % 2 ? 0.9 : 0.95; })
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_ResolveParallel, sigma, [](Material& m, int step) { m.sigma = 0.5 + 1e-4 * step; })
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The solve at a fixed number of ordinates per hemisphere, N = 8 .. 128. N = 8 is below the default material's
 // minimum (6/sigma and the g = 0.8 phase function need 12), so the sweep uses sigma 0.8 and g 0.5, the rest default.

@@ -92,14 +92,20 @@ void BM_SliderToFrame(benchmark::State& state, Change change) {
   }
 }
 BENCHMARK_CAPTURE(BM_SliderToFrame, albedo, [](ColorMaterial& m, int step) { m.albedo_rgb[0] = step % 2 ? 0.9 : 0.95; })
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_SliderToFrame, T, [](ColorMaterial& m, int step) {
-  m.layer.tau = optical_depth_from_transparency(step % 2 ? 0.25 : 0.2);
-})->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_SliderToFrame, T,
+                  [](ColorMaterial& m, int step) {
+                    m.layer.tau = optical_depth_from_transparency(step % 2 ? 0.25 : 0.2);
+                  })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_SliderToFrame, g, [](ColorMaterial& m, int step) { m.layer.g = 0.8 - 1e-5 * (step % 1000); })
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(BM_SliderToFrame, sigma, [](ColorMaterial& m, int step) { m.layer.sigma = 0.5 + 1e-4 * step; })
-    ->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 // The CPU resampling of solved tables into the GPU layout.
 void BM_TableTextures(benchmark::State& state) {

@@ -51,10 +51,14 @@ class CollectingReporter : public benchmark::ConsoleReporter {
  private:
   static double to_ms(benchmark::TimeUnit unit) {
     switch (unit) {
-      case benchmark::kNanosecond: return 1e-6;
-      case benchmark::kMicrosecond: return 1e-3;
-      case benchmark::kMillisecond: return 1.0;
-      case benchmark::kSecond: return 1e3;
+      case benchmark::kNanosecond:
+        return 1e-6;
+      case benchmark::kMicrosecond:
+        return 1e-3;
+      case benchmark::kMillisecond:
+        return 1.0;
+      case benchmark::kSecond:
+        return 1e3;
     }
     return 1.0;
   }
@@ -76,7 +80,7 @@ std::string formatted(const char* format, auto... values) {
 }
 
 struct PowerLaw {
-  double scale = 0.0;     // t = scale N^exponent
+  double scale = 0.0;  // t = scale N^exponent
   double exponent = 0.0;
 };
 
@@ -105,8 +109,8 @@ void write_ordinates_plot(const std::vector<double>& n, const std::vector<double
   plot.x_min = 0.0;
   plot.x_max = 128.0;
   plot.x_tick = 16.0;
-  figures::XySeries curve{formatted("fit %.3g N^%.2f (N ≥ 16)", fit.scale, fit.exponent), figures::curve_color(0),
-                          {}, {}, {}};
+  figures::XySeries curve{
+      formatted("fit %.3g N^%.2f (N ≥ 16)", fit.scale, fit.exponent), figures::curve_color(0), {}, {}, {}};
   for (double x = 4.0; x <= 128.0; x += 1.0) curve.curve.push_back({x, fit.scale * std::pow(x, fit.exponent)});
   figures::XySeries points{"measured (median of 3)", figures::kPlotInk, {}, {}, {}};
   for (std::size_t k = 0; k < n.size(); ++k) points.points.push_back({n[k], t[k], 0.0});
@@ -146,11 +150,12 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
   const Resolution resolution = choose_resolution(material);
   const LayerTables tables = solve(material);
   md << "## The default solve\n\n"
-     << formatted("The paper's default layer (σ 0.5, η 1.4, T 0.2, Ω 1, g 0.8, air below) at the automatic resolution "
-                  "(N = %d, %d Fourier modes, %d×%d tables): **%.2f ms**. Directional albedo at four angles: %.2f ms."
-                  "\n\n",
-                  resolution.ordinates, tables.modes(), tables.grid_size(), tables.grid_size(),
-                  r.ms("BM_SolveDefault"), r.ms("BM_DirectionalAlbedo"));
+     << formatted(
+            "The paper's default layer (σ 0.5, η 1.4, T 0.2, Ω 1, g 0.8, air below) at the automatic resolution "
+            "(N = %d, %d Fourier modes, %d×%d tables): **%.2f ms**. Directional albedo at four angles: %.2f ms."
+            "\n\n",
+            resolution.ordinates, tables.modes(), tables.grid_size(), tables.grid_size(), r.ms("BM_SolveDefault"),
+            r.ms("BM_DirectionalAlbedo"));
 
   md << "## Re-solves with the cache warm\n\n"
      << "One slider step from the default material, single channel, one thread, with a `SolveCache` kept across "
@@ -161,9 +166,10 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
     const double ms = r.ms(std::string("BM_Resolve/") + parameter);
     md << formatted("| %s | %.2f | %.0f%% |\n", parameter, ms, 100.0 * ms / r.ms("BM_SolveDefault"));
   }
-  md << formatted("\nOne unscattered BTDF evaluation through two rough interfaces (core/unscattered_light.h, the "
-                  "32×32 slope quadrature): %.0f µs.\n\n",
-                  1e3 * r.ms("BM_UnscatteredBtdfTwoInterfaces"));
+  md << formatted(
+      "\nOne unscattered BTDF evaluation through two rough interfaces (core/unscattered_light.h, the "
+      "32×32 slope quadrature): %.0f µs.\n\n",
+      1e3 * r.ms("BM_UnscatteredBtdfTwoInterfaces"));
 
   std::vector<double> n_all, t_all, n_fit, t_fit;
   md << "## Cost against the number of ordinates N\n\n"
@@ -182,13 +188,13 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
   }
   const PowerLaw fit = fit_power_law(n_fit, t_fit);
   write_ordinates_plot(n_all, t_all, fit, png);
-  md << formatted("\nLeast-squares fit over N ≥ 16: **t ≈ %.3g · N^%.2f ms**; the last doubling (64 → 128) costs "
-                  "N^%.2f. The exponent stays under the eigen-decomposition's 3 because at these N the kernel "
-                  "projections (N² node pairs times the azimuth samples) and the N-independent work (the 48 table "
-                  "directions' slope-space albedos and projections, the tables) carry most of the time.\n\n"
-                  "![solve time against N](%s)\n\n",
-                  fit.scale, fit.exponent, std::log2(t_all.back() / t_all[t_all.size() - 2]),
-                  png.filename().string().c_str());
+  md << formatted(
+      "\nLeast-squares fit over N ≥ 16: **t ≈ %.3g · N^%.2f ms**; the last doubling (64 → 128) costs "
+      "N^%.2f. The exponent stays under the eigen-decomposition's 3 because at these N the kernel "
+      "projections (N² node pairs times the azimuth samples) and the N-independent work (the 48 table "
+      "directions' slope-space albedos and projections, the tables) carry most of the time.\n\n"
+      "![solve time against N](%s)\n\n",
+      fit.scale, fit.exponent, std::log2(t_all.back() / t_all[t_all.size() - 2]), png.filename().string().c_str());
 
   md << "## Cost against the Fourier order\n\nThe default material, exactly M modes (no early stop).\n\n"
         "| M | ms | ms per mode |\n|---|---|---|\n";
@@ -221,9 +227,10 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
       dominant = s.name;
     }
   }
-  md << formatted("\n## Time per mode, by stage\n\nThe default solve's stages timed apart (tests/bench/solve_stages.h), "
-                  "divided by its %d modes.\n\n| stage | ms per mode | share | what |\n|---|---|---|---|\n",
-                  in.modes);
+  md << formatted(
+      "\n## Time per mode, by stage\n\nThe default solve's stages timed apart (tests/bench/solve_stages.h), "
+      "divided by its %d modes.\n\n| stage | ms per mode | share | what |\n|---|---|---|---|\n",
+      in.modes);
   for (const Stage& s : stages) {
     const double ms = r.ms(std::string(s.benchmark) + "");
     md << formatted("| %s | %.3f | %.0f%% | %s |\n", s.name, ms / in.modes, 100.0 * ms / total, s.what);
@@ -246,11 +253,11 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
   };
   const double solve_seconds = 1e-3 * r.ms("BM_SolveDefault");
   md << "## Monte Carlo against the solver\n\n"
-     << formatted("The subsurface albedo of the default layer lit at 45°, by the Monte Carlo reference on one thread: "
-                  "%.0f paths/s (%.0f paths in %.2f s, R = %.5f ± %.5f). The solver's own error there, against "
-                  "N = 128: %.1e relative.\n\n",
-                  1.0 / per_path, 4.0 * kMonteCarloBenchPaths, mc.seconds, mc.value, mc.standard_error,
-                  solver_error)
+     << formatted(
+            "The subsurface albedo of the default layer lit at 45°, by the Monte Carlo reference on one thread: "
+            "%.0f paths/s (%.0f paths in %.2f s, R = %.5f ± %.5f). The solver's own error there, against "
+            "N = 128: %.1e relative.\n\n",
+            1.0 / per_path, 4.0 * kMonteCarloBenchPaths, mc.seconds, mc.value, mc.standard_error, solver_error)
      << "| target (1 standard error) | Monte Carlo time, one albedo at one angle | solver, every angle's BSDF | "
         "speed-up |\n|---|---|---|---|\n";
   for (const double target : {std::max(solver_error, 1e-6), 1e-3, 1e-2}) {
@@ -261,15 +268,16 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
   }
 
   const int gpu_size = SKINLAYER_TABLE_UPSAMPLE * (tables.grid_size() - 1) + 1;
-  const double cpu_bytes = 8.0 * static_cast<double>(tables.reflection_coefficients().size() +
-                                                     tables.transmission_coefficients().size());
+  const double cpu_bytes =
+      8.0 * static_cast<double>(tables.reflection_coefficients().size() + tables.transmission_coefficients().size());
   const double gpu_bytes = 2.0 * gpu_size * gpu_size * tables.modes() * 4 * 4;
   md << "\n## Memory of the tables, per material\n\n"
-     << formatted("The default material: %d modes on a %d×%d grid, reflection and transmission.\n\n"
-                  "| form | size |\n|---|---|\n| `LayerTables` (double, one channel) | %.2f MB |\n"
-                  "| GPU textures (RGBA32F, %d×%d, three channels, both tables) | %.2f MB |\n",
-                  tables.modes(), tables.grid_size(), tables.grid_size(), cpu_bytes / 1e6, gpu_size, gpu_size,
-                  gpu_bytes / 1e6);
+     << formatted(
+            "The default material: %d modes on a %d×%d grid, reflection and transmission.\n\n"
+            "| form | size |\n|---|---|\n| `LayerTables` (double, one channel) | %.2f MB |\n"
+            "| GPU textures (RGBA32F, %d×%d, three channels, both tables) | %.2f MB |\n",
+            tables.modes(), tables.grid_size(), tables.grid_size(), cpu_bytes / 1e6, gpu_size, gpu_size,
+            gpu_bytes / 1e6);
   return md.str();
 }
 

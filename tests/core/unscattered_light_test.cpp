@@ -81,8 +81,8 @@ TEST(UnscatteredLight, PublishedValuesAtTheSharpLobes) {
   for (const Case& c : cases) {
     Material m = slab(c.sigma, c.transparency, c.albedo, c.bottom);
     m.g = c.g;
-    const double f = solve(m).btdf(degrees_to_radians(c.theta_i), degrees_to_radians(c.theta_o),
-                                   degrees_to_radians(c.phi));
+    const double f =
+        solve(m).btdf(degrees_to_radians(c.theta_i), degrees_to_radians(c.theta_o), degrees_to_radians(c.phi));
     EXPECT_NEAR(f, c.expected, 5e-3 * c.expected)
         << "sigma " << c.sigma << " T " << c.transparency << " at " << c.theta_i << ", " << c.theta_o << ", " << c.phi;
   }
@@ -115,8 +115,8 @@ TEST(UnscatteredLight, TwoInterfaceQuadratureMatchesABruteForceIntegral) {
     double theta_i, theta_o, phi;
   };
   // Straight through, off the peak by about one and three lobe widths, across the plane, and grazing.
-  const Point points[] = {{0, 0, 0}, {0, 0.6, 0}, {0, 1.5, 90}, {30, 24.6, 180}, {30, 26, 180},
-                          {30, 24, 170},  {60, 46, 180}, {75, 53, 180}};
+  const Point points[] = {{0, 0, 0},     {0, 0.6, 0},   {0, 1.5, 90},  {30, 24.6, 180},
+                          {30, 26, 180}, {30, 24, 170}, {60, 46, 180}, {75, 53, 180}};
   for (const Point& p : points) {
     const Vec3 wi = direction_from_angles(degrees_to_radians(p.theta_i), 0.0);
     const Vec3 wo = transmitted_direction(degrees_to_radians(p.theta_o), degrees_to_radians(p.phi));
@@ -154,7 +154,8 @@ TEST(UnscatteredLight, TransmittedEnergyMatchesIndependentAlbedos) {
     for (const double ti_deg : {0.0, 40.0}) {
       const double ti = degrees_to_radians(ti_deg);
       const Vec3 toward_light = direction_from_angles(ti, 0.0);
-      const double expected = std::exp(-m.tau / std::cos(ti)) * interface_albedo(light.bottom(), toward_light).transmittance;
+      const double expected =
+          std::exp(-m.tau / std::cos(ti)) * interface_albedo(light.bottom(), toward_light).transmittance;
       EXPECT_NEAR(hemispherical_integral(light, ti), expected, 2e-3 * expected) << ti_deg;
     }
   }

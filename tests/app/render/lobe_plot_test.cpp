@@ -34,7 +34,8 @@ double cpu_lobe_value(const ColorTables& tables, double theta_i, double angle_fr
 std::array<int, 2> pixel_at(double angle, double r) {
   const std::array<double, 2> extent = view_extent({0, 0, kSize, kSize}, Renderer::kLobeMargin);
   const double px = r * std::sin(angle), py = r * std::cos(angle);
-  return {static_cast<int>((px / extent[0] + 1.0) * 0.5 * kSize), static_cast<int>((1.0 - py / extent[1]) * 0.5 * kSize)};
+  return {static_cast<int>((px / extent[0] + 1.0) * 0.5 * kSize),
+          static_cast<int>((1.0 - py / extent[1]) * 0.5 * kSize)};
 }
 
 // The lobe plot of `tables` (uploaded to the renderer, whose context is current) at theta_i drawn offscreen into a
@@ -94,8 +95,8 @@ TEST_P(LobePlot, RadiusAlongRaysMatchesCpu) {
   for (double degrees : {-60.0, 30.0, 65.0, 135.0}) {
     const double angle = degrees_to_radians(degrees);
     const double f = cpu_lobe_value(tables, theta_i, angle);
-    const double expected = log_scale ? std::max(0.0, 1.0 + std::log10(f / scene.lobes.peak) / scene.lobes.decades)
-                                      : f / scene.lobes.peak;
+    const double expected =
+        log_scale ? std::max(0.0, 1.0 + std::log10(f / scene.lobes.peak) / scene.lobes.decades) : f / scene.lobes.peak;
     if (expected < 0.1) continue;
     double last_filled = 0.0;
     for (double r = 0.02; r < 1.05; r += 0.25 * pixel) {

@@ -1,4 +1,6 @@
 // The validation's comparison rules and the solver side of a bin, without running the Monte Carlo walk.
+#include "app/validate/validation_run.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -6,7 +8,6 @@
 #include <string>
 
 #include "app/validate/validation_grid.h"
-#include "app/validate/validation_run.h"
 #include "core/conventions.h"
 #include "core/solver.h"
 
@@ -36,7 +37,7 @@ TEST(ValidationJudge, SparseBinsAreReportedNotJudgedUnlessEitherSideSeesLight) {
 }
 
 TEST(ValidationBins, CoverBothPlanesAndAcrossOnEachSideThatLeaks) {
-  const Material layer;  // transmits: air below
+  const Material layer;                                      // transmits: air below
   EXPECT_EQ(validation_bins(layer, 45.0).size(), 36u + 4u);  // + mirror, normal; straight through, normal
   Material base;
   base.bottom = parse_bottom("lambert:0.5");
