@@ -7,8 +7,7 @@
 
 namespace skinlayer {
 
-CosineProjector::CosineProjector(int modes, int samples)
-    : weights_(modes, samples), cos_(samples), sin_(samples) {
+CosineProjector::CosineProjector(int modes, int samples) : weights_(modes, samples), cos_(samples), sin_(samples) {
   if (modes < 1 || samples < 2) throw std::invalid_argument("CosineProjector: need modes >= 1 and samples >= 2");
   const double step = kPi / (samples - 1);
   for (int k = 0; k < samples; ++k) {
@@ -24,6 +23,12 @@ CosineProjector::CosineProjector(int modes, int samples)
 }
 
 double CosineProjector::angle(int k) const { return k * kPi / (samples() - 1); }
+
+std::size_t fourier_kernel_bytes(const FourierKernel& kernel) {
+  std::size_t bytes = 0;
+  for (const Eigen::MatrixXd& m : kernel) bytes += sizeof(double) * static_cast<std::size_t>(m.size());
+  return bytes;
+}
 
 Vec3 propagation_direction(double mu, double phi) {
   const double s = std::sqrt(std::max(0.0, 1.0 - mu * mu));

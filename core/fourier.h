@@ -14,6 +14,9 @@ namespace skinlayer {
 // Per Fourier mode m, a matrix K^m(to, from).
 using FourierKernel = std::vector<Eigen::MatrixXd>;
 
+// The memory a kernel's coefficients take, in bytes.
+std::size_t fourier_kernel_bytes(const FourierKernel& kernel);
+
 // Cosine coefficients of even, 2pi-periodic functions from samples at phi_k = k pi / (n - 1), k = 0..n-1:
 //   K^0 = (1/pi) int_0^pi K dphi,   K^m = (2/pi) int_0^pi K cos(m phi) dphi,
 // by the trapezoid rule, which is spectrally accurate for smooth periodic functions.

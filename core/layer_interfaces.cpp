@@ -6,6 +6,7 @@
 #include "core/interface_operators.h"
 
 namespace skinlayer {
+
 std::vector<double> negated(std::span<const double> cosines) {
   std::vector<double> result(cosines.begin(), cosines.end());
   for (double& v : result) v = -v;
@@ -49,12 +50,6 @@ std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos) 
   return result;
 }
 
-std::size_t kernel_bytes(const FourierKernel& kernel) {
-  std::size_t bytes = 0;
-  for (const Eigen::MatrixXd& m : kernel) bytes += sizeof(double) * static_cast<std::size_t>(m.size());
-  return bytes;
-}
-
 }  // namespace
 
 LayerGeometry classify_layer(const Material& material) {
@@ -82,7 +77,7 @@ std::size_t InterfaceKernels::bytes() const {
   std::size_t total = 0;
   for (const FourierKernel* k : {&r_top, &t_source, &t_exit, &t_source_exterior, &r_top_rows, &r_bottom, &t_bottom_exit,
                                  &s_bottom_beam, &t_bottom_beam, &r_bottom_rows, &r_bottom_beam_rows}) {
-    total += kernel_bytes(*k);
+    total += fourier_kernel_bytes(*k);
   }
   return total + sizeof(InterfaceAlbedo) * (top_inside.size() + bottom_inside.size());
 }

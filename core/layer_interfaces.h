@@ -45,11 +45,12 @@ struct InterfaceKernels {
   std::size_t bytes() const;  // the kernels' memory
 };
 
+// The cosines with their signs flipped: the same polar angles travelling the other way.
+std::vector<double> negated(std::span<const double> cosines);
+
 // mu_in: the outside cosines light arrives along (clamped off 0 by the caller); mu_out: those the tables leave along,
 // either none (fluxes only) or the same as mu_in. ordinates N, Fourier modes projected and azimuth samples as the
 // resolution says.
-// The cosines with their signs flipped: the same polar angles travelling the other way.
-std::vector<double> negated(std::span<const double> cosines);
 
 InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
                                    std::span<const double> mu_in, std::span<const double> mu_out);

@@ -6,9 +6,9 @@ namespace skinlayer {
 
 std::size_t PhaseKernels::bytes() const {
   std::size_t total = 0;
-  for (const std::vector<Eigen::MatrixXd>* kernel : {&phase.same, &phase.opposite, &beam_up_nodes, &beam_down_nodes,
-                                                     &beam_rows_up, &beam_rows_down, &same_rows, &opposite_rows}) {
-    for (const Eigen::MatrixXd& m : *kernel) total += sizeof(double) * static_cast<std::size_t>(m.size());
+  for (const FourierKernel* kernel : {&phase.same, &phase.opposite, &beam_up_nodes, &beam_down_nodes, &beam_rows_up,
+                                      &beam_rows_down, &same_rows, &opposite_rows}) {
+    total += fourier_kernel_bytes(*kernel);
   }
   return total;
 }

@@ -1,5 +1,6 @@
 #include "core/microfacet.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/conventions.h"
@@ -86,6 +87,11 @@ double rough_dielectric_bsdf(const RoughDielectric& interface, const Vec3& wi, c
                              double g1_wo) {
   return wi.z() * wo.z() > 0.0 ? microfacet_brdf(interface, wi, wo, g1_wi, g1_wo)
                                : microfacet_btdf(interface, wi, wo, g1_wi, g1_wo);
+}
+
+double refracted_lobe_width(const RoughDielectric& interface) {
+  const double n = std::max(interface.eta, 1.0 / interface.eta);
+  return interface.sigma * (1.0 - 1.0 / n);
 }
 
 Vec3 direction_from_angles(double theta, double phi) {

@@ -29,6 +29,10 @@ struct RoughDielectric {
   bool operator==(const RoughDielectric&) const = default;
 };
 
+// The angular width of the interface's refraction lobe on the denser side, w = sigma (1 - 1/n) radians with
+// n = max(eta, 1/eta): a facet tilted by sigma turns the refracted ray by that much less than it turns the normal.
+double refracted_lobe_width(const RoughDielectric& interface);
+
 // Reflection on either side:
 //   f_r = F(|wi.h|, eta_rel) D(h) G1(wi) G1(wo) / (4 |wi.n| |wo.n|),  h = normalize(wi + wo) (flipped to h.n > 0),
 // with eta_rel = n_other_side / n_this_side. Zero unless wi and wo lie on the same side.

@@ -23,9 +23,4 @@ void SolveCache::insert(const Key& key, std::shared_ptr<const void> value, std::
   }
 }
 
-void SolveCache::clear() {
-  entries_.clear();
-  bytes_ = 0;
-}
-
 }  // namespace skinlayer

@@ -64,7 +64,6 @@ class SolveCache {
   int misses() const { return misses_; }
   std::size_t entries() const { return entries_.size(); }
   std::size_t bytes() const { return bytes_; }
-  void clear();
 
  private:
   using Key = std::variant<InterfaceKernelKey, PhaseKernelKey>;

@@ -58,9 +58,10 @@ std::shared_ptr<const InterfaceKernels> kernels_for(const Material& material, co
 class LayerSolver {
  public:
   // The outside directions are the kernels' (mu_in: light arrives along; mu_out: the tables leave along, none for
-  // fluxes only). exact_unscattered: leave out of the exit sums the paths that UnscatteredLight evaluates exactly.
+  // fluxes only). exact_path: the unscattered path (UnscatteredLight::path) left out of the exit sums, because the
+  // caller evaluates it exactly; None keeps every path on the ordinates.
   LayerSolver(const Material& material, const Resolution& resolution, std::shared_ptr<const InterfaceKernels> kernels,
-              bool exact_unscattered, SolveCache* cache);
+              UnscatteredPath exact_path, SolveCache* cache);
 
   struct ModeResult {
     Eigen::MatrixXd reflection;    // K_out x K_in, graphics azimuth convention, 1/sr
@@ -80,17 +81,18 @@ class LayerSolver {
   const QuadratureRule& quadrature_;
   double tau_;
   double lambert_;
-  std::vector<double> mu_in_, mu_out_;
+  const std::vector<double>& mu_in_;
+  const std::vector<double>& mu_out_;
   Eigen::VectorXd beam_attenuation_;  // e^{-tau/mu0} per incident direction
   Eigen::VectorXd beam_flux_;         // F = 1/mu0 (so that E_perp mu0 = 1: values are BSDFs)
   bool want_exit_;
-  UnscatteredPath exact_path_ = UnscatteredPath::None;  // the unscattered path left out of the exit sums
-  Eigen::VectorXd node_attenuation_;                    // e^{-tau/mu_j} per node
+  UnscatteredPath exact_path_;        // the unscattered path left out of the exit sums
+  Eigen::VectorXd node_attenuation_;  // e^{-tau/mu_j} per node
   std::shared_ptr<const PhaseKernels> phase_kernels_;
 };
 
 LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
-                         std::shared_ptr<const InterfaceKernels> kernels, bool exact_unscattered, SolveCache* cache)
+                         std::shared_ptr<const InterfaceKernels> kernels, UnscatteredPath exact_path, SolveCache* cache)
     : kernels_(std::move(kernels)),
       geometry_(kernels_->geometry),
       quadrature_(kernels_->quadrature),
@@ -98,21 +100,24 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
       lambert_(material.bottom.lambert_albedo),
       mu_in_(kernels_->mu_in),
       mu_out_(kernels_->mu_out),
-      want_exit_(!mu_out_.empty()) {
+      want_exit_(!mu_out_.empty()),
+      exact_path_(want_exit_ ? exact_path : UnscatteredPath::None) {
   beam_attenuation_ = attenuation(mu_in_, tau_);
   node_attenuation_ = attenuation(quadrature_.nodes, tau_);
   beam_flux_ =
       Eigen::Map<const Eigen::VectorXd>(mu_in_.data(), static_cast<Eigen::Index>(mu_in_.size())).cwiseInverse();
-  if (exact_unscattered && want_exit_) exact_path_ = UnscatteredLight(material).path();
 
+  // The key names the outside directions only where the projections use them (an open top's beam; exits scattered
+  // to directly), so that a solve without them finds the node matrices of another one.
+  const bool beam = geometry_.top_open;
   const bool exterior = want_exit_ && (geometry_.top_open || geometry_.base == LayerBase::Open);
   PhaseKernelKey key{material.g,
                      resolution.ordinates,
                      resolution.max_modes,
                      resolution.phase_azimuths,
-                     mu_in_,
-                     mu_out_,
-                     geometry_.top_open,
+                     beam ? mu_in_ : std::vector<double>{},
+                     exterior ? mu_out_ : std::vector<double>{},
+                     beam,
                      exterior};
   const auto build = [&] {
     return phase_kernels(key.g, quadrature_, key.modes, key.azimuths, key.mu_in, key.mu_out, key.beam, key.exterior);
@@ -264,8 +269,7 @@ int ceil_to_int(double x) { return static_cast<int>(std::ceil(x)); }
 // ~0.3% there.
 int refracted_lobe_ordinates(const LayerGeometry& geometry) {
   const auto need = [](const RoughDielectric& interface) {
-    const double n = std::max(interface.eta, 1.0 / interface.eta);  // the bottom's eta is n_below / n_layer
-    return ceil_to_int(std::min(1.75 / (interface.sigma * (1.0 - 1.0 / n)), 128.0));
+    return ceil_to_int(std::min(1.75 / refracted_lobe_width(interface), 128.0));
   };
   int result = 0;
   if (!geometry.top_open) result = need(geometry.top);
@@ -349,9 +353,9 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
   const int k = resolution.table_size;
   std::vector<double> grid(k);
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
-  const LayerSolver solver(material, resolution, kernels_for(material, resolution, grid, grid, options.cache),
-                           options.exact_unscattered, options.cache);
   const UnscatteredLight unscattered = options.exact_unscattered ? UnscatteredLight(material) : UnscatteredLight();
+  const LayerSolver solver(material, resolution, kernels_for(material, resolution, grid, grid, options.cache),
+                           unscattered.path(), options.cache);
   const double tolerance = options.fourier_tolerance;
 
   const std::size_t plane = static_cast<std::size_t>(k) * k;
@@ -458,8 +462,8 @@ std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& m
   const Resolution resolution = choose_resolution(material, mode_zero);
   std::vector<double> mu0(theta_i.size());
   for (std::size_t k = 0; k < theta_i.size(); ++k) mu0[k] = std::cos(theta_i[k]);
-  const LayerSolver solver(material, resolution, kernels_for(material, resolution, mu0, {}, options.cache), false,
-                           options.cache);
+  const LayerSolver solver(material, resolution, kernels_for(material, resolution, mu0, {}, options.cache),
+                           UnscatteredPath::None, options.cache);
   const LayerGeometry& geometry = solver.kernels().geometry;
   const QuadratureRule& q = solver.kernels().quadrature;
 

@@ -134,7 +134,9 @@ std::vector<SlopeNode> slope_nodes() {
 
 }  // namespace
 
-UnscatteredLight::UnscatteredLight(const Material& material) : tau_(material.tau) {
+UnscatteredLight::UnscatteredLight(const Material& material)
+    : tau_(material.tau),
+      index_below_(material.bottom.kind == BottomKind::Matched ? material.eta : material.eta / material.bottom_eta()) {
   const bool top_open = material.eta == 1.0;
   top_ = {material.eta, material.sigma};
   bottom_ = {1.0 / material.bottom_eta(), material.bottom_sigma()};
@@ -153,6 +155,10 @@ UnscatteredLight::UnscatteredLight(const Material& material) : tau_(material.tau
       }
       return;
   }
+}
+
+double UnscatteredLight::straight_through_angle(double theta_i) const {
+  return std::asin(std::min(1.0, std::sin(theta_i) / index_below_));
 }
 
 double UnscatteredLight::btdf(double theta_i, double theta_o, double phi) const {

@@ -50,6 +50,11 @@ class UnscatteredLight {
   const RoughDielectric& bottom() const { return bottom_; }  // frame +z up into the layer: eta = n_below / n_layer
   double tau() const { return tau_; }
 
+  // The exit angle (radians, from the lower normal, forward) of light at theta_i crossing the layer's flat
+  // interfaces: sin(theta_o) = sin(theta_i) / (n_below / n_above), n_below / n_above = eta over a matched bottom and
+  // eta / eta3 otherwise; the centre of the unscattered BTDF lobe. Clamped at grazing.
+  double straight_through_angle(double theta_i) const;
+
   bool operator==(const UnscatteredLight&) const = default;
 
  private:
@@ -57,6 +62,7 @@ class UnscatteredLight {
   RoughDielectric top_{};
   RoughDielectric bottom_{};
   double tau_ = 0.0;
+  double index_below_ = 1.0;  // n_below / n_above
 };
 
 // f_T of two rough interfaces in sequence (the TopThenBottom formula above) for unit vectors wi (z > 0) and wo

@@ -9,30 +9,11 @@
 namespace skinlayer {
 namespace {
 
-// n_below / n_above of the whole layer: the flat interfaces' exit obeys sin(theta_o) = sin(theta_i) / ratio.
-double index_ratio(const UnscatteredLight& light) {
-  switch (light.path()) {
-    case UnscatteredPath::TopOnly:
-      return light.top().eta;
-    case UnscatteredPath::BottomOnly:
-      return light.bottom().eta;
-    case UnscatteredPath::TopThenBottom:
-      return light.top().eta * light.bottom().eta;
-    case UnscatteredPath::None:
-      break;
-  }
-  return 1.0;
-}
-
-// A quarter of the narrowest refracted lobe's width, sigma (1 - 1/n) for an interface of index ratio n >= 1.
+// A quarter of the narrowest refracted lobe's width (refracted_lobe_width, core/microfacet.h).
 double lobe_scale(const UnscatteredLight& light) {
-  const auto width = [](const RoughDielectric& interface) {
-    const double n = std::max(interface.eta, 1.0 / interface.eta);
-    return interface.sigma * (1.0 - 1.0 / n);
-  };
   double w = 1.0;
-  if (light.path() != UnscatteredPath::BottomOnly) w = std::min(w, width(light.top()));
-  if (light.path() != UnscatteredPath::TopOnly) w = std::min(w, width(light.bottom()));
+  if (light.path() != UnscatteredPath::BottomOnly) w = std::min(w, refracted_lobe_width(light.top()));
+  if (light.path() != UnscatteredPath::TopOnly) w = std::min(w, refracted_lobe_width(light.bottom()));
   return std::clamp(0.25 * w, 1e-3, 0.1);
 }
 
@@ -48,7 +29,7 @@ UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double 
   plane.light = light;
   plane.theta_i = theta_i;
   if (light.path() == UnscatteredPath::None || samples < 2) return plane;
-  plane.centre = std::asin(std::min(1.0, std::sin(theta_i) / index_ratio(light)));
+  plane.centre = light.straight_through_angle(theta_i);
   plane.scale = lobe_scale(light);
   plane.u_min = std::asinh((-0.5 * kPi - plane.centre) / plane.scale);
   plane.u_max = std::asinh((0.5 * kPi - plane.centre) / plane.scale);

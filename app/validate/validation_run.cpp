@@ -9,6 +9,7 @@
 #include "core/conventions.h"
 #include "core/reference/bin_average.h"
 #include "core/solver.h"
+#include "core/unscattered_light.h"
 
 namespace skinlayer::validation {
 namespace {
@@ -76,13 +77,6 @@ ValidationBin peak_bin(ExitSide side, const char* peak, double theta_deg) {
           peak};
 }
 
-// n_below / n_above of the whole layer: the flat interfaces send light at theta_i straight through to
-// sin(theta_t) = sin(theta_i) / n.
-double layer_index_ratio(const Material& material) {
-  if (material.bottom.kind == BottomKind::Matched) return material.eta;
-  return material.eta / material.bottom_eta();
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -107,11 +101,11 @@ std::vector<ValidationBin> validation_bins(const Material& material, double thet
       }
     }
   }
-  const double sin_i = std::sin(degrees_to_radians(theta_i_deg));
   if (theta_i_deg > kPeakHalfWidthDeg) bins.push_back(peak_bin(ExitSide::Reflected, "mirror", theta_i_deg));
   bins.push_back(peak_bin(ExitSide::Reflected, "normal", 0.0));
   if (transmits(material)) {
-    const double straight = radians_to_degrees(std::asin(std::min(1.0, sin_i / layer_index_ratio(material))));
+    const double straight =
+        radians_to_degrees(UnscatteredLight(material).straight_through_angle(degrees_to_radians(theta_i_deg)));
     if (straight > kPeakHalfWidthDeg) bins.push_back(peak_bin(ExitSide::Transmitted, "straight through", straight));
     bins.push_back(peak_bin(ExitSide::Transmitted, "normal", 0.0));
   }

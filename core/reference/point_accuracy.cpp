@@ -6,6 +6,7 @@
 
 #include "core/conventions.h"
 #include "core/solver.h"
+#include "core/unscattered_light.h"
 
 namespace skinlayer {
 namespace {
@@ -28,11 +29,7 @@ std::vector<double> judged_exit_angles(const Material& material, double theta_i)
   for (int k = 0; k < 180; ++k) angles.push_back(degrees_to_radians(0.5 * k));
   add_fine_window(angles, 0.0);
   add_fine_window(angles, theta_i);  // the mirror direction; straight through a layer with air on both sides
-  // Straight through into the medium below: sin(theta_o) = sin(theta_i) / (n_below / n_air).
-  const double n_below = material.bottom.kind == BottomKind::Matched ? material.eta
-                         : material.bottom.kind == BottomKind::Air   ? material.eta / material.bottom_eta()
-                                                                     : 1.0;
-  add_fine_window(angles, std::asin(std::min(1.0, std::sin(theta_i) / n_below)));
+  add_fine_window(angles, UnscatteredLight(material).straight_through_angle(theta_i));
   std::sort(angles.begin(), angles.end());
   angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
   return angles;
