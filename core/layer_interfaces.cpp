@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "core/interface_operators.h"
 
@@ -83,7 +84,8 @@ std::size_t InterfaceKernels::bytes() const {
 }
 
 InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
-                                   std::span<const double> mu_in, std::span<const double> mu_out) {
+                                   std::span<const double> mu_in, std::span<const double> mu_out,
+                                   const ParallelFor& parallel_for) {
   InterfaceKernels k;
   k.geometry = geometry;
   k.quadrature = double_gauss_half_range(ordinates);
@@ -99,57 +101,81 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   const std::vector<double> down = negated(up);
   const std::vector<double> down_in = negated(mu_in);
   const std::vector<double> down_out = negated(mu_out);
+  const bool rough_bottom = geometry.base == LayerBase::Rough;
+  const bool bottom_is_top = rough_bottom && geometry.bottom_mirrors_top && !geometry.top_open;
 
+  // Independent kernels, each written by one task: they run side by side on the caller's parallel-for.
+  std::vector<std::function<void()>> tasks;
   if (!geometry.top_open) {
-    k.r_top = interface_fourier(geometry.top, up, down, surface);
-    k.top_inside = interface_albedos_along(geometry.top, up, -1.0);
-    match_reflection_energy(k.r_top, up, weights, reflectances(k.top_inside));
-    apply_quadrature_weights(k.r_top, up, weights);
-    k.t_source = interface_fourier(geometry.top, down_in, down, surface);
-    match_column_energy(k.t_source, up, weights, transmittances(interface_albedos_along(geometry.top, mu_in, 1.0)));
-    if (want_exit) {
-      // By reciprocity the exit operator inherits the energy matching of the source columns, row by row.
-      k.t_exit = transmission_by_reciprocity(k.t_source, geometry.top.eta);
-      apply_quadrature_weights(k.t_exit, up, weights);
-      if (geometry.base == LayerBase::Open) {
+    tasks.emplace_back([&] {
+      k.r_top = interface_fourier(geometry.top, up, down, surface);
+      k.top_inside = interface_albedos_along(geometry.top, up, -1.0);
+      match_reflection_energy(k.r_top, up, weights, reflectances(k.top_inside));
+      apply_quadrature_weights(k.r_top, up, weights);
+    });
+    tasks.emplace_back([&] {
+      k.t_source = interface_fourier(geometry.top, down_in, down, surface);
+      match_column_energy(k.t_source, up, weights, transmittances(interface_albedos_along(geometry.top, mu_in, 1.0)));
+      if (want_exit) {
+        // By reciprocity the exit operator inherits the energy matching of the source columns, row by row.
+        k.t_exit = transmission_by_reciprocity(k.t_source, geometry.top.eta);
+        apply_quadrature_weights(k.t_exit, up, weights);
+      }
+    });
+    if (want_exit && geometry.base == LayerBase::Open) {
+      tasks.emplace_back([&] {
         k.t_source_exterior = interface_fourier(geometry.top, down_in, down_out, surface);
         k.r_top_rows = interface_fourier(geometry.top, up, down_out, surface);
         apply_quadrature_weights(k.r_top_rows, up, weights);
-      }
+      });
     }
   }
-  if (geometry.base != LayerBase::Rough) return k;
-  if (geometry.bottom_mirrors_top && !geometry.top_open) {
+  if (rough_bottom && !bottom_is_top) {
+    tasks.emplace_back([&] {
+      k.r_bottom = interface_fourier(geometry.bottom, down, up, surface);
+      k.bottom_inside = interface_albedos_along(geometry.bottom, up, 1.0);
+      match_reflection_energy(k.r_bottom, up, weights, reflectances(k.bottom_inside));
+      apply_quadrature_weights(k.r_bottom, up, weights);
+    });
+    if (want_exit) {
+      tasks.emplace_back([&] {
+        // As for the top: the exit rows are the transposed source columns from the air below (propagating up), each
+        // matched to its slope-space transmittance. A sharp, low-contrast bottom (sigma3 0.2, eta3 1.2) has an
+        // interior lobe ~ sigma3 (1 - 1/eta3) wide, narrower than the node spacing: its unmatched node sums ripple
+        // by percents across exit angles.
+        FourierKernel from_below = interface_fourier(geometry.bottom, mu_out, up, surface);
+        match_column_energy(from_below, up, weights,
+                            transmittances(interface_albedos_along(geometry.bottom, mu_out, -1.0)));
+        k.t_bottom_exit = transmission_by_reciprocity(from_below, 1.0 / geometry.bottom.eta);
+        apply_quadrature_weights(k.t_bottom_exit, up, weights);
+      });
+    }
+  }
+  if (rough_bottom && geometry.top_open) {
+    tasks.emplace_back([&] {
+      k.s_bottom_beam = interface_fourier(geometry.bottom, down_in, up, surface);
+      match_column_energy(k.s_bottom_beam, up, weights,
+                          reflectances(interface_albedos_along(geometry.bottom, mu_in, 1.0)));
+    });
+    if (want_exit) {
+      tasks.emplace_back([&] {
+        k.t_bottom_beam = interface_fourier(geometry.bottom, down_in, down_out, surface);
+        k.r_bottom_rows = interface_fourier(geometry.bottom, down, mu_out, surface);
+        apply_quadrature_weights(k.r_bottom_rows, up, weights);
+        k.r_bottom_beam_rows = interface_fourier(geometry.bottom, down_in, mu_out, surface);
+      });
+    }
+  }
+  const auto run = [&](int i) { tasks[static_cast<std::size_t>(i)](); };
+  if (parallel_for && tasks.size() > 1) {
+    parallel_for(static_cast<int>(tasks.size()), run);
+  } else {
+    for (std::size_t i = 0; i < tasks.size(); ++i) run(static_cast<int>(i));
+  }
+  if (bottom_is_top) {
     k.r_bottom = k.r_top;
     k.t_bottom_exit = k.t_exit;
     k.bottom_inside = k.top_inside;
-  } else {
-    k.r_bottom = interface_fourier(geometry.bottom, down, up, surface);
-    k.bottom_inside = interface_albedos_along(geometry.bottom, up, 1.0);
-    match_reflection_energy(k.r_bottom, up, weights, reflectances(k.bottom_inside));
-    apply_quadrature_weights(k.r_bottom, up, weights);
-    if (want_exit) {
-      // As for the top: the exit rows are the transposed source columns from the air below (propagating up), each
-      // matched to its slope-space transmittance. A sharp, low-contrast bottom (sigma3 0.2, eta3 1.2) has an
-      // interior lobe ~ sigma3 (1 - 1/eta3) wide, narrower than the node spacing: its unmatched node sums ripple
-      // by percents across exit angles.
-      FourierKernel from_below = interface_fourier(geometry.bottom, mu_out, up, surface);
-      match_column_energy(from_below, up, weights,
-                          transmittances(interface_albedos_along(geometry.bottom, mu_out, -1.0)));
-      k.t_bottom_exit = transmission_by_reciprocity(from_below, 1.0 / geometry.bottom.eta);
-      apply_quadrature_weights(k.t_bottom_exit, up, weights);
-    }
-  }
-  if (geometry.top_open) {
-    k.s_bottom_beam = interface_fourier(geometry.bottom, down_in, up, surface);
-    match_column_energy(k.s_bottom_beam, up, weights,
-                        reflectances(interface_albedos_along(geometry.bottom, mu_in, 1.0)));
-    if (want_exit) {
-      k.t_bottom_beam = interface_fourier(geometry.bottom, down_in, down_out, surface);
-      k.r_bottom_rows = interface_fourier(geometry.bottom, down, mu_out, surface);
-      apply_quadrature_weights(k.r_bottom_rows, up, weights);
-      k.r_bottom_beam_rows = interface_fourier(geometry.bottom, down_in, mu_out, surface);
-    }
   }
   return k;
 }

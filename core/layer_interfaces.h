@@ -12,6 +12,7 @@
 #include "core/interface_albedo.h"
 #include "core/material.h"
 #include "core/microfacet.h"
+#include "core/parallel_for.h"
 #include "core/quadrature.h"
 
 namespace skinlayer {
@@ -50,9 +51,10 @@ std::vector<double> negated(std::span<const double> cosines);
 
 // mu_in: the outside cosines light arrives along (clamped off 0 by the caller); mu_out: those the tables leave along,
 // either none (fluxes only) or the same as mu_in. ordinates N, Fourier modes projected and azimuth samples as the
-// resolution says.
-
+// resolution says. The independent kernels (top reflection, top transmission, bottom ...) run through parallel_for
+// when it is given (SolveOptions::parallel_for); the result is the same either way.
 InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
-                                   std::span<const double> mu_in, std::span<const double> mu_out);
+                                   std::span<const double> mu_in, std::span<const double> mu_out,
+                                   const ParallelFor& parallel_for = {});
 
 }  // namespace skinlayer

@@ -43,11 +43,11 @@ std::vector<double> clamped_cosines(std::span<const double> mu) {
 // The interface kernels of a solve, from the caller's cache where it has them.
 std::shared_ptr<const InterfaceKernels> kernels_for(const Material& material, const Resolution& resolution,
                                                     std::span<const double> mu_in, std::span<const double> mu_out,
-                                                    SolveCache* cache) {
+                                                    SolveCache* cache, const ParallelFor& parallel_for) {
   InterfaceKernelKey key{classify_layer(material),      resolution.ordinates,   resolution.interface_modes,
                          resolution.interface_azimuths, clamped_cosines(mu_in), clamped_cosines(mu_out)};
   const auto build = [&] {
-    return interface_kernels(key.geometry, key.ordinates, key.modes, key.azimuths, key.mu_in, key.mu_out);
+    return interface_kernels(key.geometry, key.ordinates, key.modes, key.azimuths, key.mu_in, key.mu_out, parallel_for);
   };
   if (cache == nullptr) return std::make_shared<const InterfaceKernels>(build());
   return cache->interface_kernels(key, build);
@@ -354,7 +354,8 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
   std::vector<double> grid(k);
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
   const UnscatteredLight unscattered = options.exact_unscattered ? UnscatteredLight(material) : UnscatteredLight();
-  const LayerSolver solver(material, resolution, kernels_for(material, resolution, grid, grid, options.cache),
+  const LayerSolver solver(material, resolution,
+                           kernels_for(material, resolution, grid, grid, options.cache, options.parallel_for),
                            unscattered.path(), options.cache);
   const double tolerance = options.fourier_tolerance;
 
@@ -462,7 +463,8 @@ std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& m
   const Resolution resolution = choose_resolution(material, mode_zero);
   std::vector<double> mu0(theta_i.size());
   for (std::size_t k = 0; k < theta_i.size(); ++k) mu0[k] = std::cos(theta_i[k]);
-  const LayerSolver solver(material, resolution, kernels_for(material, resolution, mu0, {}, options.cache),
+  const LayerSolver solver(material, resolution,
+                           kernels_for(material, resolution, mu0, {}, options.cache, options.parallel_for),
                            UnscatteredPath::None, options.cache);
   const LayerGeometry& geometry = solver.kernels().geometry;
   const QuadratureRule& q = solver.kernels().quadrature;

@@ -12,6 +12,7 @@
 
 #include "core/layer_tables.h"
 #include "core/material.h"
+#include "core/parallel_for.h"
 
 namespace skinlayer {
 
@@ -27,10 +28,9 @@ struct SolveOptions {
   bool exact_unscattered = true;
   // The caller's cache of interface operators (core/solve_cache.h); null = build them for this solve only.
   SolveCache* cache = nullptr;
-  // The caller's parallel-for: runs body(0) ... body(count - 1), each once, possibly side by side, and returns when
-  // all have (rethrowing the first exception). The solver runs independent albedos (RGB channels) through it; core
-  // itself starts no threads. Empty = one after another.
-  std::function<void(int count, const std::function<void(int)>& body)> parallel_for;
+  // The caller's parallel-for (core/parallel_for.h). The solver runs independent work through it: RGB channels,
+  // blocks of Fourier modes, the interface kernels; core itself starts no threads. Empty = one after another.
+  ParallelFor parallel_for;
 };
 
 // The discretization a solve uses, chosen from the material (and its ordinates override).

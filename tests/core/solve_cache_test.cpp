@@ -109,6 +109,20 @@ TEST(SolveCache, ParallelAlbedosEqualSerialOnes) {
     expect_identical(solve(one, parallel), solve(one), "modes in parallel");
   }
   EXPECT_GE(calls, 4);
+  // The interface kernels (top reflection, top transmission, a bottom unlike the top, an open top's bottom beam)
+  // are built side by side too.
+  Material unlike_bottom = m;
+  unlike_bottom.bottom.sigma = 0.3;
+  unlike_bottom.bottom.eta = 1.2;
+  Material open_top = unlike_bottom;
+  open_top.eta = 1.0;
+  Material matched = m;
+  matched.bottom.kind = BottomKind::Matched;
+  for (const Material& kind : {unlike_bottom, open_top, matched}) {
+    calls = 0;
+    expect_identical(solve(kind, parallel), solve(kind), "interface kernels in parallel");
+    EXPECT_GE(calls, 2);
+  }
 }
 
 }  // namespace
