@@ -13,6 +13,15 @@ uniform float u_peak;         // the BSDF value drawn at radius 1  [1/sr]
 uniform float u_decades;      // decades shown by the log scale
 uniform int u_output_linear;  // 1: write the plotted radius of the total lobe in R (tests); 0: colors
 
+// The subsurface tables in the plane of incidence at u_theta_i, their modes summed (app/render/lobe_profile.h):
+// rows reflection at phi 0 and pi, transmission at phi 0 and pi; columns the tables' theta_o texels.
+uniform sampler2D u_lobe_profile;
+
+vec3 in_plane_profile(int row, float theta_o) {
+  float v = (float(row) + 0.5) / 4.0;
+  return max(texture(u_lobe_profile, vec2(table_coordinate(theta_o), v)).rgb, vec3(0.0));
+}
+
 float lobe_radius(float f) {
   if (f <= 0.0) return 0.0;
   if (u_log_scale == 1) return max(0.0, 1.0 + log(f / u_peak) / (log(10.0) * u_decades));
@@ -33,8 +42,9 @@ void main() {
   vec3 wi = vec3(sin(u_theta_i), 0.0, cos(u_theta_i));
   vec3 wo = vec3(sin(theta_o) * cos(phi), 0.0, cos(theta_o));
   float surface = reflection ? microfacet_brdf(wi, wo, u_eta, u_sigma) : 0.0;
-  vec3 sub = reflection ? brdf_subsurface(u_theta_i, theta_o, phi) + vec3(unscattered_brdf(wi, wo))
-                        : btdf_layer(u_theta_i, theta_o, phi) + vec3(unscattered_btdf_in_plane(p.x >= 0.0 ? theta_o : -theta_o));
+  int forward = p.x >= 0.0 ? 1 : 0;
+  vec3 sub = reflection ? in_plane_profile(forward, theta_o) + vec3(unscattered_brdf(wi, wo))
+                        : in_plane_profile(2 + forward, theta_o) + vec3(unscattered_btdf_in_plane(p.x >= 0.0 ? theta_o : -theta_o));
   float f_sub = (sub.r + sub.g + sub.b) / 3.0;
   float r_sub = lobe_radius(f_sub);
   float r_total = lobe_radius(f_sub + surface);

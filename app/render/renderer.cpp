@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "app/render/lobe_profile.h"
 #include "app/render/shader_sources.h"
 
 namespace skinlayer {
@@ -46,6 +48,7 @@ Renderer::Renderer()
     : sphere_(build("sphere.frag")),
       lobe_(build("lobe.frag")),
       unscattered_plane_(gl::create_texture()),
+      lobe_profile_(gl::create_texture()),
       vertex_array_(gl::create_vertex_array()) {
   const TableTextureData empty{2, 0, std::vector<float>(16, 0.0f), std::vector<float>(16, 0.0f), {}};
   for (int slot = 0; slot < kTableSlots; ++slot) {
@@ -56,12 +59,11 @@ Renderer::Renderer()
   gl::check_errors("Renderer()");
 }
 
-void Renderer::upload(const TableTextureData& tables, int slot) {
+void Renderer::upload(TableTextureData tables, int slot) {
   TableSlot& target = slots_.at(static_cast<std::size_t>(slot));
   upload_array(target.reflection.get(), tables.size, tables.modes, tables.reflection);
   upload_array(target.transmission.get(), tables.size, tables.modes, tables.transmission);
-  target.modes = tables.modes;
-  target.unscattered = tables.unscattered;
+  target.data = std::move(tables);
   gl::check_errors("Renderer::upload");
 }
 
@@ -73,9 +75,9 @@ void Renderer::bind_tables(GLuint program, int slot) const {
   glBindTexture(GL_TEXTURE_2D_ARRAY, tables.transmission.get());
   glUniform1i(location(program, "u_reflection"), 0);
   glUniform1i(location(program, "u_transmission"), 1);
-  glUniform1i(location(program, "u_modes"), tables.modes);
+  glUniform1i(location(program, "u_modes"), tables.data.modes);
   // The closed-form unscattered BRDF of an open top over a rough bottom (shaders/unscattered.glsl).
-  const UnscatteredLight& light = tables.unscattered;
+  const UnscatteredLight& light = tables.data.unscattered;
   glUniform1i(location(program, "u_unscattered_reflects"), light.path() == UnscatteredPath::BottomOnly ? 1 : 0);
   glUniform1f(location(program, "u_tau"), static_cast<float>(light.tau()));
   glUniform1f(location(program, "u_bottom_eta"), static_cast<float>(light.bottom().eta));
@@ -129,6 +131,16 @@ void Renderer::draw_lobes(const LobeView& view, const SurfaceParams& surface, co
   glUniform1i(location(program, "u_unscattered_plane"), 2);
   glUniform4f(location(program, "u_unscattered_map"), static_cast<float>(plane.centre), static_cast<float>(plane.scale),
               static_cast<float>(plane.u_min), static_cast<float>(plane.u_max));
+  const TableTextureData& tables = slots_.at(static_cast<std::size_t>(slot)).data;
+  const std::vector<float> profile = lobe_profile(tables, view.theta_i);
+  glActiveTexture(GL_TEXTURE3);
+  glBindTexture(GL_TEXTURE_2D, lobe_profile_.get());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, tables.size, kLobeProfileRows, 0, GL_RGBA, GL_FLOAT, profile.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glUniform1i(location(program, "u_lobe_profile"), 3);
   glBindVertexArray(vertex_array_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glActiveTexture(GL_TEXTURE0);

@@ -49,7 +49,8 @@ class Renderer {
 
   Renderer();
 
-  void upload(const TableTextureData& tables, int slot = 0);
+  // Keeps the data too: the lobe plot sums its in-plane profile from it (app/render/lobe_profile.h).
+  void upload(TableTextureData tables, int slot = 0);
 
   void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0) const;
   void draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0) const;
@@ -61,8 +62,7 @@ class Renderer {
   struct TableSlot {
     gl::Texture reflection;
     gl::Texture transmission;
-    int modes = 0;
-    UnscatteredLight unscattered;
+    TableTextureData data;  // what the textures hold
   };
 
   void bind_tables(GLuint program, int slot) const;
@@ -73,6 +73,7 @@ class Renderer {
   gl::Program sphere_;
   gl::Program lobe_;
   gl::Texture unscattered_plane_;  // the lobe plot's in-plane unscattered BTDF, refilled by every draw_lobes
+  gl::Texture lobe_profile_;       // the lobe plot's in-plane subsurface profile, refilled by every draw_lobes
   gl::VertexArray vertex_array_;
   std::array<TableSlot, kTableSlots> slots_;
 };

@@ -147,9 +147,9 @@ class Previewer {
       return true;
     }
     for (std::size_t m = 0; m < result->by_model.size(); ++m) {  // renderer slot = model index
-      if (result->by_model[m]) renderer_.upload(result->textures_by_model[m], static_cast<int>(m));
+      if (result->by_model[m]) renderer_.upload(std::move(result->textures_by_model[m]), static_cast<int>(m));
     }
-    result->textures_by_model = {};  // on the GPU now
+    result->textures_by_model = {};  // the renderer holds them now
     error_.clear();
     shown_ = std::move(result);
     return true;
