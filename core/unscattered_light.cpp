@@ -161,21 +161,31 @@ double UnscatteredLight::straight_through_angle(double theta_i) const {
   return std::asin(std::min(1.0, std::sin(theta_i) / index_below_));
 }
 
-double UnscatteredLight::btdf(double theta_i, double theta_o, double phi) const {
-  if (path_ == UnscatteredPath::None) return 0.0;
+std::vector<DepthTerm> UnscatteredLight::btdf_terms(double theta_i, double theta_o, double phi) const {
+  if (path_ == UnscatteredPath::None) return {};
   const Vec3 wi = direction_from_angles(theta_i, 0.0);
   const Vec3 wo(std::sin(theta_o) * std::cos(phi), std::sin(theta_o) * std::sin(phi), -std::cos(theta_o));
   switch (path_) {
     case UnscatteredPath::TopOnly:
-      return microfacet_btdf(top_, wi, wo) * attenuation(tau_, -wo.z());
+      return {{microfacet_btdf(top_, wi, wo), -wo.z()}};
     case UnscatteredPath::BottomOnly:
-      return attenuation(tau_, wi.z()) * microfacet_btdf(bottom_, wi, wo);
+      return {{microfacet_btdf(bottom_, wi, wo), wi.z()}};
     case UnscatteredPath::TopThenBottom:
-      return two_interface_btdf(top_, bottom_, tau_, wi, wo);
+      return two_interface_btdf_terms(top_, bottom_, wi, wo);
     case UnscatteredPath::None:
       break;
   }
-  return 0.0;
+  return {};
+}
+
+double UnscatteredLight::btdf(double theta_i, double theta_o, double phi) const {
+  return sum_depth_terms(btdf_terms(theta_i, theta_o, phi), tau_);
+}
+
+UnscatteredLight UnscatteredLight::at_depth(double tau) const {
+  UnscatteredLight other = *this;
+  other.tau_ = tau;
+  return other;
 }
 
 double UnscatteredLight::brdf(double theta_i, double theta_o, double phi) const {
@@ -185,24 +195,39 @@ double UnscatteredLight::brdf(double theta_i, double theta_o, double phi) const 
   return attenuation(tau_, wi.z()) * microfacet_brdf(bottom_, wi, wo) * attenuation(tau_, wo.z());
 }
 
-double two_interface_btdf(const RoughDielectric& top, const RoughDielectric& bottom, double tau, const Vec3& wi,
-                          const Vec3& wo) {
-  if (wi.z() <= 0.0 || wo.z() >= 0.0) return 0.0;
+std::vector<DepthTerm> two_interface_btdf_terms(const RoughDielectric& top, const RoughDielectric& bottom,
+                                                const Vec3& wi, const Vec3& wo) {
+  if (wi.z() <= 0.0 || wo.z() >= 0.0) return {};
   // Sample the narrower lobe by its slopes; the other is then the smoother factor.
   const std::optional<Lobe> entry = refracted_lobe(-wi, 1.0, top.eta, top.sigma, 1.0);
   const std::optional<Lobe> exit = refracted_lobe(-wo, -1.0, 1.0 / bottom.eta, bottom.sigma, -1.0);
   const bool by_exit = entry && exit && exit->covariance.determinant() < entry->covariance.determinant();
   static const std::vector<SlopeNode> nodes = slope_nodes();
-  double sum = 0.0;
+  std::vector<DepthTerm> terms;
   for (const SlopeNode& node : nodes) {
     if (by_exit) {
       const std::optional<SlopeSample> s = sample_exit(bottom, wo, bottom.sigma * node.x, bottom.sigma * node.y);
-      if (s) sum += node.weight * s->weight * attenuation(tau, -s->d.z()) * microfacet_btdf(top, wi, s->d);
+      if (!s) continue;
+      const double value = node.weight * s->weight * microfacet_btdf(top, wi, s->d);
+      if (value != 0.0) terms.push_back({value, -s->d.z()});
     } else {
       const std::optional<SlopeSample> s = sample_entry(top, wi, top.sigma * node.x, top.sigma * node.y);
-      if (s) sum += node.weight * s->weight * attenuation(tau, -s->d.z()) * microfacet_btdf(bottom, -s->d, wo);
+      if (!s) continue;
+      const double value = node.weight * s->weight * microfacet_btdf(bottom, -s->d, wo);
+      if (value != 0.0) terms.push_back({value, -s->d.z()});
     }
   }
+  return terms;
+}
+
+double two_interface_btdf(const RoughDielectric& top, const RoughDielectric& bottom, double tau, const Vec3& wi,
+                          const Vec3& wo) {
+  return sum_depth_terms(two_interface_btdf_terms(top, bottom, wi, wo), tau);
+}
+
+double sum_depth_terms(std::span<const DepthTerm> terms, double tau) {
+  double sum = 0.0;
+  for (const DepthTerm& term : terms) sum += term.coefficient * attenuation(tau, term.mu);
   return sum;
 }
 

@@ -21,6 +21,9 @@
 // lobe is the bottom's reflection lobe (about 2 sigma3 wide inside, against sigma (1 - 1/eta) for a refracted one).
 #pragma once
 
+#include <span>
+#include <vector>
+
 #include "core/microfacet.h"
 
 namespace skinlayer {
@@ -34,6 +37,16 @@ enum class UnscatteredPath {
   TopThenBottom,  // rough top over a rough bottom
 };
 
+// One term of the unscattered BTDF's dependence on the optical depth: the BTDF is sum_k coefficient_k e^{-tau/mu_k}
+// (mu_k the cosine of an internal direction, > 0; the attenuation is 1 at tau = 0 for any mu).
+struct DepthTerm {
+  double coefficient;  // [1/sr]
+  double mu;
+};
+
+// sum_k c_k e^{-tau/mu_k}: the BTDF of those terms at optical depth tau.
+double sum_depth_terms(std::span<const DepthTerm> terms, double tau);
+
 // The unscattered part of one material. A value type: default-constructed, it contributes nothing.
 class UnscatteredLight {
  public:
@@ -45,6 +58,11 @@ class UnscatteredLight {
   // The unscattered part of the layer BTDF and of the subsurface BRDF, in 1/sr (graphics convention, radians).
   double btdf(double theta_i, double theta_o, double phi) const;
   double brdf(double theta_i, double theta_o, double phi) const;
+  // The BTDF's terms in the optical depth: btdf() = sum_depth_terms(btdf_terms(), tau()), for callers that re-weigh
+  // the same directions at another depth (the lobe plot, as T changes). Empty where the BTDF is 0.
+  std::vector<DepthTerm> btdf_terms(double theta_i, double theta_o, double phi) const;
+  // The same material at another optical depth (tau in [0, inf)); nothing else changes.
+  UnscatteredLight at_depth(double tau) const;
 
   const RoughDielectric& top() const { return top_; }
   const RoughDielectric& bottom() const { return bottom_; }  // frame +z up into the layer: eta = n_below / n_layer
@@ -75,5 +93,8 @@ class UnscatteredLight {
 // angles, where refraction is far from linear in the slope.
 double two_interface_btdf(const RoughDielectric& top, const RoughDielectric& bottom, double tau, const Vec3& wi,
                           const Vec3& wo);
+// Its quadrature's terms in the optical depth: two_interface_btdf = sum_depth_terms(terms, tau).
+std::vector<DepthTerm> two_interface_btdf_terms(const RoughDielectric& top, const RoughDielectric& bottom,
+                                                const Vec3& wi, const Vec3& wo);
 
 }  // namespace skinlayer

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <utility>
 
 #include "app/process/parallel_for.h"
 #include "core/conventions.h"
@@ -21,27 +23,39 @@ double lobe_scale(const UnscatteredLight& light) {
 
 UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double theta_i, int samples,
                                           const UnscatteredPlane* previous) {
-  if (previous != nullptr && previous->samples(light, theta_i) &&
-      previous->btdf.size() == static_cast<std::size_t>(light.path() == UnscatteredPath::None ? 0 : samples)) {
-    return *previous;
+  const std::size_t count =
+      light.path() == UnscatteredPath::None || samples < 2 ? 0 : static_cast<std::size_t>(samples);
+  if (previous != nullptr && previous->btdf.size() == count && previous->theta_i == theta_i) {
+    if (previous->light == light) return *previous;
+    if (previous->terms && previous->light.at_depth(light.tau()) == light) {
+      UnscatteredPlane plane = *previous;  // the same directions: only their attenuation changes
+      plane.light = light;
+      for (std::size_t k = 0; k < count; ++k) {
+        plane.btdf[k] = static_cast<float>(sum_depth_terms((*plane.terms)[k], light.tau()));
+      }
+      return plane;
+    }
   }
   UnscatteredPlane plane;
   plane.light = light;
   plane.theta_i = theta_i;
-  if (light.path() == UnscatteredPath::None || samples < 2) return plane;
+  if (count == 0) return plane;
   plane.centre = light.straight_through_angle(theta_i);
   plane.scale = lobe_scale(light);
   plane.u_min = std::asinh((-0.5 * kPi - plane.centre) / plane.scale);
   plane.u_max = std::asinh((0.5 * kPi - plane.centre) / plane.scale);
-  plane.btdf.resize(static_cast<std::size_t>(samples));
+  plane.btdf.resize(count);
+  auto terms = std::make_shared<std::vector<std::vector<DepthTerm>>>(count);
   constexpr int kChunk = 16;  // samples per task
   parallel_for_threads((samples + kChunk - 1) / kChunk, [&](int chunk) {
     for (int k = chunk * kChunk; k < std::min(samples, (chunk + 1) * kChunk); ++k) {
-      const double s = unscattered_plane_angle(plane, static_cast<std::size_t>(k));
-      plane.btdf[static_cast<std::size_t>(k)] =
-          static_cast<float>(light.btdf(theta_i, std::abs(s), s >= 0.0 ? kPi : 0.0));
+      const auto index = static_cast<std::size_t>(k);
+      const double s = unscattered_plane_angle(plane, index);
+      (*terms)[index] = light.btdf_terms(theta_i, std::abs(s), s >= 0.0 ? kPi : 0.0);
+      plane.btdf[index] = static_cast<float>(sum_depth_terms((*terms)[index], light.tau()));
     }
   });
+  plane.terms = std::move(terms);
   return plane;
 }
 

@@ -6,10 +6,12 @@
 //   s = centre + scale sinh(u),   u uniform in [u_min, u_max],  s spanning [-pi/2, pi/2],
 // finest at the flat interfaces' exit direction, with scale a quarter of the lobe's estimated width
 // (sigma (1 - 1/n) of the sharper interface, n its index ratio): 128 samples put ~9 within one lobe width there and
-// are a few degrees apart at grazing. The samples are computed side by side on the machine's cores.
+// are a few degrees apart at grazing. The samples are computed side by side on the machine's cores, and kept as their
+// terms in the optical depth (UnscatteredLight::btdf_terms), so that a change of T alone re-weighs them.
 // shaders/unscattered.glsl reads it with linear filtering; unscattered_plane_value() is the CPU twin.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "core/unscattered_light.h"
@@ -24,13 +26,16 @@ struct UnscatteredPlane {
   std::vector<float> btdf;  // [1/sr] at u_k = u_min + k (u_max - u_min) / (n - 1); empty when there is none
   UnscatteredLight light;   // what was sampled, and at which incident angle
   double theta_i = -1.0;
+  // Per sample, the BTDF's terms in the optical depth (shared: a scene copies its plane).
+  std::shared_ptr<const std::vector<std::vector<DepthTerm>>> terms;
 
   bool samples(const UnscatteredLight& other, double other_theta_i) const {
     return light == other && theta_i == other_theta_i;
   }
 };
 
-// With `previous` sampling the same light at the same angle (an albedo or g change), that is returned unchanged.
+// With `previous` sampling the same light at the same angle (an albedo or g change), that is returned unchanged; the
+// same light at another optical depth (a T change) re-weighs previous's terms instead of sampling anew.
 UnscatteredPlane sample_unscattered_plane(const UnscatteredLight& light, double theta_i, int samples = 128,
                                           const UnscatteredPlane* previous = nullptr);
 

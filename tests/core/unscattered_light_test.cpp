@@ -212,3 +212,35 @@ TEST(UnscatteredLight, TablesHoldNoUnscatteredLight) {
 
 }  // namespace
 }  // namespace skinlayer
+
+namespace skinlayer {
+namespace {
+
+// The terms in the optical depth hold no depth: summed at another tau they give that material's BTDF, on every path.
+TEST(UnscatteredLight, DepthTermsReweighToAnotherDepth) {
+  Material two_interfaces;
+  two_interfaces.sigma = 0.2;
+  Material matched = two_interfaces;
+  matched.bottom.kind = BottomKind::Matched;
+  Material open_top = two_interfaces;
+  open_top.eta = 1.0;
+  open_top.bottom.sigma = 0.3;
+  for (const Material& base : {two_interfaces, matched, open_top}) {
+    Material thin = base;
+    thin.tau = optical_depth_from_transparency(0.2);
+    Material thick = base;
+    thick.tau = optical_depth_from_transparency(0.05);
+    const UnscatteredLight light(thin);
+    const UnscatteredLight other(thick);
+    EXPECT_TRUE(light.at_depth(thick.tau) == other);
+    for (const double theta_o : {0.0, 0.05, 0.2, 0.6}) {
+      const std::vector<DepthTerm> terms = light.btdf_terms(0.5, theta_o, kPi);
+      const double expected = other.btdf(0.5, theta_o, kPi);
+      EXPECT_NEAR(sum_depth_terms(terms, thick.tau), expected, 1e-12 * std::max(1.0, expected)) << theta_o;
+      EXPECT_NEAR(sum_depth_terms(terms, thin.tau), light.btdf(0.5, theta_o, kPi), 1e-12 * std::max(1.0, expected));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skinlayer
