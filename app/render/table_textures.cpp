@@ -4,6 +4,7 @@
 #include <array>
 #include <span>
 
+#include "app/process/parallel_for.h"
 #include "table_layout.h"
 
 namespace skinlayer {
@@ -11,13 +12,18 @@ namespace skinlayer {
 TableTextureData make_table_textures(const ColorTables& tables) {
   TableTextureData data;
   for (const LayerTables& channel : tables.channels) data.modes = std::max(data.modes, channel.modes());
-  std::vector<LayerTables> distinct;  // channels with equal albedo share one refined table
+  std::vector<int> distinct_channels;  // channels with equal albedo share one refined table
   std::array<std::size_t, 3> source{};
   for (int c = 0; c < 3; ++c) {
     const bool same = c > 0 && tables.material.albedo_rgb[c] == tables.material.albedo_rgb[c - 1];
-    if (!same) distinct.push_back(tables.channels[c].refined(SKINLAYER_TABLE_UPSAMPLE));
-    source[c] = distinct.size() - 1;
+    if (!same) distinct_channels.push_back(c);
+    source[c] = distinct_channels.size() - 1;
   }
+  std::vector<LayerTables> distinct(distinct_channels.size());
+  parallel_for_threads(static_cast<int>(distinct.size()), [&](int k) {
+    const auto index = static_cast<std::size_t>(k);
+    distinct[index] = tables.channels[distinct_channels[index]].refined(SKINLAYER_TABLE_UPSAMPLE);
+  });
   data.size = distinct.front().grid_size();
   data.unscattered = tables.channels[0].unscattered();  // the same for every channel: no albedo in it
   const std::size_t plane = static_cast<std::size_t>(data.size) * data.size;
