@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -54,9 +55,11 @@ struct Breakpoint {
 template <class Value, class RuleFor, class Integrand>
 Value integrate_pieces(std::vector<Breakpoint>& points, RuleFor&& rule_for, Integrand&& f) {
   std::sort(points.begin(), points.end(), [](const Breakpoint& a, const Breakpoint& b) { return a.x < b.x; });
-  std::vector<double> singular;
+  std::array<double, 8> singular_points{};  // at most two cone roots in a row, five edges across rows
+  std::size_t singular_count = 0;
   for (const Breakpoint& point : points)
-    if (point.singular) singular.push_back(point.x);
+    if (point.singular && singular_count < singular_points.size()) singular_points[singular_count++] = point.x;
+  const std::span<const double> singular(singular_points.data(), singular_count);
   Value sum{};
   const QuadratureRule* rule = nullptr;
   const auto gauss = [&](double u0, double u1, auto&& x_of_u, auto&& jacobian) {
@@ -213,8 +216,9 @@ AlbedoPair integrate_slopes(double sx, double wz, double e, double sigma, double
     points.push_back({range, false});
   };
 
+  std::vector<Breakpoint> points;  // one row's, reused
   const auto row = [&](double q) {
-    std::vector<Breakpoint> points;
+    points.clear();
     uniform_breakpoints(-range, points);
     const std::size_t uniform_count = points.size();
     if (back_facing < range) points.push_back({back_facing, false});
