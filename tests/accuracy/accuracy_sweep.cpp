@@ -119,7 +119,12 @@ int main(int argc, char** argv) {
         "95-point table grid): θi 0, 30, 60, 80°; φ 0, 90, 180°; θo every 0.5° plus 0.05° steps within 3° of the "
         "normal, the mirror and the straight-through directions. Judged: every point whose converged BRDF "
         "(subsurface) or BTDF exceeds 1e-3 of the material's peak of that quantity. The unscattered part, exact in "
-        "both, is judged against closed forms and a brute-force integral in tests/core/unscattered_light_test.cpp.\n\n"
+        "both, is judged against closed forms and a brute-force integral in tests/core/unscattered_light_test.cpp."
+     << (options.exact_unscattered
+             ? " The same sweep with every path on the ordinates, as the paper publishes the method (`accuracy_sweep "
+               "--all-ordinates`), is [accuracy-all-ordinates.md](accuracy-all-ordinates.md)."
+             : "")
+     << "\n\n"
      << "Machine: " << std::thread::hardware_concurrency() << " logical cores; solve times are one thread, one run.\n\n"
      << "| parameter | value | N | solve ms | points judged | worst error | where (θi, θo, φ) | value / converged "
         "[1/sr] |\n"
