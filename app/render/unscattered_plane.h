@@ -28,10 +28,6 @@ struct UnscatteredPlane {
   double theta_i = -1.0;
   // Per sample, the BTDF's terms in the optical depth (shared: a scene copies its plane).
   std::shared_ptr<const std::vector<std::vector<DepthTerm>>> terms;
-
-  bool samples(const UnscatteredLight& other, double other_theta_i) const {
-    return light == other && theta_i == other_theta_i;
-  }
 };
 
 // With `previous` sampling the same light at the same angle (an albedo or g change), that is returned unchanged; the
