@@ -166,12 +166,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
       });
     }
   }
-  const auto run = [&](int i) { tasks[static_cast<std::size_t>(i)](); };
-  if (parallel_for && tasks.size() > 1) {
-    parallel_for(static_cast<int>(tasks.size()), run);
-  } else {
-    for (std::size_t i = 0; i < tasks.size(); ++i) run(static_cast<int>(i));
-  }
+  run_parallel(parallel_for, static_cast<int>(tasks.size()), [&](int i) { tasks[static_cast<std::size_t>(i)](); });
   if (bottom_is_top) {
     k.r_bottom = k.r_top;
     k.t_bottom_exit = k.t_exit;

@@ -333,14 +333,6 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
 
 namespace {
 
-void run_parallel(const SolveOptions& options, int count, const std::function<void(int)>& body) {
-  if (options.parallel_for && count > 1) {
-    options.parallel_for(count, body);
-  } else {
-    for (int index = 0; index < count; ++index) body(index);
-  }
-}
-
 // The tables for one resolution and several albedos (the projections are shared); `converged` tells whether every
 // Fourier series met its tolerance before the cap.
 struct TableSolve {
@@ -384,7 +376,7 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
         const auto solve_one = [&](int b) {
           block[static_cast<std::size_t>(b)] = solver.solve_mode(block_start + b, albedo);
         };
-        run_parallel(options, static_cast<int>(block.size()), solve_one);
+        run_parallel(options.parallel_for, static_cast<int>(block.size()), solve_one);
       }
       const LayerSolver::ModeResult& mode = block[static_cast<std::size_t>(m - block_start)];
       for (int i = 0; i < k; ++i) {
@@ -413,7 +405,7 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
   if (parallel_modes) {
     solve_albedo(0);
   } else {
-    run_parallel(options, static_cast<int>(albedos.size()), solve_albedo);
+    run_parallel(options.parallel_for, static_cast<int>(albedos.size()), solve_albedo);
   }
   return {std::move(tables), std::ranges::all_of(converged, [](char c) { return c != 0; })};
 }
