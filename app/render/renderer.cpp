@@ -26,15 +26,30 @@ gl::Program build(std::string_view fragment) {
 
 GLint location(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
 
+// Every table texture is filtered linearly and clamped to its edges (shaders/table_layout.h).
+void set_linear_clamped(GLenum target) {
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
 void upload_array(GLuint texture, int size, int modes, const std::vector<float>& texels) {
   glBindTexture(GL_TEXTURE_2D_ARRAY, texture);
   glTexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, size, size, std::max(modes, 1), 0, GL_RGBA, GL_FLOAT,
                texels.empty() ? nullptr : texels.data());
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D_ARRAY, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  set_linear_clamped(GL_TEXTURE_2D_ARRAY);
   glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+}
+
+// A float 2D texture refilled for one draw on texture unit `unit`, bound to the sampler `name`.
+void bind_refilled_2d(GLuint program, const char* name, int unit, GLuint texture, GLint internal_format, GLenum format,
+                      int width, int height, const float* texels) {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, internal_format, width, height, 0, format, GL_FLOAT, texels);
+  set_linear_clamped(GL_TEXTURE_2D);
+  glUniform1i(location(program, name), unit);
 }
 
 }  // namespace
@@ -121,26 +136,14 @@ void Renderer::draw_lobes(const LobeView& view, const SurfaceParams& surface, co
   const UnscatteredPlane& plane = view.unscattered;
   const std::vector<float> none(2, 0.0f);
   const std::vector<float>& samples = plane.btdf.size() >= 2 ? plane.btdf : none;
-  glActiveTexture(GL_TEXTURE2);
-  glBindTexture(GL_TEXTURE_2D, unscattered_plane_.get());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, static_cast<GLsizei>(samples.size()), 1, 0, GL_RED, GL_FLOAT, samples.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glUniform1i(location(program, "u_unscattered_plane"), 2);
+  bind_refilled_2d(program, "u_unscattered_plane", 2, unscattered_plane_.get(), GL_R32F, GL_RED,
+                   static_cast<int>(samples.size()), 1, samples.data());
   glUniform4f(location(program, "u_unscattered_map"), static_cast<float>(plane.centre), static_cast<float>(plane.scale),
               static_cast<float>(plane.u_min), static_cast<float>(plane.u_max));
   const TableTextureData& tables = slots_.at(static_cast<std::size_t>(slot)).data;
   const std::vector<float> profile = lobe_profile(tables, view.theta_i);
-  glActiveTexture(GL_TEXTURE3);
-  glBindTexture(GL_TEXTURE_2D, lobe_profile_.get());
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, tables.size, kLobeProfileRows, 0, GL_RGBA, GL_FLOAT, profile.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glUniform1i(location(program, "u_lobe_profile"), 3);
+  bind_refilled_2d(program, "u_lobe_profile", 3, lobe_profile_.get(), GL_RGBA32F, GL_RGBA, tables.size,
+                   kLobeProfileRows, profile.data());
   glBindVertexArray(vertex_array_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glActiveTexture(GL_TEXTURE0);
