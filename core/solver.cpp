@@ -465,16 +465,25 @@ std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& m
   const std::vector<InterfaceAlbedo>& top_inside = solver.kernels().top_inside;
   const std::vector<InterfaceAlbedo>& bottom_inside = solver.kernels().bottom_inside;
   const bool direct_path = geometry.top_open && !std::isinf(material.tau);
+  // The interfaces' albedos for the incident directions, which no albedo changes: the top's for light from the air,
+  // and the bottom's for the open top's beam reaching it unscattered.
+  std::vector<Vec3> incident;
+  for (const double theta : theta_i) incident.push_back(direction_from_angles(theta, 0.0));
+  const std::vector<InterfaceAlbedo> entries = interface_albedo(geometry.top, incident);
+  std::vector<Vec3> beam_at_bottom;
+  for (const double mu : mu0) beam_at_bottom.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, mu);
+  const std::vector<InterfaceAlbedo> beam_exits = direct_path && geometry.base == LayerBase::Rough
+                                                      ? interface_albedo(geometry.bottom, beam_at_bottom)
+                                                      : std::vector<InterfaceAlbedo>(mu0.size(), {0.0, 0.0});
   std::vector<std::vector<DirectionalAlbedo>> result;
   for (const double albedo : albedos) {
     const LayerSolver::ModeResult mode = solver.solve_mode(0, albedo);
     std::vector<DirectionalAlbedo> rows;
     for (std::size_t k = 0; k < theta_i.size(); ++k) {
       const Eigen::Index col = static_cast<Eigen::Index>(k);
-      const Vec3 wi = direction_from_angles(theta_i[k], 0.0);
       DirectionalAlbedo row{};
       row.theta_i = theta_i[k];
-      const InterfaceAlbedo entry = interface_albedo(geometry.top, wi);
+      const InterfaceAlbedo& entry = entries[k];
       row.reflectance_surface = entry.reflectance;
       row.interface_loss = entry.loss();
       double up = 0.0, down = 0.0;
@@ -497,9 +506,7 @@ std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& m
           row.transmittance = down + direct;
           break;
         case LayerBase::Rough: {
-          const double sin0 = std::sqrt(std::max(0.0, 1.0 - mu0[k] * mu0[k]));
-          const InterfaceAlbedo beam_exit =
-              direct > 0.0 ? interface_albedo(geometry.bottom, Vec3(sin0, 0.0, mu0[k])) : InterfaceAlbedo{0.0, 0.0};
+          const InterfaceAlbedo beam_exit = direct > 0.0 ? beam_exits[k] : InterfaceAlbedo{0.0, 0.0};
           row.transmittance = down + direct * beam_exit.transmittance;
           row.interface_loss += direct * (direct > 0.0 ? beam_exit.loss() : 0.0);
           break;
