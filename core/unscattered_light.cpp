@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "core/conventions.h"
@@ -161,25 +162,38 @@ double UnscatteredLight::straight_through_angle(double theta_i) const {
   return std::asin(std::min(1.0, std::sin(theta_i) / index_below_));
 }
 
-std::vector<DepthTerm> UnscatteredLight::btdf_terms(double theta_i, double theta_o, double phi) const {
-  if (path_ == UnscatteredPath::None) return {};
-  const Vec3 wi = direction_from_angles(theta_i, 0.0);
-  const Vec3 wo(std::sin(theta_o) * std::cos(phi), std::sin(theta_o) * std::sin(phi), -std::cos(theta_o));
-  switch (path_) {
-    case UnscatteredPath::TopOnly:
-      return {{microfacet_btdf(top_, wi, wo), -wo.z()}};
-    case UnscatteredPath::BottomOnly:
-      return {{microfacet_btdf(bottom_, wi, wo), wi.z()}};
-    case UnscatteredPath::TopThenBottom:
-      return two_interface_btdf_terms(top_, bottom_, wi, wo);
-    case UnscatteredPath::None:
-      break;
-  }
-  return {};
+namespace {
+
+// The incident direction and the exit direction below the layer (graphics convention, radians).
+std::pair<Vec3, Vec3> transmission_directions(double theta_i, double theta_o, double phi) {
+  return {direction_from_angles(theta_i, 0.0),
+          Vec3(std::sin(theta_o) * std::cos(phi), std::sin(theta_o) * std::sin(phi), -std::cos(theta_o))};
 }
 
+// The single term of a path through one rough interface (TopOnly, BottomOnly); empty on the other paths.
+std::optional<DepthTerm> one_interface_term(UnscatteredPath path, const RoughDielectric& top,
+                                            const RoughDielectric& bottom, const Vec3& wi, const Vec3& wo) {
+  if (path == UnscatteredPath::TopOnly) return DepthTerm{microfacet_btdf(top, wi, wo), -wo.z()};
+  if (path == UnscatteredPath::BottomOnly) return DepthTerm{microfacet_btdf(bottom, wi, wo), wi.z()};
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<DepthTerm> UnscatteredLight::btdf_terms(double theta_i, double theta_o, double phi) const {
+  if (path_ == UnscatteredPath::None) return {};
+  const auto [wi, wo] = transmission_directions(theta_i, theta_o, phi);
+  if (path_ == UnscatteredPath::TopThenBottom) return two_interface_btdf_terms(top_, bottom_, wi, wo);
+  return {*one_interface_term(path_, top_, bottom_, wi, wo)};
+}
+
+// As sum_depth_terms(btdf_terms()), without a vector for the one-interface paths' single term.
 double UnscatteredLight::btdf(double theta_i, double theta_o, double phi) const {
-  return sum_depth_terms(btdf_terms(theta_i, theta_o, phi), tau_);
+  if (path_ == UnscatteredPath::None) return 0.0;
+  if (path_ == UnscatteredPath::TopThenBottom) return sum_depth_terms(btdf_terms(theta_i, theta_o, phi), tau_);
+  const auto [wi, wo] = transmission_directions(theta_i, theta_o, phi);
+  const DepthTerm term = *one_interface_term(path_, top_, bottom_, wi, wo);
+  return term.coefficient * attenuation(tau_, term.mu);
 }
 
 UnscatteredLight UnscatteredLight::at_depth(double tau) const {
