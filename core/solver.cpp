@@ -328,7 +328,23 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
   resolution.interface_modes = resolution.max_modes == 1 ? 1 : (resolution.max_modes + 15) / 16 * 16;
   resolution.interface_azimuths = std::max({2 * resolution.interface_modes + 1, ceil_to_int(24.0 / sigma_min) + 1, 49});
   resolution.phase_azimuths = std::max({2 * resolution.max_modes + 1, ceil_to_int(20.0 / forwardness) + 1, 49});
+  if (options.preview) {
+    resolution.ordinates = std::min(resolution.ordinates, kPreviewResolution.ordinates);
+    resolution.max_modes = std::min(resolution.max_modes, kPreviewResolution.max_modes);
+    resolution.interface_modes = resolution.max_modes == 1 ? 1 : (resolution.max_modes + 15) / 16 * 16;
+    resolution.interface_azimuths = std::clamp(kPreviewResolution.interface_azimuths,
+                                               2 * resolution.interface_modes + 1, resolution.interface_azimuths);
+  }
   return resolution;
+}
+
+bool preview_is_coarser(const Material& material) {
+  SolveOptions preview;
+  preview.preview = true;
+  const Resolution full = choose_resolution(material);
+  const Resolution coarse = choose_resolution(material, preview);
+  return coarse.ordinates < full.ordinates || coarse.max_modes < full.max_modes ||
+         coarse.interface_azimuths < full.interface_azimuths;
 }
 
 namespace {
@@ -349,6 +365,10 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
   const LayerSolver solver(material, resolution,
                            kernels_for(material, resolution, grid, grid, options.cache, options.parallel_for),
                            unscattered.path(), options.cache);
+  const auto check_cancelled = [&options] {
+    if (options.cancelled && options.cancelled()) throw SolveCancelled();
+  };
+  check_cancelled();
   const double tolerance = options.fourier_tolerance;
 
   const std::size_t plane = static_cast<std::size_t>(k) * k;
@@ -374,6 +394,7 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
         block_start = m;
         block.assign(static_cast<std::size_t>(parallel_modes ? std::min(kModeBlock, resolution.max_modes - m) : 1), {});
         const auto solve_one = [&](int b) {
+          check_cancelled();
           block[static_cast<std::size_t>(b)] = solver.solve_mode(block_start + b, albedo);
         };
         run_parallel(options.parallel_for, static_cast<int>(block.size()), solve_one);
@@ -426,7 +447,7 @@ std::vector<LayerTables> solve(const Material& material, std::span<const double>
   // The automatic cap on Fourier modes suits most materials; thin, strongly forward-scattering layers seen near
   // grazing need more, so an unconverged series is solved again with twice the cap (up to 256 modes).
   TableSolve result = solve_tables(material, albedos, resolution, options);
-  while (!result.converged && options.max_modes == 0 && resolution.max_modes < 256) {
+  while (!result.converged && options.max_modes == 0 && !options.preview && resolution.max_modes < 256) {
     SolveOptions doubled = options;
     doubled.max_modes = 2 * resolution.max_modes;
     resolution = choose_resolution(material, doubled);

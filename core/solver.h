@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 #include "core/layer_tables.h"
@@ -31,6 +32,31 @@ struct SolveOptions {
   // The caller's parallel-for (core/parallel_for.h). The solver runs independent work through it: RGB channels,
   // blocks of Fourier modes, the interface kernels; core itself starts no threads. Empty = one after another.
   ParallelFor parallel_for;
+  // A quick look (the previewer's answer while a slider moves, before the full solve): the automatic resolution
+  // capped at kPreviewResolution. Where that cap binds (sigma < 0.2, strong forward scattering, near-matched
+  // interfaces) the energy fractions stay within 3% of the full solve's (mostly within 0.7%), since the interface
+  // operators are matched to the accurate albedos at any N, but the lobes are smeared to the ordinates (pointwise
+  // errors of a few percent, up to ~20% near peaks): docs/accuracy.md's figures hold for the full solve only.
+  bool preview = false;
+  // Asked between stages (after the interface operators, before each Fourier mode): returning true abandons the
+  // solve by throwing SolveCancelled. It may be called from the parallel-for's threads at once. Empty = never.
+  std::function<bool()> cancelled;
+};
+
+// What SolveOptions::preview caps the automatic resolution at: about 25-60 ms for an RGB solve on the 2-core VM
+// anywhere in the parameter ranges (docs/benchmarks.md, BM_PreviewSolveColor), where the full resolution takes up
+// to ~2 s at sigma 0.05.
+struct PreviewResolution {
+  int ordinates = 32;
+  int max_modes = 32;
+  int interface_azimuths = 97;
+};
+inline constexpr PreviewResolution kPreviewResolution{};
+
+// Thrown by a solve whose SolveOptions::cancelled returned true.
+class SolveCancelled : public std::runtime_error {
+ public:
+  SolveCancelled() : std::runtime_error("solve cancelled") {}
 };
 
 // The discretization a solve uses, chosen from the material (and its ordinates override).
@@ -44,6 +70,9 @@ struct Resolution {
   int phase_azimuths;      // azimuth samples on [0, pi] for projecting the phase function
 };
 Resolution choose_resolution(const Material& material, const SolveOptions& options = {});
+
+// True when SolveOptions::preview would solve this material at a coarser resolution than the full solve does.
+bool preview_is_coarser(const Material& material);
 
 // Solves the layer. Throws ParameterError for an invalid material.
 LayerTables solve(const Material& material, const SolveOptions& options = {});

@@ -14,6 +14,7 @@ SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation,
   SolveResult result;
   result.generation = generation;
   result.request = request;
+  result.preview = options.preview;
   try {
     const std::array<bool, 3> needed = needed_models(request);
     for (std::size_t m = 0; m < needed.size(); ++m) {
@@ -23,7 +24,10 @@ SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation,
       result.by_model[m] = solve_color(material, request.theta_i, options);
       result.textures_by_model[m] = make_table_textures(*result.by_model[m]);
     }
+  } catch (const SolveCancelled&) {
+    throw;
   } catch (const std::exception& error) {
+    result.preview = false;  // an error is final: the full solve would fail the same way
     result.by_model = {};
     result.by_model[static_cast<std::size_t>(request.material.model)].emplace();
     result.textures_by_model = {};
@@ -32,6 +36,19 @@ SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation,
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
+
+namespace {
+
+// Whether the request gets a preview phase; an invalid material does not (its full solve reports the error).
+bool wants_preview(const SolveRequest& request) {
+  try {
+    return preview_is_coarser(request.material.layer);
+  } catch (const ParameterError&) {
+    return false;
+  }
+}
+
+}  // namespace
 
 SolveWorker::SolveWorker(std::function<void()> on_published)
     : on_published_(std::move(on_published)), thread_([this](std::stop_token stop) { run(std::move(stop)); }) {}
@@ -58,9 +75,38 @@ bool SolveWorker::busy() const {
   return published_ < submitted_;
 }
 
+bool SolveWorker::settling() const {
+  const std::lock_guard lock(mutex_);
+  return settled_ < submitted_;
+}
+
 SolveWorkerStats SolveWorker::stats() const {
   const std::lock_guard lock(mutex_);
   return stats_;
+}
+
+bool SolveWorker::superseded(std::uint64_t generation, const std::stop_token& stop) const {
+  if (stop.stop_requested()) return true;
+  const std::lock_guard lock(mutex_);
+  return generation != submitted_;
+}
+
+bool SolveWorker::publish(SolveResult&& result, bool final_result) {
+  std::optional<SolveResult> dropped;  // a stale or unpolled result, freed after the lock is released
+  {
+    const std::lock_guard lock(mutex_);
+    ++stats_.solved;
+    if (result.generation != submitted_) {
+      ++stats_.discarded;  // superseded after its last cancellation point; the newer request is pending
+      return false;
+    }
+    published_ = result.generation;
+    if (final_result) settled_ = result.generation;
+    if (!final_result) ++stats_.previews;
+    dropped = std::exchange(finished_, std::move(result));
+  }
+  if (on_published_) on_published_();
+  return true;
 }
 
 void SolveWorker::run(std::stop_token stop) {
@@ -77,21 +123,20 @@ void SolveWorker::run(std::stop_token stop) {
     SolveOptions options;
     options.cache = &cache_;
     options.parallel_for = parallel_for_threads;
-    SolveResult result = compute_solve(request, generation, options);
-    std::optional<SolveResult> dropped;  // a stale or unpolled result, freed after the lock is released
-    bool published = false;
-    {
-      const std::lock_guard lock(mutex_);
-      ++stats_.solved;
-      if (generation == submitted_) {
-        dropped = std::exchange(finished_, std::move(result));
-        published_ = generation;
-        published = true;
-      } else {
-        ++stats_.discarded;  // superseded while it was solved; the newer request is pending
+    options.cancelled = [this, generation, &stop] { return superseded(generation, stop); };
+    try {
+      if (wants_preview(request)) {
+        options.preview = true;
+        SolveResult preview = compute_solve(request, generation, options);
+        const bool failed = !preview.error.empty();
+        if (!publish(std::move(preview), failed) || failed) continue;
+        options.preview = false;
       }
+      publish(compute_solve(request, generation, options), true);
+    } catch (const SolveCancelled&) {
+      const std::lock_guard lock(mutex_);
+      ++stats_.cancelled;
     }
-    if (published && on_published_) on_published_();
   }
 }
 

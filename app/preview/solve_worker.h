@@ -4,11 +4,16 @@
 // Contract:
 //  - submit() and poll() only lock a mutex around a move of a small struct: they never wait for a solve.
 //  - Newest parameters win. At most one request is pending: a submit replaces a pending one that has not started
-//    (coalescing). A solve cannot be interrupted (core has no cancellation point), so a request that was superseded
-//    while it was being solved runs to completion and its result is discarded; the worker then takes the newest.
-//  - poll() hands out the result of the newest submission once it is finished, exactly once. Results only ever
-//    come out in increasing generation order.
-//  - Destruction requests stop and joins the thread; a solve in progress is finished first (it is not published).
+//    (coalescing). A solve in progress when a newer request arrives is abandoned at core's next cancellation point
+//    (SolveOptions::cancelled) and never published; the worker then takes the newest.
+//  - Two phases where the full resolution is costly (core's preview_is_coarser: small sigma, strong forward
+//    scattering, near-matched interfaces): a preview at capped resolution (SolveOptions::preview, tens of ms) is
+//    published first, with SolveResult::preview set, then the full solve of the same request unless a newer one has
+//    arrived. So a dragged slider shows every step at the preview's pace and the picture settles on the full solve
+//    when the mouse stops.
+//  - poll() hands out the newest published result not yet polled, exactly once. Results only ever come out in
+//    increasing (generation, phase) order.
+//  - Destruction requests stop, abandons a solve in progress at its next cancellation point and joins the thread.
 #pragma once
 
 #include <array>
@@ -37,6 +42,7 @@ struct SolveResult {
   std::array<TableTextureData, 3> textures_by_model;
   std::string error;     // non-empty: the request was rejected (ParameterError's message) or the solve failed
   double seconds = 0.0;  // wall time of the solve and the texture build
+  bool preview = false;  // solved at the preview's capped resolution; the full solve of this request follows
 
   // The sphere's model (request.material.model): its tables and their GPU layout; empty when error is set.
   const ColorTables& tables() const { return *by_model[static_cast<std::size_t>(request.material.model)]; }
@@ -47,8 +53,10 @@ struct SolveResult {
 
 // How many solves ran and how many of their results were discarded as stale (for tests and diagnostics).
 struct SolveWorkerStats {
-  std::uint64_t solved = 0;
-  std::uint64_t discarded = 0;
+  std::uint64_t solved = 0;     // solves run to the end (previews and full solves)
+  std::uint64_t discarded = 0;  // of those, superseded before they could be published
+  std::uint64_t previews = 0;   // previews published
+  std::uint64_t cancelled = 0;  // solves abandoned part-way for a newer request (or for shutdown)
 };
 
 class SolveWorker {
@@ -67,13 +75,21 @@ class SolveWorker {
   // The newest finished result not yet polled, if any. Never blocks on a solve.
   std::optional<SolveResult> poll();
 
-  // True while the newest submission has not been published yet (pending or being solved).
+  // True while the newest submission has no result published yet (pending or being solved): newer parameters
+  // submitted now would only wait.
   bool busy() const;
+
+  // True until the newest submission's final (full-resolution, or failed) result is published: false means what
+  // poll() gives or gave last is the settled answer to the newest parameters.
+  bool settling() const;
 
   SolveWorkerStats stats() const;
 
  private:
   void run(std::stop_token stop);
+  bool superseded(std::uint64_t generation, const std::stop_token& stop) const;
+  // Makes `result` the one poll() hands out if it still answers the newest submission; true if it did.
+  bool publish(SolveResult&& result, bool final_result);
 
   std::function<void()> on_published_;
   mutable std::mutex mutex_;
@@ -81,14 +97,16 @@ class SolveWorker {
   std::optional<SolveRequest> pending_;  // the newest request, not started yet
   std::uint64_t submitted_ = 0;          // generation of the newest submit()
   std::uint64_t published_ = 0;          // generation of the newest result made available to poll()
+  std::uint64_t settled_ = 0;            // generation of the newest final result made available to poll()
   std::optional<SolveResult> finished_;  // published, not yet polled
   SolveWorkerStats stats_;
   SolveCache cache_;     // used by the worker thread only: re-solves that keep the interfaces reuse their operators
   std::jthread thread_;  // last: started after every member above exists, joined before they go
 };
 
-// Runs one request on the calling thread: what the worker does for each job. Exceptions become SolveResult::error.
-// `options` carry the worker's cache of interface operators and the parallel-for over the RGB channels.
+// Runs one request on the calling thread: what the worker does for each phase of a job (options.preview picks the
+// phase). Exceptions become SolveResult::error, except SolveCancelled, which propagates. `options` carry the
+// worker's cache of interface operators, the parallel-for over the RGB channels and the cancellation check.
 SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation, const SolveOptions& options = {});
 
 }  // namespace skinlayer

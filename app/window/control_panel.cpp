@@ -74,14 +74,18 @@ bool screenshot_controls(ExportOptions& options, const std::string& last_export)
   return save;
 }
 
-// The header's status: "solving…" while newer parameters are in flight, and the last result's solve time.
+// The header's status: "solving…" while newer parameters are in flight ("refining…" while a preview is shown and
+// its full solve runs), and the last result's solve time.
 void status_line(const PanelStatus& status) {
+  const bool refining = status.shown != nullptr && status.shown->preview;
   if (status.solving) {
-    ImGui::TextColored(kBusyColor, "%s", status.unicode ? "solving…" : "solving...");
+    const char* what =
+        refining ? (status.unicode ? "refining…" : "refining...") : (status.unicode ? "solving…" : "solving...");
+    ImGui::TextColored(kBusyColor, "%s", what);
     ImGui::SameLine();
   }
   if (status.shown != nullptr) {
-    ImGui::TextColored(kDimColor, "last solve %.0f ms", 1000.0 * status.shown->seconds);
+    ImGui::TextColored(kDimColor, refining ? "preview %.0f ms" : "last solve %.0f ms", 1000.0 * status.shown->seconds);
   } else if (!status.solving) {
     ImGui::TextColored(kDimColor, "no result yet");
   }

@@ -171,7 +171,10 @@ class Previewer {
     return plots ? *plots : shown_->tables();
   }
 
-  bool solving() const { return worker_.busy() || !submitted_ || !same_request(*submitted_, solve_request(state_)); }
+  // Newer parameters than the settled answer on screen are in flight (a preview on screen counts as unsettled).
+  bool solving() const {
+    return worker_.settling() || !submitted_ || !same_request(*submitted_, solve_request(state_));
+  }
 
   PanelStatus panel_status() const {
     return PanelStatus{shown_ ? &*shown_ : nullptr, solving(), error_, last_export_, imgui_.unicode_labels()};
@@ -237,9 +240,9 @@ class Previewer {
   // window through the same export path as the S key, and finish.
   void capture_if_ready(std::array<int, 2> framebuffer) {
     if (!capture_path_) return;
-    const bool final_result = submitted_ && !worker_.busy();
+    const bool final_result = submitted_ && !worker_.settling();
     if (final_result && !error_.empty()) throw std::runtime_error(error_);
-    if (!final_result || !shown_ || !same_request(shown_->request, *submitted_)) return;
+    if (!final_result || !shown_ || shown_->preview || !same_request(shown_->request, *submitted_)) return;
     if (++settled_frames_ < kCaptureSettleFrames) return;
     export_picture(Viewport{0, 0, framebuffer[0], framebuffer[1]}, *capture_path_);
     captured_ = true;

@@ -98,6 +98,73 @@ BENCHMARK_CAPTURE(BM_ResolveParallel, sigma, [](Material& m, int step) { m.sigma
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// An RGB re-solve anywhere in the parameter ranges: the costliest corners (a sharp top; a sharp, near-matched top;
+// strong forward scattering in a clear layer; a sharp, near-matched bottom), sigma (or the bottom's) stepped each
+// time so that the interface operators are built anew, three albedos on both cores as the previewer's worker solves
+// them. `preview`: SolveOptions::preview, the worker's first answer; otherwise the full resolution that follows it.
+Material costly_corner(int corner) {
+  Material m;
+  m.tau = optical_depth_from_transparency(0.2);
+  switch (corner) {
+    case 0:  // sigma 0.05
+      m.sigma = 0.05;
+      break;
+    case 1:  // sigma 0.1, eta 1.05
+      m.sigma = 0.1;
+      m.eta = 1.05;
+      break;
+    case 2:  // g 0.95, T 0.9
+      m.g = 0.95;
+      m.tau = optical_depth_from_transparency(0.9);
+      break;
+    default:  // bottom sigma 0.2, eta 1.05
+      m.bottom.sigma = 0.2;
+      m.bottom.eta = 1.05;
+      break;
+  }
+  return m;
+}
+void BM_ResolveColorCorner(benchmark::State& state, int corner, bool preview) {
+  SolveCache cache;
+  SolveOptions options;
+  options.cache = &cache;
+  options.parallel_for = parallel_for_threads;
+  options.preview = preview;
+  const std::vector<double> albedos = {0.95, 0.7, 0.55};
+  Material material = costly_corner(corner);
+  const Resolution resolution = choose_resolution(material, options);
+  int step = 0;
+  for (auto _ : state) {
+    const double nudge = 1e-4 * (++step % 100);
+    Material changed = material;
+    if (corner == 3) {
+      changed.bottom.sigma = *material.bottom.sigma + nudge;
+    } else {
+      changed.sigma = material.sigma + nudge;
+    }
+    std::vector<LayerTables> tables = solve(changed, albedos, options);
+    benchmark::DoNotOptimize(tables);
+  }
+  state.counters["ordinates"] = resolution.ordinates;
+  state.counters["interface_azimuths"] = resolution.interface_azimuths;
+}
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, sigma0 .05_preview, 0, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, sigma0 .05_full, 0, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, sigma0 .1_eta1.05_preview, 1, true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, sigma0 .1_eta1.05_full, 1, false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, g0 .95_T0.9_preview, 2, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, g0 .95_T0.9_full, 2, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, bottom0 .2_eta1.05_preview, 3, true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, bottom0 .2_eta1.05_full, 3, false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 // The solve at a fixed number of ordinates per hemisphere, N = 8 .. 128. N = 8 is below the default material's
 // minimum (6/sigma and the g = 0.8 phase function need 12), so the sweep uses sigma 0.8 and g 0.5, the rest default.
 void BM_SolveOrdinates(benchmark::State& state) {

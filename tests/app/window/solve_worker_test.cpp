@@ -141,6 +141,61 @@ TEST(SolveWorker, ASupersededRequestNeverComesOut) {
   EXPECT_TRUE(same_request(result.request, request_number(1)));
 }
 
+// Polls until a result comes out (or the timeout passes: then a failure and an empty result).
+SolveResult next_result(SolveWorker& worker, std::chrono::seconds timeout) {
+  const auto deadline = Clock::now() + timeout;
+  while (Clock::now() < deadline) {
+    if (std::optional<SolveResult> result = worker.poll()) return std::move(*result);
+    std::this_thread::sleep_for(1ms);
+  }
+  ADD_FAILURE() << "no result within " << timeout.count() << " s";
+  return {};
+}
+
+TEST(SolveWorker, ACostlyMaterialShowsAPreviewThenSettlesOnTheFullSolve) {
+  SolveRequest request = request_number(3);
+  request.material.layer.sigma = 0.15;  // N 44 and 161 interface azimuths at full resolution
+  ASSERT_TRUE(preview_is_coarser(request.material.layer));
+  SolveWorker worker;
+  const std::uint64_t generation = worker.submit(request);
+  const SolveResult preview = next_result(worker, 120s);
+  EXPECT_EQ(preview.generation, generation);
+  EXPECT_TRUE(preview.preview) << "the quick look comes first";
+  EXPECT_EQ(preview.error, "");
+  const SolveResult final_result = next_result(worker, 120s);
+  EXPECT_EQ(final_result.generation, generation);
+  EXPECT_FALSE(final_result.preview);
+  EXPECT_FALSE(worker.settling());
+  EXPECT_FALSE(worker.poll().has_value()) << "two results for one request, each once";
+  expect_same_tables(final_result.tables(), solve_color(request.material, request.theta_i));
+  const SolveWorkerStats stats = worker.stats();
+  EXPECT_EQ(stats.previews, 1u);
+  EXPECT_EQ(stats.solved, 2u);
+  std::printf("[ worker  ] sigma 0.15 RGB: preview %.1f ms, full solve %.1f ms\n", 1000.0 * preview.seconds,
+              1000.0 * final_result.seconds);
+}
+
+TEST(SolveWorker, NewerParametersAbandonARefinement) {
+  SolveRequest sharp = request_number(4);
+  sharp.material.layer.sigma = 0.05;  // its full solve takes seconds
+  SolveWorker worker;
+  const std::uint64_t first = worker.submit(sharp);
+  const SolveResult preview = next_result(worker, 120s);
+  ASSERT_EQ(preview.generation, first);
+  ASSERT_TRUE(preview.preview);
+  EXPECT_TRUE(worker.settling()) << "its full solve runs";
+  EXPECT_FALSE(worker.busy()) << "newer parameters may be submitted now";
+  const auto submitted_at = Clock::now();
+  const std::uint64_t second = worker.submit(request_number(5));
+  const SolveResult next = next_result(worker, 120s);
+  EXPECT_EQ(next.generation, second) << "the first request's full solve never comes out";
+  EXPECT_FALSE(next.preview);
+  const SolveWorkerStats stats = worker.stats();
+  EXPECT_EQ(stats.cancelled + stats.discarded, 1u) << "the refinement was abandoned or dropped";
+  std::printf("[ worker  ] a refinement at sigma 0.05 gave way to newer parameters in %.1f ms (%llu cancelled)\n",
+              milliseconds(Clock::now() - submitted_at), static_cast<unsigned long long>(stats.cancelled));
+}
+
 TEST(SolveWorker, AnInvalidMaterialComesBackAsAnError) {
   SolveWorker worker;
   SolveRequest request;
