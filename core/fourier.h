@@ -32,6 +32,10 @@ class CosineProjector {
 
   // samples: one column per function, one row per azimuth sample. Returns modes x functions.
   Eigen::MatrixXd project(const Eigen::MatrixXd& samples) const { return weights_ * samples; }
+  // The same for one function that is 0 beyond its first head.size() samples (phi_0 = 0, phi_1, ...).
+  Eigen::VectorXd project_head(const Eigen::Ref<const Eigen::VectorXd>& head) const {
+    return weights_.leftCols(head.size()) * head;
+  }
 
  private:
   Eigen::MatrixXd weights_;  // modes x samples
@@ -45,32 +49,76 @@ Vec3 propagation_direction(double mu, double phi);
 //   K^m(to b, from a) = coefficients of  Delta phi -> kernel(omega_i = -d_a(0), omega_o = d_b(Delta phi)),
 // where the kernel is a BSDF-like function of graphics-convention directions. mu_from and mu_to are signed
 // propagation cosines. kernel_for_pair(wi, mu_to) returns the callable wo -> value for one pair of polar angles,
-// so that work depending only on the polar angles is done once per pair. Returns one (to x from) matrix per mode.
-template <class PairKernel>
-FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, std::span<const double> mu_from,
-                                         std::span<const double> mu_to, const CosineProjector& projector) {
+// so that work depending only on the polar angles is done once per pair. support_for_pair(a, b) gives how many
+// leading azimuth samples (phi_0 = 0, phi_1, ...) can hold a non-negligible value for the pair (mu_from[a],
+// mu_to[b]); the rest are taken as 0, neither evaluated nor projected, so a narrow lobe costs in proportion to its
+// azimuthal width. Returns one (to x from) matrix per mode.
+template <class PairKernel, class PairSupport>
+FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, const PairSupport& support_for_pair,
+                                         std::span<const double> mu_from, std::span<const double> mu_to,
+                                         const CosineProjector& projector) {
   const int n_from = static_cast<int>(mu_from.size());
   const int n_to = static_cast<int>(mu_to.size());
-  Eigen::MatrixXd samples(projector.samples(), n_from * n_to);
+  const int n = projector.samples();
+  const auto incident = [&mu_from](int a) { return Vec3(-propagation_direction(mu_from[a], 0.0)); };
+  std::vector<int> support(static_cast<std::size_t>(n_from) * n_to);
+  long long filled = 0;
   for (int a = 0; a < n_from; ++a) {
-    const Vec3 wi = -propagation_direction(mu_from[a], 0.0);
     for (int b = 0; b < n_to; ++b) {
-      const auto kernel = kernel_for_pair(wi, mu_to[b]);
-      const double sin_to = std::sqrt(std::max(0.0, 1.0 - mu_to[b] * mu_to[b]));
-      for (int k = 0; k < projector.samples(); ++k) {
-        const Vec3 wo(sin_to * projector.cos_angle(k), sin_to * projector.sin_angle(k), mu_to[b]);
-        samples(k, a * n_to + b) = kernel(wo);
-      }
+      const int count = std::clamp(static_cast<int>(support_for_pair(a, b)), 0, n);
+      support[static_cast<std::size_t>(a) * n_to + b] = count;
+      filled += count;
     }
   }
-  const Eigen::MatrixXd coefficients = projector.project(samples);
-  FourierKernel result(projector.modes(), Eigen::MatrixXd(n_to, n_from));
-  for (int m = 0; m < projector.modes(); ++m) {
+  // Samples of pair (a, b) at azimuths 0 .. count - 1 into `column`.
+  const auto sample_pair = [&](const Vec3& wi, int b, int count, auto&& column) {
+    const auto kernel = kernel_for_pair(wi, mu_to[b]);
+    const double sin_to = std::sqrt(std::max(0.0, 1.0 - mu_to[b] * mu_to[b]));
+    for (int k = 0; k < count; ++k) {
+      const Vec3 wo(sin_to * projector.cos_angle(k), sin_to * projector.sin_angle(k), mu_to[b]);
+      column(k) = kernel(wo);
+    }
+  };
+  FourierKernel result(projector.modes(), Eigen::MatrixXd::Zero(n_to, n_from));
+  const long long pairs = static_cast<long long>(n_from) * n_to;
+  if (2 * filled >= pairs * n) {  // mostly full: one matrix product over every pair
+    Eigen::MatrixXd samples = Eigen::MatrixXd::Zero(n, n_from * n_to);
     for (int a = 0; a < n_from; ++a) {
-      for (int b = 0; b < n_to; ++b) result[m](b, a) = coefficients(m, a * n_to + b);
+      const Vec3 wi = incident(a);
+      for (int b = 0; b < n_to; ++b) {
+        auto column = samples.col(a * n_to + b);
+        sample_pair(wi, b, support[static_cast<std::size_t>(a) * n_to + b], column);
+      }
+    }
+    const Eigen::MatrixXd coefficients = projector.project(samples);
+    for (int m = 0; m < projector.modes(); ++m) {
+      for (int a = 0; a < n_from; ++a) {
+        for (int b = 0; b < n_to; ++b) result[m](b, a) = coefficients(m, a * n_to + b);
+      }
+    }
+    return result;
+  }
+  Eigen::VectorXd head(n);
+  for (int a = 0; a < n_from; ++a) {
+    const Vec3 wi = incident(a);
+    for (int b = 0; b < n_to; ++b) {
+      const int count = support[static_cast<std::size_t>(a) * n_to + b];
+      if (count == 0) continue;
+      sample_pair(wi, b, count, head);
+      const Eigen::VectorXd coefficients = projector.project_head(head.head(count));
+      for (int m = 0; m < projector.modes(); ++m) result[m](b, a) = coefficients(m);
     }
   }
   return result;
+}
+
+// The same for a kernel that may be non-zero at every azimuth.
+template <class PairKernel>
+FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, std::span<const double> mu_from,
+                                         std::span<const double> mu_to, const CosineProjector& projector) {
+  const int every = projector.samples();
+  return project_propagation_kernel(
+      kernel_for_pair, [every](int, int) { return every; }, mu_from, mu_to, projector);
 }
 
 }  // namespace skinlayer
