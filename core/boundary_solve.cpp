@@ -39,9 +39,9 @@ double exponential_difference_ratio(double k, double mu, double tau) {
 }
 
 BeamParticular beam_particular_solution(std::span<const double> nodes, std::span<const double> weights,
-                                        const Eigen::MatrixXd& same, const Eigen::MatrixXd& opposite,
-                                        double scattering, const Eigen::MatrixXd& beam_up,
-                                        const Eigen::MatrixXd& beam_down, std::span<const double> mu0) {
+                                        const Eigen::MatrixXd& same, const Eigen::MatrixXd& opposite, double scattering,
+                                        const Eigen::MatrixXd& beam_up, const Eigen::MatrixXd& beam_down,
+                                        std::span<const double> mu0) {
   const Eigen::Index n = static_cast<Eigen::Index>(nodes.size());
   const Eigen::Index count = static_cast<Eigen::Index>(mu0.size());
   BeamParticular result{Eigen::MatrixXd(n, count), Eigen::MatrixXd(n, count), Eigen::VectorXd(count)};
@@ -109,8 +109,10 @@ NodeField solve_boundary(const BoundaryProblem& problem, int incident_count) {
     }
   }
 
-  const Eigen::MatrixXd top_rhs =
-      or_zero(problem.source_top, n, count) - (z_down - apply(problem.reflect_top, z_up));
+  // Without a beam inside the slab z = 0, and its terms are left out rather than multiplied.
+  const bool beam = problem.beam != nullptr;
+  Eigen::MatrixXd top_rhs = or_zero(problem.source_top, n, count);
+  if (beam) top_rhs -= z_down - apply(problem.reflect_top, z_up);
 
   NodeField field;
   if (semi_infinite) {
@@ -118,15 +120,13 @@ NodeField solve_boundary(const BoundaryProblem& problem, int incident_count) {
     field.c_minus = Eigen::PartialPivLU<Eigen::MatrixXd>(system).solve(top_rhs);
     field.c_plus = Eigen::MatrixXd::Zero(n, count);
     field.up_top = gp * field.c_minus + z_up;
-    field.down_top = gm * field.c_minus + z_down;
-    field.up_bottom = Eigen::MatrixXd::Zero(n, count);
     field.down_bottom = Eigen::MatrixXd::Zero(n, count);
     return field;
   }
 
   const Eigen::VectorXd e = (-eigen.k * problem.tau).array().exp();
-  const Eigen::MatrixXd bottom_rhs = or_zero(problem.source_bottom, n, count) -
-                                     (z_up - apply(problem.reflect_bottom, z_down)) * beam_attenuation.asDiagonal();
+  Eigen::MatrixXd bottom_rhs = or_zero(problem.source_bottom, n, count);
+  if (beam) bottom_rhs -= (z_up - apply(problem.reflect_bottom, z_down)) * beam_attenuation.asDiagonal();
   Eigen::MatrixXd system(2 * n, 2 * n);
   system.topLeftCorner(n, n) = gm - apply(problem.reflect_top, gp);
   system.topRightCorner(n, n) = (gp - apply(problem.reflect_top, gm)) * e.asDiagonal();
@@ -139,10 +139,12 @@ NodeField solve_boundary(const BoundaryProblem& problem, int incident_count) {
   field.c_plus = c.bottomRows(n);
   const Eigen::MatrixXd ec_minus = e.asDiagonal() * field.c_minus;
   const Eigen::MatrixXd ec_plus = e.asDiagonal() * field.c_plus;
-  field.up_top = gp * field.c_minus + gm * ec_plus + z_up;
-  field.down_top = gm * field.c_minus + gp * ec_plus + z_down;
-  field.up_bottom = gp * ec_minus + gm * field.c_plus + z_up * beam_attenuation.asDiagonal();
-  field.down_bottom = gm * ec_minus + gp * field.c_plus + z_down * beam_attenuation.asDiagonal();
+  field.up_top = gp * field.c_minus + gm * ec_plus;
+  field.down_bottom = gm * ec_minus + gp * field.c_plus;
+  if (beam) {
+    field.up_top += z_up;
+    field.down_bottom += z_down * beam_attenuation.asDiagonal();
+  }
   return field;
 }
 
@@ -201,8 +203,7 @@ Eigen::MatrixXd downward_radiance_at_bottom(const BoundaryProblem& problem, cons
     if (exit.beam_row.size() != 0) particular += exit.beam_row;
     for (Eigen::Index o = 0; o < outs; ++o) {
       for (Eigen::Index k = 0; k < count; ++k) {
-        result(o, k) +=
-            particular(o, k) * exponential_difference_ratio(1.0 / problem.beam->mu0(k), exit.mu[o], tau);
+        result(o, k) += particular(o, k) * exponential_difference_ratio(1.0 / problem.beam->mu0(k), exit.mu[o], tau);
       }
     }
   }

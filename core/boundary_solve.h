@@ -31,25 +31,26 @@ struct BeamParticular {
   Eigen::VectorXd mu0;   // the beam cosines, one per column
 };
 BeamParticular beam_particular_solution(std::span<const double> nodes, std::span<const double> weights,
-                                        const Eigen::MatrixXd& same, const Eigen::MatrixXd& opposite,
-                                        double scattering, const Eigen::MatrixXd& beam_up,
-                                        const Eigen::MatrixXd& beam_down, std::span<const double> mu0);
+                                        const Eigen::MatrixXd& same, const Eigen::MatrixXd& opposite, double scattering,
+                                        const Eigen::MatrixXd& beam_up, const Eigen::MatrixXd& beam_down,
+                                        std::span<const double> mu0);
 
 struct BoundaryProblem {
   const SlabEigenSolution* eigen = nullptr;
-  double tau = 0.0;                 // optical thickness; +infinity = semi-infinite
-  Eigen::MatrixXd reflect_top;      // R21 (N x N, to-down x from-up); empty = no reflection
-  Eigen::MatrixXd reflect_bottom;   // R23 (N x N, to-up x from-down); empty = no reflection
-  Eigen::MatrixXd source_top;       // N x K; empty = none
-  Eigen::MatrixXd source_bottom;    // N x K; empty = none
+  double tau = 0.0;                      // optical thickness; +infinity = semi-infinite
+  Eigen::MatrixXd reflect_top;           // R21 (N x N, to-down x from-up); empty = no reflection
+  Eigen::MatrixXd reflect_bottom;        // R23 (N x N, to-up x from-down); empty = no reflection
+  Eigen::MatrixXd source_top;            // N x K; empty = none
+  Eigen::MatrixXd source_bottom;         // N x K; empty = none
   const BeamParticular* beam = nullptr;  // null = no unscattered beam inside the slab
 };
 
-// The solution's constants and its node radiances at both faces (N x K each).
+// The solution's constants and the node radiances that meet the interfaces from inside (N x K each): upward at
+// the top and downward at the bottom (the ones the exits and the fluxes read).
 struct NodeField {
   Eigen::MatrixXd c_minus;
   Eigen::MatrixXd c_plus;  // zero for a semi-infinite slab
-  Eigen::MatrixXd up_top, down_top, up_bottom, down_bottom;
+  Eigen::MatrixXd up_top, down_bottom;
 };
 NodeField solve_boundary(const BoundaryProblem& problem, int incident_count);
 
@@ -59,7 +60,7 @@ struct ExitScattering {
   std::span<const double> mu;  // exit cosines (> 0)
   Eigen::MatrixXd same_row;
   Eigen::MatrixXd opposite_row;
-  Eigen::MatrixXd beam_row;    // empty = no beam
+  Eigen::MatrixXd beam_row;  // empty = no beam
 };
 
 // u^m(0, +mu_o) for every exit mu_o and incident column: upward radiance leaving the slab's top face.

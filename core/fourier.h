@@ -79,17 +79,19 @@ FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, cons
       column(k) = kernel(wo);
     }
   };
-  FourierKernel result(projector.modes(), Eigen::MatrixXd::Zero(n_to, n_from));
   const long long pairs = static_cast<long long>(n_from) * n_to;
   if (2 * filled >= pairs * n) {  // mostly full: one matrix product over every pair
-    Eigen::MatrixXd samples = Eigen::MatrixXd::Zero(n, n_from * n_to);
+    Eigen::MatrixXd samples(n, n_from * n_to);
     for (int a = 0; a < n_from; ++a) {
       const Vec3 wi = incident(a);
       for (int b = 0; b < n_to; ++b) {
+        const int count = support[static_cast<std::size_t>(a) * n_to + b];
         auto column = samples.col(a * n_to + b);
-        sample_pair(wi, b, support[static_cast<std::size_t>(a) * n_to + b], column);
+        sample_pair(wi, b, count, column);
+        column.tail(n - count).setZero();
       }
     }
+    FourierKernel result(projector.modes(), Eigen::MatrixXd(n_to, n_from));
     const Eigen::MatrixXd coefficients = projector.project(samples);
     for (int m = 0; m < projector.modes(); ++m) {
       for (int a = 0; a < n_from; ++a) {
@@ -98,6 +100,7 @@ FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, cons
     }
     return result;
   }
+  FourierKernel result(projector.modes(), Eigen::MatrixXd::Zero(n_to, n_from));
   Eigen::VectorXd head(n);
   for (int a = 0; a < n_from; ++a) {
     const Vec3 wi = incident(a);

@@ -230,12 +230,15 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
   if (infinite || geometry_.base == LayerBase::Lambert) {
     result.transmission = Eigen::MatrixXd::Zero(count_out, count_in);
   } else if (geometry_.base == LayerBase::Rough) {
-    result.transmission = kernels_->t_bottom_exit[m] * field.down_bottom;
     // The light that crossed both interfaces unscattered, t23 e^{-tau/mu_j} t12, is on the nodes as the first-pass
     // part of down_bottom (exactly: the discrete-ordinate equations propagate it without scattering); it and the
-    // open top's beam through the bottom are UnscatteredLight::btdf when evaluated exactly.
+    // open top's beam through the bottom are UnscatteredLight::btdf when evaluated exactly, so it is taken off the
+    // node field before the exit (one product instead of two).
     if (exact_path_ == UnscatteredPath::TopThenBottom) {
-      result.transmission -= kernels_->t_bottom_exit[m] * (node_attenuation_.asDiagonal() * kernels_->t_source[m]);
+      result.transmission =
+          kernels_->t_bottom_exit[m] * (field.down_bottom - node_attenuation_.asDiagonal() * kernels_->t_source[m]);
+    } else {
+      result.transmission = kernels_->t_bottom_exit[m] * field.down_bottom;
     }
     if (geometry_.top_open && exact_path_ != UnscatteredPath::BottomOnly) {
       result.transmission += kernels_->t_bottom_beam[m] * beam_attenuation_.asDiagonal();
