@@ -14,6 +14,10 @@ namespace {
 constexpr int kConvergedOrdinates = 192;
 constexpr int kConvergedTableSize = 95;  // twice the default grid's intervals
 constexpr double kJudgedFraction = 1e-3;
+// A quantity whose converged peak is below this [1/sr] is zero up to round-off (no scattering over a matched bottom
+// has no subsurface BRDF at all: its "values" are 1e-17 residues of the subtraction of the exact unscattered part)
+// and is not judged: its relative errors measure nothing.
+constexpr double kRoundOffPeak = 1e-12;
 
 void add_fine_window(std::vector<double>& angles, double centre) {
   for (int k = -60; k <= 60; ++k) {
@@ -70,7 +74,7 @@ PointAccuracy point_accuracy(const Material& material, std::span<const double> i
   }
   for (PointError& p : samples) {
     const double peak = p.transmission ? peak_t : peak_r;
-    if (!(p.converged > kJudgedFraction * peak)) continue;
+    if (peak < kRoundOffPeak || !(p.converged > kJudgedFraction * peak)) continue;
     p.relative = std::abs(p.value - p.converged) / p.converged;
     ++result.judged;
     if (p.relative > result.worst.relative || result.judged == 1) result.worst = p;

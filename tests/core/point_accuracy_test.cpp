@@ -37,6 +37,19 @@ TEST(PointAccuracy, SharpInterfacesAreWithinOnePercentAtEveryJudgedPoint) {
   }
 }
 
+// A layer that does not scatter, over a matched bottom, sends nothing back up below the top interface: its
+// subsurface BRDF is 0 up to round-off (1e-17 residues of taking out the exact unscattered part) and must not be
+// judged, or its "relative errors" reach 100% and more. Its BTDF is the exact refracted light in both solves.
+TEST(PointAccuracy, AQuantityThatIsZeroUpToRoundOffIsNotJudged) {
+  Material m = sharp_base();
+  m.albedo = 0.0;
+  m.bottom = parse_bottom("matched");
+  const PointAccuracy a = point_accuracy(m, std::vector<double>{degrees_to_radians(30.0)});
+  EXPECT_GT(a.judged, 100);
+  EXPECT_TRUE(a.worst.transmission);
+  EXPECT_LT(a.worst.relative, 1e-9);
+}
+
 // The grid of judged exit angles is finer than the lobes where they are sharp.
 TEST(PointAccuracy, ExitAnglesAreFineAtTheNormalMirrorAndStraightThrough) {
   Material m = sharp_base();
