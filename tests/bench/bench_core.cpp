@@ -148,20 +148,18 @@ void BM_ResolveColorCorner(benchmark::State& state, int corner, bool preview) {
   state.counters["ordinates"] = resolution.ordinates;
   state.counters["interface_azimuths"] = resolution.interface_azimuths;
 }
-BENCHMARK_CAPTURE(BM_ResolveColorCorner, sigma0 .05_preview, 0, true)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_ResolveColorCorner, sigma0 .05_full, 0, false)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_ResolveColorCorner, sigma0 .1_eta1.05_preview, 1, true)
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, sharp_top_preview, 0, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, sharp_top_full, 0, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, near_matched_top_preview, 1, true)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ResolveColorCorner, sigma0 .1_eta1.05_full, 1, false)
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, near_matched_top_full, 1, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, forward_clear_preview, 2, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, forward_clear_full, 2, false)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, near_matched_bottom_preview, 3, true)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ResolveColorCorner, g0 .95_T0.9_preview, 2, true)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_ResolveColorCorner, g0 .95_T0.9_full, 2, false)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK_CAPTURE(BM_ResolveColorCorner, bottom0 .2_eta1.05_preview, 3, true)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(BM_ResolveColorCorner, bottom0 .2_eta1.05_full, 3, false)
+BENCHMARK_CAPTURE(BM_ResolveColorCorner, near_matched_bottom_full, 3, false)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

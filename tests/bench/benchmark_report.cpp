@@ -166,6 +166,17 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
     const double ms = r.ms(std::string("BM_Resolve/") + parameter);
     md << formatted("| %s | %.2f | %.0f%% |\n", parameter, ms, 100.0 * ms / r.ms("BM_SolveDefault"));
   }
+  md << "\n## RGB re-solves at the costliest corners\n\n"
+     << "Three albedos on both cores with the cache, as the previewer's worker solves them, after a σ step (so the "
+        "interface operators are built anew). Preview: `SolveOptions::preview`, the worker's first answer where the "
+        "full resolution is costly (target of issue 10: an RGB re-solve ≤ 100 ms anywhere); full: the automatic "
+        "resolution that follows it.\n\n| material | preview ms | full ms |\n|---|---|---|\n";
+  for (const auto& [label, name] :
+       {std::pair{"σ 0.05", "sharp_top"}, std::pair{"σ 0.1, η 1.05", "near_matched_top"},
+        std::pair{"g 0.95, T 0.9", "forward_clear"}, std::pair{"bottom σ3 0.2, η3 1.05", "near_matched_bottom"}}) {
+    const std::string stem = std::string("BM_ResolveColorCorner/") + name;
+    md << formatted("| %s | %.1f | %.0f |\n", label, r.ms(stem + "_preview/real_time"), r.ms(stem + "_full/real_time"));
+  }
   md << formatted(
       "\nOne unscattered BTDF evaluation through two rough interfaces (core/unscattered_light.h, the "
       "32×32 slope quadrature): %.0f µs.\n\n",
