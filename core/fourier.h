@@ -72,6 +72,7 @@ FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, cons
   }
   // Samples of pair (a, b) at azimuths 0 .. count - 1 into `column`.
   const auto sample_pair = [&](const Vec3& wi, int b, int count, auto&& column) {
+    if (count == 0) return;
     const auto kernel = kernel_for_pair(wi, mu_to[b]);
     const double sin_to = std::sqrt(std::max(0.0, 1.0 - mu_to[b] * mu_to[b]));
     for (int k = 0; k < count; ++k) {

@@ -129,7 +129,7 @@ void SolveWorker::run(std::stop_token stop) {
         options.preview = true;
         SolveResult preview = compute_solve(request, generation, options);
         const bool failed = !preview.error.empty();
-        if (!publish(std::move(preview), failed) || failed) continue;
+        if (!publish(std::move(preview), failed) || failed || superseded(generation, stop)) continue;
         options.preview = false;
       }
       publish(compute_solve(request, generation, options), true);
