@@ -85,7 +85,7 @@ std::size_t InterfaceKernels::bytes() const {
 
 InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
                                    std::span<const double> mu_in, std::span<const double> mu_out,
-                                   const ParallelFor& parallel_for) {
+                                   const ParallelFor& parallel_for, KernelSet set) {
   InterfaceKernels k;
   k.geometry = geometry;
   k.quadrature = double_gauss_half_range(ordinates);
@@ -103,16 +103,19 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   const std::vector<double> down_out = negated(mu_out);
   const bool rough_bottom = geometry.base == LayerBase::Rough;
   const bool bottom_is_top = rough_bottom && geometry.bottom_mirrors_top && !geometry.top_open;
+  const bool all = set == KernelSet::All;
 
   // Independent kernels, each written by one task: they run side by side on the caller's parallel-for.
   std::vector<std::function<void()>> tasks;
-  if (!geometry.top_open) {
+  if (!geometry.top_open && (all || bottom_is_top)) {
     tasks.emplace_back([&] {
       k.r_top = interface_fourier(geometry.top, up, down, surface);
       k.top_inside = interface_albedos_along(geometry.top, up, -1.0);
       match_reflection_energy(k.r_top, up, weights, reflectances(k.top_inside));
       apply_quadrature_weights(k.r_top, up, weights);
     });
+  }
+  if (!geometry.top_open) {
     tasks.emplace_back([&] {
       k.t_source = interface_fourier(geometry.top, down_in, down, surface);
       match_column_energy(k.t_source, up, weights, transmittances(interface_albedos_along(geometry.top, mu_in, 1.0)));
@@ -122,7 +125,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
         apply_quadrature_weights(k.t_exit, up, weights);
       }
     });
-    if (want_exit && geometry.base == LayerBase::Open) {
+    if (all && want_exit && geometry.base == LayerBase::Open) {
       tasks.emplace_back([&] {
         k.t_source_exterior = interface_fourier(geometry.top, down_in, down_out, surface);
         k.r_top_rows = interface_fourier(geometry.top, up, down_out, surface);
@@ -137,7 +140,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
       match_reflection_energy(k.r_bottom, up, weights, reflectances(k.bottom_inside));
       apply_quadrature_weights(k.r_bottom, up, weights);
     });
-    if (want_exit) {
+    if (all && want_exit) {
       tasks.emplace_back([&] {
         // As for the top: the exit rows are the transposed source columns from the air below (propagating up), each
         // matched to its slope-space transmittance. A sharp, low-contrast bottom (sigma3 0.2, eta3 1.2) has an
@@ -151,7 +154,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
       });
     }
   }
-  if (rough_bottom && geometry.top_open) {
+  if (all && rough_bottom && geometry.top_open) {
     tasks.emplace_back([&] {
       k.s_bottom_beam = interface_fourier(geometry.bottom, down_in, up, surface);
       match_column_energy(k.s_bottom_beam, up, weights,
@@ -169,7 +172,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   run_parallel(parallel_for, static_cast<int>(tasks.size()), [&](int i) { tasks[static_cast<std::size_t>(i)](); });
   if (bottom_is_top) {
     k.r_bottom = k.r_top;
-    k.t_bottom_exit = k.t_exit;
+    if (all) k.t_bottom_exit = k.t_exit;
     k.bottom_inside = k.top_inside;
   }
   return k;

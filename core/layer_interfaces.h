@@ -49,12 +49,16 @@ struct InterfaceKernels {
 // The cosines with their signs flipped: the same polar angles travelling the other way.
 std::vector<double> negated(std::span<const double> cosines);
 
+// Which kernels to build: all that the geometry uses, or only those of the unscattered light's first bottom
+// reflection (t_source, t_exit, r_bottom; core/bottom_bounce.h), which the solver builds again on finer ordinates.
+enum class KernelSet { All, BottomBounce };
+
 // mu_in: the outside cosines light arrives along (clamped off 0 by the caller); mu_out: those the tables leave along,
 // either none (fluxes only) or the same as mu_in. ordinates N, Fourier modes projected and azimuth samples as the
 // resolution says. The independent kernels (top reflection, top transmission, bottom ...) run through parallel_for
 // when it is given (SolveOptions::parallel_for); the result is the same either way.
 InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
                                    std::span<const double> mu_in, std::span<const double> mu_out,
-                                   const ParallelFor& parallel_for = {});
+                                   const ParallelFor& parallel_for = {}, KernelSet set = KernelSet::All);
 
 }  // namespace skinlayer

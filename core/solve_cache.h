@@ -28,6 +28,7 @@ struct InterfaceKernelKey {
   int modes = 0;
   int azimuths = 0;
   std::vector<double> mu_in, mu_out;
+  KernelSet set = KernelSet::All;
 
   bool operator==(const InterfaceKernelKey&) const = default;
 };

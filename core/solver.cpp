@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 
+#include "core/bottom_bounce.h"
 #include "core/boundary_solve.h"
 #include "core/conventions.h"
 #include "core/henyey_greenstein.h"
@@ -43,11 +44,18 @@ std::vector<double> clamped_cosines(std::span<const double> mu) {
 // The interface kernels of a solve, from the caller's cache where it has them.
 std::shared_ptr<const InterfaceKernels> kernels_for(const Material& material, const Resolution& resolution,
                                                     std::span<const double> mu_in, std::span<const double> mu_out,
-                                                    SolveCache* cache, const ParallelFor& parallel_for) {
-  InterfaceKernelKey key{classify_layer(material),      resolution.ordinates,   resolution.interface_modes,
-                         resolution.interface_azimuths, clamped_cosines(mu_in), clamped_cosines(mu_out)};
+                                                    SolveCache* cache, const ParallelFor& parallel_for,
+                                                    KernelSet set = KernelSet::All) {
+  InterfaceKernelKey key{classify_layer(material),
+                         resolution.ordinates,
+                         resolution.interface_modes,
+                         resolution.interface_azimuths,
+                         clamped_cosines(mu_in),
+                         clamped_cosines(mu_out),
+                         set};
   const auto build = [&] {
-    return interface_kernels(key.geometry, key.ordinates, key.modes, key.azimuths, key.mu_in, key.mu_out, parallel_for);
+    return interface_kernels(key.geometry, key.ordinates, key.modes, key.azimuths, key.mu_in, key.mu_out, parallel_for,
+                             key.set);
   };
   if (cache == nullptr) return std::make_shared<const InterfaceKernels>(build());
   return cache->interface_kernels(key, build);
@@ -375,7 +383,11 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
   const double tolerance = options.fourier_tolerance;
 
   const std::size_t plane = static_cast<std::size_t>(k) * k;
-  std::vector<LayerTables> tables(albedos.size());
+  struct Coefficients {
+    int modes = 0;
+    std::vector<double> reflection, transmission;  // per mode, K x K with (o, i) at i K + o
+  };
+  std::vector<Coefficients> solved(albedos.size());
   std::vector<char> converged(albedos.size(), 0);
   // Several albedos run side by side (SolveOptions::parallel_for), each its modes in order. A single albedo runs
   // its modes side by side instead, kModeBlock at a time; the modes past the convergence point are discarded, so
@@ -423,13 +435,43 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
       modes = m + 1;
     }
     converged[static_cast<std::size_t>(index)] = quiet_modes >= 2;
-    tables[static_cast<std::size_t>(index)] =
-        LayerTables(k, modes, std::move(reflection), std::move(transmission), unscattered);
+    solved[static_cast<std::size_t>(index)] = {modes, std::move(reflection), std::move(transmission)};
   };
   if (parallel_modes) {
     solve_albedo(0);
   } else {
     run_parallel(options.parallel_for, static_cast<int>(albedos.size()), solve_albedo);
+  }
+
+  // The unscattered light's first reflection off a rough bottom, on finer ordinates where it matters
+  // (core/bottom_bounce.h): the tables' node image of it is replaced by the finer one, mode by mode. Not in a
+  // preview, which is a quick look by definition.
+  if (unscattered.path() == UnscatteredPath::TopThenBottom && !options.preview) {
+    int modes = 0;
+    for (const Coefficients& c : solved) modes = std::max(modes, c.modes);
+    std::vector<Eigen::MatrixXd> coarse;
+    for (int m = 0; m < modes; ++m) coarse.push_back(bottom_bounce_image(solver.kernels(), material.tau, m));
+    std::vector<Eigen::MatrixXd> mode0;
+    for (const Coefficients& c : solved) mode0.push_back(Eigen::Map<const Eigen::MatrixXd>(c.reflection.data(), k, k));
+    Resolution finer = resolution;
+    finer.ordinates = bottom_bounce_ordinates(resolution.ordinates, solver.kernels().geometry.top);
+    if (finer.ordinates > resolution.ordinates && bottom_bounce_matters(coarse, mode0)) {
+      check_cancelled();
+      const auto fine =
+          kernels_for(material, finer, grid, grid, options.cache, options.parallel_for, KernelSet::BottomBounce);
+      for (int m = 0; m < modes; ++m) {
+        const Eigen::MatrixXd correction =
+            azimuth_parity(m) * (bottom_bounce_image(*fine, material.tau, m) - coarse[static_cast<std::size_t>(m)]);
+        for (Coefficients& c : solved) {
+          if (m >= c.modes) continue;
+          Eigen::Map<Eigen::MatrixXd>(c.reflection.data() + static_cast<std::size_t>(m) * plane, k, k) += correction;
+        }
+      }
+    }
+  }
+  std::vector<LayerTables> tables;
+  for (Coefficients& c : solved) {
+    tables.emplace_back(k, c.modes, std::move(c.reflection), std::move(c.transmission), unscattered);
   }
   return {std::move(tables), std::ranges::all_of(converged, [](char c) { return c != 0; })};
 }

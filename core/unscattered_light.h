@@ -17,8 +17,9 @@
 // f_t12, f_t23, f_r23 are the interfaces' microfacet BSDFs (core/microfacet.h), radiance BTDFs, in 1/sr. The solver
 // removes exactly these paths from its ordinates (their node-sum images), so the tables carry only light that was
 // scattered at least once or reflected between the interfaces, which is smooth; LayerTables adds this part back.
-// Light reflected by a rough bottom under a rough top without scattering, t12 R23 t21, stays on the ordinates: its
-// lobe is the bottom's reflection lobe (about 2 sigma3 wide inside, against sigma (1 - 1/eta) for a refracted one).
+// Light reflected by a rough bottom under a rough top without scattering, t12 R23 t21, stays in the tables: its lobe
+// is the bottom's reflection lobe (about 2 sigma3 wide inside, against sigma (1 - 1/eta) for a refracted one). Its
+// node image is put on four times the ordinates where it matters (core/bottom_bounce.h).
 #pragma once
 
 #include <span>

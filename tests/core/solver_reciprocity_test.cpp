@@ -37,6 +37,17 @@ TEST(SolverReciprocity, BottomAirWithDifferentBottomInterface) {
   expect_reciprocal(m);
 }
 
+// A thin layer that does not scatter: its BRDF is the unscattered light's bottom reflection, which the solver puts on
+// four times the ordinates (core/bottom_bounce.h); the correction keeps the tables reciprocal.
+TEST(SolverReciprocity, BottomBounceOnFinerOrdinates) {
+  Material m;
+  m.sigma = 0.2;
+  m.albedo = 0.0;
+  m.g = 0.5;
+  m.tau = optical_depth_from_transparency(0.5);
+  expect_reciprocal(m);
+}
+
 TEST(SolverReciprocity, BottomLambert) {
   Material m;
   m.bottom = parse_bottom("lambert:0.6");
