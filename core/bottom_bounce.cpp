@@ -14,16 +14,13 @@ Eigen::MatrixXd bottom_bounce_image(const InterfaceKernels& kernels, double tau,
          (attenuation.asDiagonal() * kernels.r_bottom[mode] * (attenuation.asDiagonal() * kernels.t_source[mode]));
 }
 
-bool bottom_bounce_matters(std::span<const Eigen::MatrixXd> images, std::span<const Eigen::MatrixXd> reflection_mode0,
+bool bottom_bounce_matters(const Eigen::MatrixXd& image_mode0, std::span<const Eigen::MatrixXd> reflection_mode0,
                            double fraction) {
-  if (images.empty()) return false;
-  Eigen::MatrixXd bound = Eigen::MatrixXd::Zero(images.front().rows(), images.front().cols());
-  for (const Eigen::MatrixXd& image : images) bound += image.cwiseAbs();
   for (const Eigen::MatrixXd& table : reflection_mode0) {
     const double counted = 1e-3 * table.maxCoeff();
     for (Eigen::Index i = 0; i < table.cols(); ++i) {
       for (Eigen::Index o = 0; o < table.rows(); ++o) {
-        if (table(o, i) > counted && bound(o, i) >= fraction * table(o, i)) return true;
+        if (table(o, i) > counted && std::abs(image_mode0(o, i)) >= fraction * table(o, i)) return true;
       }
     }
   }

@@ -449,19 +449,18 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
   if (unscattered.path() == UnscatteredPath::TopThenBottom && !options.preview) {
     int modes = 0;
     for (const Coefficients& c : solved) modes = std::max(modes, c.modes);
-    std::vector<Eigen::MatrixXd> coarse;
-    for (int m = 0; m < modes; ++m) coarse.push_back(bottom_bounce_image(solver.kernels(), material.tau, m));
     std::vector<Eigen::MatrixXd> mode0;
     for (const Coefficients& c : solved) mode0.push_back(Eigen::Map<const Eigen::MatrixXd>(c.reflection.data(), k, k));
     Resolution finer = resolution;
     finer.ordinates = bottom_bounce_ordinates(resolution.ordinates, solver.kernels().geometry.top);
-    if (finer.ordinates > resolution.ordinates && bottom_bounce_matters(coarse, mode0)) {
+    if (finer.ordinates > resolution.ordinates &&
+        bottom_bounce_matters(bottom_bounce_image(solver.kernels(), material.tau, 0), mode0)) {
       check_cancelled();
       const auto fine =
           kernels_for(material, finer, grid, grid, options.cache, options.parallel_for, KernelSet::BottomBounce);
       for (int m = 0; m < modes; ++m) {
-        const Eigen::MatrixXd correction =
-            azimuth_parity(m) * (bottom_bounce_image(*fine, material.tau, m) - coarse[static_cast<std::size_t>(m)]);
+        const Eigen::MatrixXd correction = azimuth_parity(m) * (bottom_bounce_image(*fine, material.tau, m) -
+                                                                bottom_bounce_image(solver.kernels(), material.tau, m));
         for (Coefficients& c : solved) {
           if (m >= c.modes) continue;
           Eigen::Map<Eigen::MatrixXd>(c.reflection.data() + static_cast<std::size_t>(m) * plane, k, k) += correction;
