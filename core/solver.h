@@ -43,9 +43,9 @@ struct SolveOptions {
   std::function<bool()> cancelled;
 };
 
-// What SolveOptions::preview caps the automatic resolution at: 16-18 ms for an RGB solve on both cores of the 2-core
+// What SolveOptions::preview caps the automatic resolution at: 15-18 ms for an RGB solve on both cores of the 2-core
 // VM at the costliest corners of the parameter ranges (docs/benchmarks.md, BM_ResolveColorCorner), where the full
-// resolution takes 0.3-1 s.
+// resolution takes 0.2-1 s.
 struct PreviewResolution {
   int ordinates = 32;
   int max_modes = 32;
