@@ -5,10 +5,7 @@
 
 namespace skinlayer {
 
-Eigen::MatrixXd bottom_bounce_image(const InterfaceKernels& kernels, double tau, int m) {
-  const std::vector<double>& nodes = kernels.quadrature.nodes;
-  Eigen::VectorXd attenuation(static_cast<Eigen::Index>(nodes.size()));
-  for (std::size_t j = 0; j < nodes.size(); ++j) attenuation(static_cast<Eigen::Index>(j)) = std::exp(-tau / nodes[j]);
+Eigen::MatrixXd bottom_bounce_image(const InterfaceKernels& kernels, const Eigen::VectorXd& attenuation, int m) {
   const auto mode = static_cast<std::size_t>(m);
   return kernels.t_exit[mode] *
          (attenuation.asDiagonal() * kernels.r_bottom[mode] * (attenuation.asDiagonal() * kernels.t_source[mode]));

@@ -18,9 +18,10 @@
 namespace skinlayer {
 
 // B^m on the kernels' ordinates (InterfaceKernels of a closed top over a rough bottom, with exit rows), in the
-// solver's propagation convention (the caller applies the graphics azimuth parity). Dimensionless, like the
-// kernels' products.
-Eigen::MatrixXd bottom_bounce_image(const InterfaceKernels& kernels, double tau, int m);
+// solver's propagation convention (the caller applies the graphics azimuth parity). `attenuation` is e^{-tau/mu_j}
+// on those ordinates (slab_attenuation, core/boundary_solve.h), computed once for every mode. Dimensionless, like
+// the kernels' products.
+Eigen::MatrixXd bottom_bounce_image(const InterfaceKernels& kernels, const Eigen::VectorXd& attenuation, int m);
 
 // Whether the node image matters at N: somewhere the mode-0 subsurface BRDF table counts (above 1e-3 of its peak),
 // the image's mode 0 reaches `fraction` of it. Measured (mode-0 share -> worst pointwise error at N without the

@@ -30,6 +30,12 @@ double beam_integral(double mu0, double mu, double tau) {
 
 }  // namespace
 
+Eigen::VectorXd slab_attenuation(std::span<const double> mu, double tau) {
+  Eigen::VectorXd result(static_cast<Eigen::Index>(mu.size()));
+  for (std::size_t k = 0; k < mu.size(); ++k) result(static_cast<Eigen::Index>(k)) = std::exp(-tau / mu[k]);
+  return result;
+}
+
 double exponential_difference_ratio(double k, double mu, double tau) {
   if (is_semi_infinite(tau)) return 0.0;
   const double x = 1.0 / mu - k;  // (1 - k mu) = mu x

@@ -21,6 +21,9 @@
 
 namespace skinlayer {
 
+// e^{-tau/mu} for each cosine mu (> 0): the slab's transmittance along each direction, unscattered.
+Eigen::VectorXd slab_attenuation(std::span<const double> mu, double tau);
+
 // Particular solution for a collimated beam travelling down at cosine mu0 (one column per beam) that is scattered
 // with source J^m(tau, mu) = beam_source(mu) e^{-tau/mu0}. Solves, over all 2N signed nodes,
 //   (I + diag(mu_signed)/mu0 - s P A) Z = J,   s = Omega c_m.

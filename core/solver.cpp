@@ -29,12 +29,6 @@ constexpr double kMaxSolvedAlbedo = 1.0 - 1e-9;
 constexpr double kMinCosine = 1e-6;
 constexpr int kDefaultTableSize = 48;
 
-Eigen::VectorXd attenuation(std::span<const double> mu0, double tau) {  // e^{-tau/mu0}
-  Eigen::VectorXd result(static_cast<Eigen::Index>(mu0.size()));
-  for (std::size_t k = 0; k < mu0.size(); ++k) result(static_cast<Eigen::Index>(k)) = std::exp(-tau / mu0[k]);
-  return result;
-}
-
 std::vector<double> clamped_cosines(std::span<const double> mu) {
   std::vector<double> result(mu.begin(), mu.end());
   for (double& m : result) m = std::max(m, kMinCosine);
@@ -110,8 +104,8 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
       mu_out_(kernels_->mu_out),
       want_exit_(!mu_out_.empty()),
       exact_path_(want_exit_ ? exact_path : UnscatteredPath::None) {
-  beam_attenuation_ = attenuation(mu_in_, tau_);
-  node_attenuation_ = attenuation(quadrature_.nodes, tau_);
+  beam_attenuation_ = slab_attenuation(mu_in_, tau_);
+  node_attenuation_ = slab_attenuation(quadrature_.nodes, tau_);
   beam_flux_ =
       Eigen::Map<const Eigen::VectorXd>(mu_in_.data(), static_cast<Eigen::Index>(mu_in_.size())).cwiseInverse();
 
@@ -336,13 +330,15 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
           ? options.max_modes
           : std::clamp(std::max({24, ceil_to_int(5.4 / forwardness) + 2, ceil_to_int(4.0 / sigma_min)}), 24, 128);
   resolution.table_size = options.table_size > 0 ? options.table_size : kDefaultTableSize;
-  resolution.interface_modes = resolution.max_modes == 1 ? 1 : (resolution.max_modes + 15) / 16 * 16;
+  // The interface operators are projected onto the mode cap rounded up to a multiple of 16 (Resolution).
+  const auto interface_modes_for = [](int max_modes) { return max_modes == 1 ? 1 : (max_modes + 15) / 16 * 16; };
+  resolution.interface_modes = interface_modes_for(resolution.max_modes);
   resolution.interface_azimuths = std::max({2 * resolution.interface_modes + 1, ceil_to_int(24.0 / sigma_min) + 1, 49});
   resolution.phase_azimuths = std::max({2 * resolution.max_modes + 1, ceil_to_int(20.0 / forwardness) + 1, 49});
   if (options.preview) {
     resolution.ordinates = std::min(resolution.ordinates, kPreviewResolution.ordinates);
     resolution.max_modes = std::min(resolution.max_modes, kPreviewResolution.max_modes);
-    resolution.interface_modes = resolution.max_modes == 1 ? 1 : (resolution.max_modes + 15) / 16 * 16;
+    resolution.interface_modes = interface_modes_for(resolution.max_modes);
     resolution.interface_azimuths = std::clamp(kPreviewResolution.interface_azimuths,
                                                2 * resolution.interface_modes + 1, resolution.interface_azimuths);
   }
@@ -446,28 +442,34 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
   // The unscattered light's first reflection off a rough bottom, on finer ordinates where it matters
   // (core/bottom_bounce.h): the tables' node image of it is replaced by the finer one, mode by mode. Not in a
   // preview, which is a quick look by definition.
-  if (unscattered.path() == UnscatteredPath::TopThenBottom && !options.preview) {
-    int modes = 0;
-    for (const Coefficients& c : solved) modes = std::max(modes, c.modes);
+  const auto refine_bottom_bounce = [&] {
+    if (unscattered.path() != UnscatteredPath::TopThenBottom || options.preview) return;
+    const InterfaceKernels& coarse = solver.kernels();
+    Resolution finer = resolution;
+    finer.ordinates = bottom_bounce_ordinates(resolution.ordinates, coarse.geometry.top);
+    if (finer.ordinates <= resolution.ordinates) return;
+    const Eigen::VectorXd coarse_attenuation = slab_attenuation(coarse.quadrature.nodes, material.tau);
+    const Eigen::MatrixXd coarse_mode0 = bottom_bounce_image(coarse, coarse_attenuation, 0);
     std::vector<Eigen::MatrixXd> mode0;
     for (const Coefficients& c : solved) mode0.push_back(Eigen::Map<const Eigen::MatrixXd>(c.reflection.data(), k, k));
-    Resolution finer = resolution;
-    finer.ordinates = bottom_bounce_ordinates(resolution.ordinates, solver.kernels().geometry.top);
-    if (finer.ordinates > resolution.ordinates &&
-        bottom_bounce_matters(bottom_bounce_image(solver.kernels(), material.tau, 0), mode0)) {
-      check_cancelled();
-      const auto fine =
-          kernels_for(material, finer, grid, grid, options.cache, options.parallel_for, KernelSet::BottomBounce);
-      for (int m = 0; m < modes; ++m) {
-        const Eigen::MatrixXd correction = azimuth_parity(m) * (bottom_bounce_image(*fine, material.tau, m) -
-                                                                bottom_bounce_image(solver.kernels(), material.tau, m));
-        for (Coefficients& c : solved) {
-          if (m >= c.modes) continue;
-          Eigen::Map<Eigen::MatrixXd>(c.reflection.data() + static_cast<std::size_t>(m) * plane, k, k) += correction;
-        }
+    if (!bottom_bounce_matters(coarse_mode0, mode0)) return;
+    check_cancelled();
+    const auto fine =
+        kernels_for(material, finer, grid, grid, options.cache, options.parallel_for, KernelSet::BottomBounce);
+    const Eigen::VectorXd fine_attenuation = slab_attenuation(fine->quadrature.nodes, material.tau);
+    int modes = 0;
+    for (const Coefficients& c : solved) modes = std::max(modes, c.modes);
+    for (int m = 0; m < modes; ++m) {
+      const Eigen::MatrixXd correction =
+          azimuth_parity(m) * (bottom_bounce_image(*fine, fine_attenuation, m) -
+                               (m == 0 ? coarse_mode0 : bottom_bounce_image(coarse, coarse_attenuation, m)));
+      for (Coefficients& c : solved) {
+        if (m >= c.modes) continue;
+        Eigen::Map<Eigen::MatrixXd>(c.reflection.data() + static_cast<std::size_t>(m) * plane, k, k) += correction;
       }
     }
-  }
+  };
+  refine_bottom_bounce();
   std::vector<LayerTables> tables;
   for (Coefficients& c : solved) {
     tables.emplace_back(k, c.modes, std::move(c.reflection), std::move(c.transmission), unscattered);

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "core/boundary_solve.h"
 #include "core/conventions.h"
 #include "core/layer_tables.h"
 #include "core/material.h"
@@ -21,8 +22,9 @@ Eigen::MatrixXd forward_plane(const Material& m, int ordinates, int modes) {
   for (int i = 0; i < k; ++i) grid[i] = std::max(std::cos(LayerTables::grid_angle(i, k)), 1e-6);
   const InterfaceKernels kernels = interface_kernels(classify_layer(m), ordinates, modes, 2 * modes + 1 + 120, grid,
                                                      grid, {}, KernelSet::BottomBounce);
+  const Eigen::VectorXd attenuation = slab_attenuation(kernels.quadrature.nodes, m.tau);
   Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(k, k);
-  for (int mode = 0; mode < modes; ++mode) sum += bottom_bounce_image(kernels, m.tau, mode);
+  for (int mode = 0; mode < modes; ++mode) sum += bottom_bounce_image(kernels, attenuation, mode);
   return sum;
 }
 
