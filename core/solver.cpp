@@ -265,21 +265,71 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
 
 int ceil_to_int(double x) { return static_cast<int>(std::ceil(x)); }
 
+// How near-matched an interface is: 0 at eta >= 1.2 (or <= 1/1.2), rising linearly to 1 at 1.1 and below.
+double near_matched(const RoughDielectric& interface) {
+  const double n = std::max(interface.eta, 1.0 / interface.eta);
+  return std::clamp((1.2 - n) / 0.1, 0.0, 1.0);
+}
+
 // The refracted lobe of a rough interface, seen from inside, is about w = sigma (1 - 1/eta) radians wide (a facet
 // tilt of sigma turns the refracted ray by that much less than it turns the normal). Where the lobe falls between
-// the ordinates the exit sums ripple across exit angles; measured against N = 192 (BSDF averaged over 15-degree
-// bins, both interfaces, eta 1.05-1.4, sigma 0.2-0.5): N w = 1.2 leaves 0.3-3%, N w = 1.6 0.2-0.5%, N w = 1.75
-// under 0.06%. So N >= 1.75 / w, which is 6.1/sigma at eta 1.4 and grows without bound as eta -> 1; at most 128
-// (0.15-0.4 s per solve on the 2-core VM): near-matched interfaces (eta < 1.07 at sigma 0.2) keep a ripple of
-// ~0.3% there.
+// the ordinates the exit sums ripple across exit angles. N >= c / w with c = 1.75 held every eta >= 1.2 of the
+// pointwise sweep (docs/accuracy.md) within 0.7%; a near-matched interface transmits nearly everything through that
+// lobe and its critical angle lies near grazing, so the ripple is not diluted: at eta 1.05, sigma 1 against N 192
+// (points, not bins) N w = 1.9 leaves 18%, 4.6 1.6% and 6.1 1.2% (0.5% with the finer tables of
+// lobe_table_size). So c rises linearly from 1.75 at eta 1.2 to 6 at eta 1.1 and below. N is at most 128 (0.15-2 s
+// per solve on the 2-core VM), so near-matched lobes narrower than 6/128 = 0.047 rad (eta 1.05 below sigma 1, eta
+// 1.1 below sigma 0.52) stay under-resolved: 1-5% pointwise at sigma 0.05-0.1, eta 1.05, where N 192 is no
+// converged reference either (N w = 0.9-1.8).
 int refracted_lobe_ordinates(const LayerGeometry& geometry) {
   const auto need = [](const RoughDielectric& interface) {
-    return ceil_to_int(std::min(1.75 / refracted_lobe_width(interface), 128.0));
+    const double c = 1.75 + (6.0 - 1.75) * near_matched(interface);
+    return ceil_to_int(std::min(c / refracted_lobe_width(interface), 128.0));
   };
   int result = 0;
   if (!geometry.top_open) result = need(geometry.top);
   if (geometry.base == LayerBase::Rough) result = std::max(result, need(geometry.bottom));
   return result;
+}
+
+// The tables' polar grid (LayerTables::grid_angle) is spaced h = (pi/2)^2 / (K - 1) radians at the normal and finer
+// towards grazing; Catmull-Rom between its nodes must follow the sharpest lobe the tables hold. The unscattered
+// transmission is exact outside them (core/unscattered_light.h); three sharp features stay in them:
+// - the unscattered light's reflection off a rough bottom (Beckmann sigma3, seen through the top about
+//   s = sigma3 eta wide), where it is not buried under scattered light: T^2 >= Omega (1 - T) / 4;
+// - single forward scattering (Henyey-Greenstein, half width 0.77 (1 - g) / sqrt(g) radians) of light that crossed
+//   the top's refracted lobe, widened by the exit's lobe, where the layer transmits (T >= 0.2);
+// - a near-matched interface's critical angle lies near grazing, where its refracted lobe (w) is stretched outside
+//   and cuts the scattered light sharply.
+// Measured pointwise against a 95-node grid (docs/accuracy.md): a bottom bounce errs 8.8% at h = 0.75 s (sigma3
+// 0.05, T 0.5, Omega 0) and 0.6% at 0.37 s, and 1.2% at 0.27 s where the bottom's critical angle cuts the lobe
+// (sigma3 0.1, eta3 1.2): h <= 0.22 s. A forward lobe of width w errs 2.6% at h = 0.64 w and 0.57% at 0.43 w:
+// h <= 0.4 w. At eta 1.05, sigma 1 (N 128) h = 1.1 w errs 1.2%, 0.73 w 0.5%: h <= 0.8 w, relaxed as eta
+// leaves 1.1 (near_matched). K is a multiple of 8 in [48, 96]; 48 (3 degrees at the normal) where none binds, the
+// default material included.
+int lobe_table_size(const Material& material, const LayerGeometry& geometry) {
+  constexpr double kQuarterPiSquared = 0.25 * kPi * kPi;
+  double spacing = kQuarterPiSquared / (kDefaultTableSize - 1);
+  const double transparency = material.transparency();
+  if (geometry.base == LayerBase::Rough &&
+      transparency * transparency > 0.25 * material.albedo * (1.0 - transparency)) {
+    const double top_eta = geometry.top_open ? 1.0 : geometry.top.eta;
+    spacing = std::min(spacing, 0.22 * geometry.bottom.sigma * top_eta);
+  }
+  if (geometry.base != LayerBase::Lambert && transparency >= 0.2 && material.g > 0.0) {
+    const double forward = 0.77 * (1.0 - material.g) / std::sqrt(material.g);
+    const double entry = geometry.top_open ? 0.0 : refracted_lobe_width(geometry.top);
+    const double exit = geometry.base == LayerBase::Rough ? refracted_lobe_width(geometry.bottom) : 0.0;
+    spacing = std::min(spacing, 0.4 * std::sqrt(forward * forward + entry * entry + exit * exit));
+  }
+  for (const RoughDielectric* interface :
+       {geometry.top_open ? nullptr : &geometry.top, geometry.base == LayerBase::Rough ? &geometry.bottom : nullptr}) {
+    if (interface && near_matched(*interface) > 0.0) {
+      spacing = std::min(spacing, 0.8 * refracted_lobe_width(*interface) / near_matched(*interface));
+    }
+  }
+  const int nodes = ceil_to_int(1.0 + kQuarterPiSquared / spacing - 1e-9);
+  return std::clamp((nodes + 7) / 8 * 8, kDefaultTableSize, 96);
 }
 
 }  // namespace
@@ -329,7 +379,10 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
       options.max_modes > 0
           ? options.max_modes
           : std::clamp(std::max({24, ceil_to_int(5.4 / forwardness) + 2, ceil_to_int(4.0 / sigma_min)}), 24, 128);
-  resolution.table_size = options.table_size > 0 ? options.table_size : kDefaultTableSize;
+  // The preview keeps the default grid: its lobes are smeared by its ordinates anyway.
+  resolution.table_size = options.table_size > 0 ? options.table_size
+                          : options.preview      ? kDefaultTableSize
+                                                 : lobe_table_size(material, geometry);
   // The interface operators are projected onto the mode cap rounded up to a multiple of 16 (Resolution).
   const auto interface_modes_for = [](int max_modes) { return max_modes == 1 ? 1 : (max_modes + 15) / 16 * 16; };
   resolution.interface_modes = interface_modes_for(resolution.max_modes);
@@ -351,7 +404,7 @@ bool preview_is_coarser(const Material& material) {
   const Resolution full = choose_resolution(material);
   const Resolution coarse = choose_resolution(material, preview);
   return coarse.ordinates < full.ordinates || coarse.max_modes < full.max_modes ||
-         coarse.interface_azimuths < full.interface_azimuths;
+         coarse.interface_azimuths < full.interface_azimuths || coarse.table_size < full.table_size;
 }
 
 namespace {
@@ -485,7 +538,11 @@ void check_albedos(std::span<const double> albedos) {
 
 std::vector<LayerTables> solve(const Material& material, std::span<const double> albedos, const SolveOptions& options) {
   check_albedos(albedos);
-  Resolution resolution = choose_resolution(material, options);
+  // The resolution serves every albedo: lobe_table_size judges the bottom's sharp reflection by the darkest one,
+  // under which it stands out most.
+  Material resolved = material;
+  if (!albedos.empty()) resolved.albedo = std::ranges::min(albedos);
+  Resolution resolution = choose_resolution(resolved, options);
   if (resolution.table_size < 4) {
     throw ParameterError("table_size = " + std::to_string(resolution.table_size) +
                          " is out of range; it must be at least 4");
@@ -496,7 +553,7 @@ std::vector<LayerTables> solve(const Material& material, std::span<const double>
   while (!result.converged && options.max_modes == 0 && !options.preview && resolution.max_modes < 256) {
     SolveOptions doubled = options;
     doubled.max_modes = 2 * resolution.max_modes;
-    resolution = choose_resolution(material, doubled);
+    resolution = choose_resolution(resolved, doubled);
     result = solve_tables(material, albedos, resolution, doubled);
   }
   return std::move(result.tables);

@@ -1,6 +1,6 @@
 // The sharp part of the layer's BSDF: light that crosses the slab without being scattered by the medium, through one
 // or two rough interfaces, evaluated exactly at the requested directions (as the surface term is) instead of on the
-// discrete ordinates and the 48-point tables, which cannot hold a lobe narrower than their spacing.
+// discrete ordinates and the tables (48-96 nodes), which cannot hold a lobe narrower than their spacing.
 //
 // With d the internal propagation direction (d.z < 0, travelling down), omega_i toward the light and omega_o toward
 // the viewer below (core/conventions.h; every vector here is in the layer's frame, +z up), and dA = |d.z| d omega_d

@@ -41,14 +41,16 @@ std::vector<double> judged_exit_angles(const Material& material, double theta_i)
 
 PointAccuracy point_accuracy(const Material& material, std::span<const double> incidence, const SolveOptions& options) {
   PointAccuracy result;
-  result.ordinates = choose_resolution(material).ordinates;
+  const Resolution resolution = choose_resolution(material, options);
+  result.ordinates = resolution.ordinates;
+  result.table_size = resolution.table_size;
   const auto start = std::chrono::steady_clock::now();
   const LayerTables automatic = solve(material, options);
   result.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   Material converged_material = material;
   converged_material.ordinates = std::max(kConvergedOrdinates, result.ordinates);
   SolveOptions converged_options = options;
-  converged_options.table_size = kConvergedTableSize;
+  converged_options.table_size = std::max(kConvergedTableSize, 2 * resolution.table_size - 1);
   const LayerTables converged = solve(converged_material, converged_options);
 
   std::vector<PointError> samples;

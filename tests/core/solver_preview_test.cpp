@@ -45,7 +45,31 @@ TEST(SolverPreview, IsCoarserOnlyWhereTheFullResolutionIsCostly) {
     EXPECT_LE(coarse.interface_azimuths, kPreviewResolution.interface_azimuths);
     EXPECT_GE(coarse.interface_azimuths, 2 * coarse.interface_modes + 1) << "the projection must resolve its modes";
     EXPECT_LE(coarse.ordinates, full.ordinates);
+    EXPECT_LE(coarse.table_size, full.table_size);
   }
+}
+
+// The tables' grid is finer only where a sharp lobe stays in them (lobe_table_size): the default material keeps 48
+// nodes, the preview always does.
+TEST(SolverPreview, TablesAreFinerOnlyForSharpLobesAndNeverInThePreview) {
+  EXPECT_EQ(choose_resolution(Material{}).table_size, 48);
+  Material rough_bottom_clear_layer;  // the bottom's reflection of unscattered light is broad at sigma 0.5
+  rough_bottom_clear_layer.tau = optical_depth_from_transparency(0.9);
+  rough_bottom_clear_layer.albedo = 0.0;
+  EXPECT_EQ(choose_resolution(rough_bottom_clear_layer).table_size, 48);
+  Material sharp_bottom = rough_bottom_clear_layer;
+  sharp_bottom.bottom.sigma = 0.1;
+  EXPECT_GT(choose_resolution(sharp_bottom).table_size, 48);
+  Material forward;  // a sharp top lets the forward lobe of g 0.9 through a clear layer unblurred
+  forward.g = 0.9;
+  forward.tau = optical_depth_from_transparency(0.5);
+  forward.sigma = 0.05;
+  forward.bottom = parse_bottom("matched");
+  EXPECT_GT(choose_resolution(forward).table_size, 48);
+  SolveOptions preview;
+  preview.preview = true;
+  EXPECT_EQ(choose_resolution(sharp_bottom, preview).table_size, 48);
+  EXPECT_TRUE(preview_is_coarser(sharp_bottom));
 }
 
 // The interface operators are matched to the accurate interface albedos at any N, so the preview's energy
