@@ -1,4 +1,4 @@
-// The GLSL files of shaders/, embedded at build time (shaders/embed_shaders.cmake). Names are file names, e.g.
+// The GLSL files of shaders/, embedded at build time (shaders/embed_text.cmake). Names are file names, e.g.
 // "sphere.frag". Throws std::invalid_argument for an unknown name.
 #pragma once
 
