@@ -16,7 +16,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 readonly packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev libglm-dev libglfw3-dev libosmesa6-dev libimgui-dev libstb-dev
-  libgtest-dev libbenchmark-dev xvfb xauth fonts-dejavu-core
+  nlohmann-json3-dev libpng-dev
+  libgtest-dev libbenchmark-dev xvfb xauth fonts-dejavu-core python3-jsonschema
 )
 readonly build_dir=build
 readonly sanitize_dir=build-sanitize

@@ -10,6 +10,7 @@
 #include "app/cli/eval_command.h"
 #include "app/cli/figures_command.h"
 #include "app/cli/help_command.h"
+#include "app/cli/material_command.h"
 #include "app/cli/previewer_launcher.h"
 #include "app/cli/quoted.h"
 #include "app/cli/render_command.h"
@@ -26,6 +27,8 @@ int dispatch(std::span<const std::string_view> arguments, int argc, char** argv)
   if (command == "eval") return run_eval_command(rest, std::cin, std::cout);
   if (command == "albedo") return run_albedo_command(rest, std::cout);
   if (command == "render") return run_render_command(rest, std::cout);
+  if (command == "material") return run_material_command(rest, std::cout);
+  if (command == "presets") return run_presets_command(rest, std::cout);
   if (command == "figures") return run_figures_command(rest, std::cout);
   if (command == "validate") return run_validate_command(rest, std::cout);
   if (command == "help" || command == "--help" || command == "-h") return run_help_command(rest, std::cout);
@@ -42,5 +45,5 @@ int main(int argc, char** argv) {
   skinlayer::retain_freed_heap_memory();
   const std::vector<std::string_view> arguments(argv + 1, argv + argc);
   return skinlayer::cli::run_reporting_errors(std::cerr,
-                                             [&arguments, argc, argv] { return dispatch(arguments, argc, argv); });
+                                              [&arguments, argc, argv] { return dispatch(arguments, argc, argv); });
 }

@@ -2,6 +2,10 @@
 # every library comes from its Debian package (installed by ../setup.sh). Included from the top-level
 # CMakeLists.txt so that the imported targets are visible everywhere.
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+# Material files (app/material): JSON through nlohmann-json (nlohmann-json3-dev); pictures that carry their
+# material as PNG text chunks through libpng (libpng-dev).
+find_package(nlohmann_json 3.11 REQUIRED)
+find_package(PNG REQUIRED)
 
 # Previewer and headless rendering (see ../shared/docs/platform-notes.md): not looked for without the app.
 if(NOT SKINLAYER_BUILD_APP)

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "app/cli/errors.h"
+#include "app/material/material_document.h"
 #include "core/material.h"
 
 namespace skinlayer::cli {
@@ -30,6 +31,8 @@ int run_reporting_errors(std::ostream& err, const std::function<int()>& command)
   } catch (const ParameterError& error) {
     return report(err, error.what(), kExitUsage);
   } catch (const UsageError& error) {
+    return report(err, error.what(), kExitUsage);
+  } catch (const MaterialFileError& error) {
     return report(err, error.what(), kExitUsage);
   } catch (const InputError& error) {
     return report(err, error.what(), kExitFailure);

@@ -4,6 +4,7 @@
 #include "app/cli/errors.h"
 #include "app/cli/eval_command.h"
 #include "app/cli/figures_command.h"
+#include "app/cli/material_command.h"
 #include "app/cli/quoted.h"
 #include "app/cli/render_command.h"
 #include "app/cli/validate_command.h"
@@ -20,6 +21,10 @@ std::string overview_usage() {
          "      reflectance, transmittance and absorptance for light from each incidence angle.\n"
          "  skinlayer render [material flags] [--albedo A | r,g,b] [view flags] -o FILE.png\n"
          "      the previewer's sphere and polar lobes, rendered offscreen (no display needed) to a PNG.\n"
+         "  skinlayer material [material flags] [--name N] [--description D] [-o FILE.json]\n"
+         "      the complete material as a material file, which --material FILE reads back (every command).\n"
+         "  skinlayer presets\n"
+         "      the named presets (--preset NAME): the paper's settings, skin, leaf, paper, wax, jade, paint.\n"
          "  skinlayer figures -o DIR [--size PX]\n"
          "      the results figures (lobe plots and model spheres): a PNG and a CSV each, and index.html.\n"
          "  skinlayer validate [--quick] [-o DIR]\n"
@@ -48,13 +53,17 @@ int run_help_command(std::span<const std::string_view> arguments, std::ostream& 
     out << albedo_usage();
   } else if (command == "render") {
     out << render_usage();
+  } else if (command == "material") {
+    out << material_usage();
+  } else if (command == "presets") {
+    out << presets_usage();
   } else if (command == "figures") {
     out << figures_usage();
   } else if (command == "validate") {
     out << validate_usage();
   } else {
     throw UsageError("unknown command " + quoted(command) +
-                     "; the commands are eval, albedo, render, figures and validate");
+                     "; the commands are eval, albedo, render, material, presets, figures and validate");
   }
   return kExitSuccess;
 }

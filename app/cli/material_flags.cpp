@@ -2,12 +2,15 @@
 
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <optional>
+#include <vector>
 
 #include "app/cli/errors.h"
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/material/exact_transparency.h"
+#include "app/material/material_file.h"
+#include "app/material/presets.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -19,6 +22,7 @@ constexpr std::string_view kLambertParameter = "lambert";
 constexpr std::array<std::string_view, 10> kMaterialFlags = {
     "sigma", "eta", "T", "tau", "albedo", "g", "bottom", "bottom-sigma", "bottom-eta", "ordinates",
 };
+constexpr std::array<std::string_view, 2> kSourceFlags = {"material", "preset"};
 
 std::string range_text(const ParameterInfo& info) {
   std::string text = "[";
@@ -87,50 +91,100 @@ std::string usage_entry(const ParameterInfo& info) {
 
 std::span<const std::string_view> material_flag_names() { return kMaterialFlags; }
 
+std::span<const std::string_view> material_source_flag_names() { return kSourceFlags; }
+
 std::vector<std::string_view> material_flags_and(std::initializer_list<std::string_view> own_flags) {
   std::vector<std::string_view> flags(kMaterialFlags.begin(), kMaterialFlags.end());
+  flags.insert(flags.end(), kSourceFlags.begin(), kSourceFlags.end());
   flags.insert(flags.end(), own_flags);
   return flags;
 }
 
-Material material_from_flags(const ParsedFlags& flags) {
-  Material material;
+std::array<double, 3> albedo_rgb_from_text(std::string_view text) {
+  std::array<double, 3> rgb{};
+  std::vector<std::string_view> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    parts.push_back(text.substr(start, comma - start));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  if (parts.size() != 1 && parts.size() != 3) {
+    throw UsageError("albedo = " + quoted(text) + " must be one number or three (r,g,b), each in [0, 1]");
+  }
+  for (std::size_t c = 0; c < 3; ++c) {
+    const std::string_view part = parts[parts.size() == 1 ? 0 : c];
+    const std::optional<double> value = parse_number(part);
+    if (!value) throw UsageError("albedo = " + quoted(text) + ": " + quoted(part) + " " + number_rejection(part));
+    check_parameter(parameter_info("albedo"), *value);
+    rgb[c] = *value;
+  }
+  return rgb;
+}
+
+MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFlag albedo_flag) {
+  if (flags.has("material") && flags.has("preset")) {
+    throw UsageError("flags --material and --preset both name the material; give only one");
+  }
   if (flags.has("T") && flags.has("tau")) {
     throw UsageError("flags --T and --tau both set the optical depth; give only one");
   }
+  MaterialDocument document;
+  std::string origin;  // where the bottom came from, for the error below
+  if (const auto path = flags.value("material")) {
+    if (path->empty()) throw UsageError("material needs a file name, as in --material skin.json");
+    document = read_material_file(std::string(*path));
+    origin = " (from " + std::string(*path) + ")";
+  } else if (const auto name = flags.value("preset")) {
+    document = preset_material(*name);
+    origin = " (from preset " + std::string(*name) + ")";
+  }
+  Material& material = document.layer;
   if (const auto value = checked_number(flags, "sigma")) material.sigma = *value;
   if (const auto value = checked_number(flags, "eta")) material.eta = *value;
   if (const auto value = checked_number(flags, "T")) material.tau = optical_depth_from_transparency(*value);
   if (const auto value = checked_number(flags, "tau")) material.tau = *value;
-  if (const auto value = checked_number(flags, "albedo")) material.albedo = *value;
+  if (albedo_flag == AlbedoFlag::GreyOrRgb) {
+    if (const auto text = flags.value("albedo")) document.albedo_rgb = albedo_rgb_from_text(*text);
+  } else if (const auto value = checked_number(flags, "albedo")) {
+    document.albedo_rgb = {*value, *value, *value};
+  }
+  material.albedo = document.albedo_rgb[0];
   if (const auto value = checked_number(flags, "g")) material.g = *value;
-  if (const auto text = flags.value("bottom")) material.bottom = parse_bottom(*text);
+  if (const auto text = flags.value("bottom")) {
+    material.bottom = parse_bottom(*text);
+    origin.clear();
+  }
   for (const std::string_view bottom_flag : {"bottom-sigma", "bottom-eta"}) {
     if (flags.has(bottom_flag) && material.bottom.kind != BottomKind::Air) {
       throw UsageError("flag --" + std::string(bottom_flag) + " applies only to --bottom air, not --bottom " +
-                       format_bottom(material.bottom));
+                       format_bottom(material.bottom) + origin);
     }
   }
   if (const auto value = checked_number(flags, "bottom-sigma")) material.bottom.sigma = *value;
   if (const auto value = checked_number(flags, "bottom-eta")) material.bottom.eta = *value;
-  material.ordinates = checked_ordinates(flags);
+  if (const std::optional<int> ordinates = checked_ordinates(flags)) material.ordinates = ordinates;
   validate(material);
-  return material;
+  return document;
+}
+
+Material material_from_flags(const ParsedFlags& flags) { return single_channel(material_document_from_flags(flags)); }
+
+Material single_channel(const MaterialDocument& document) {
+  if (!document.grey()) {
+    throw UsageError("the material's albedo is RGB (" + format_shortest(document.albedo_rgb[0]) + ", " +
+                     format_shortest(document.albedo_rgb[1]) + ", " + format_shortest(document.albedo_rgb[2]) +
+                     ") and this command solves one channel; give --albedo A");
+  }
+  return document.layer;
 }
 
 std::string material_to_flags(const Material& material) {
   std::string text = "--sigma " + format_shortest(material.sigma) + " --eta " + format_shortest(material.eta);
   // T with the fewest digits that give back the same tau (0.1, not exp(-(-ln 0.1)) = 0.10000000000000002).
-  std::string depth = " --tau " + format_shortest(material.tau);
-  for (int digits = 1; digits <= 17; ++digits) {
-    char text_t[40];
-    std::snprintf(text_t, sizeof text_t, "%.*g", digits, material.transparency());
-    const std::optional<double> read_back = parse_number(text_t);
-    if (read_back && optical_depth_from_transparency(*read_back) == material.tau) {
-      depth = " --T " + std::string(text_t);
-      break;
-    }
-  }
+  const std::optional<double> transparency = exact_transparency(material.tau);
+  const std::string depth =
+      transparency ? " --T " + format_shortest(*transparency) : " --tau " + format_shortest(material.tau);
   text += depth;
   text += " --albedo " + format_shortest(material.albedo) + " --g " + format_shortest(material.g) + " --bottom " +
           format_bottom(material.bottom);
@@ -141,7 +195,13 @@ std::string material_to_flags(const Material& material) {
 }
 
 std::string material_flags_usage() {
-  std::string text = "Material flags (--name value or --name=value; an omitted flag takes its default):\n";
+  std::string text =
+      "Material flags (--name value or --name=value; an omitted flag takes its default, or the file's):\n"
+      "  --material FILE\n"
+      "      start from a material file (JSON; see `skinlayer material`) or a PNG that skinlayer wrote (its\n"
+      "      material is stored in it); the flags below, given next to it, override its values.\n"
+      "  --preset NAME\n"
+      "      start from a named preset (`skinlayer presets` lists them); not together with --material.\n";
   for (const ParameterInfo& info : parameter_table()) {
     // --bottom (the table's "lambert" row) is listed before the flags that qualify it.
     if (info.flag == kLambertParameter) continue;

@@ -10,7 +10,8 @@ namespace skinlayer::cli {
 
 inline constexpr std::string_view kModelFlag = "model";
 
-// Throws UsageError naming the flag and its choices for an unknown model.
-SubsurfaceModel model_from_flags(const ParsedFlags& flags);
+// --model's value, else `fallback` (a material file's model, or stam). Throws UsageError naming the flag and its
+// choices for an unknown model.
+SubsurfaceModel model_from_flags(const ParsedFlags& flags, SubsurfaceModel fallback = SubsurfaceModel::Stam);
 
 }  // namespace skinlayer::cli

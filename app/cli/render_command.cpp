@@ -1,5 +1,6 @@
 #include "app/cli/render_command.h"
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/gl/osmesa_context.h"
+#include "app/material/picture_metadata.h"
 #include "app/process/parallel_for.h"
 #include "app/render/material_solve.h"
 #include "app/render/png_export.h"
@@ -34,29 +36,6 @@ double number_in(const ParsedFlags& flags, std::string_view name, double fallbac
                      format_short(low) + ", " + format_short(high) + "]" + std::string(unit));
   }
   return *value;
-}
-
-// "A" or "r,g,b", each a single-scattering albedo in [0, 1] (core's range check names the parameter).
-std::array<double, 3> parse_albedo(std::string_view text) {
-  std::array<double, 3> rgb{};
-  std::vector<std::string_view> parts;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = text.find(',', start);
-    parts.push_back(text.substr(start, comma - start));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
-  if (parts.size() != 1 && parts.size() != 3) {
-    throw UsageError("albedo = " + quoted(text) + " must be one number or three (r,g,b), each in [0, 1]");
-  }
-  for (std::size_t c = 0; c < 3; ++c) {
-    const std::string_view part = parts[parts.size() == 1 ? 0 : c];
-    const std::optional<double> value = parse_number(part);
-    if (!value) throw UsageError("albedo = " + quoted(text) + ": " + quoted(part) + " " + number_rejection(part));
-    check_parameter(parameter_info("albedo"), *value);
-    rgb[c] = *value;
-  }
-  return rgb;
 }
 
 std::pair<int, int> parse_size(std::string_view text) {
@@ -101,31 +80,12 @@ std::string render_usage() {
 }
 
 int run_render_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  // An "--albedo r,g,b" is read here; the material parser is given its red channel (parse_albedo has validated all
-  // three).
-  std::array<double, 3> albedo_rgb = {1.0, 1.0, 1.0};
-  std::string red;
-  std::vector<std::string_view> rewritten;
-  for (std::size_t k = 0; k < arguments.size(); ++k) {
-    const std::string_view argument = arguments[k];
-    std::optional<std::string_view> albedo_text;
-    if (argument == "--albedo" && k + 1 < arguments.size()) {
-      albedo_text = arguments[++k];
-    } else if (argument.starts_with("--albedo=")) {
-      albedo_text = argument.substr(std::string_view("--albedo=").size());
-    }
-    if (albedo_text) {
-      albedo_rgb = parse_albedo(*albedo_text);
-      red = format_number(albedo_rgb[0]);
-      rewritten.insert(rewritten.end(), {"--albedo", red});
-    } else {
-      rewritten.push_back(argument);
-    }
-  }
   const std::vector<std::string_view> known =
       material_flags_and({kModelFlag, "light-theta", "light-phi", "view", "size", "exposure", "scale", "output"});
-  const ParsedFlags flags = ParsedFlags::parse(rewritten, known, "skinlayer render");
-  ColorMaterial material{material_from_flags(flags), albedo_rgb, model_from_flags(flags)};
+  const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer render");
+  const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  ColorMaterial material{document.layer, document.albedo_rgb,
+                         model_from_flags(flags, document.model.value_or(SubsurfaceModel::Stam))};
   const std::optional<std::string_view> output = flags.value("output");
   if (!output) throw UsageError("render needs -o FILE.png (the picture to write)");
   const ViewKind view = parse_view(flags.value("view").value_or("both"));
@@ -159,7 +119,16 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
   target.bind();
   draw_scene(renderer, scene, width, height);
   RenderTarget::unbind();
-  write_png(Image{width, height, target.read_rgba8()}, std::string(*output));
+  MaterialDocument drawn = document;
+  drawn.model = material.model;
+  const nlohmann::ordered_json settings = {{"command", "render"},
+                                           {"view", std::string(flags.value("view").value_or("both"))},
+                                           {"size", {width, height}},
+                                           {"light_theta", radians_to_degrees(light_theta)},
+                                           {"light_phi", radians_to_degrees(light_phi)},
+                                           {"exposure", exposure},
+                                           {"scale", std::string(scale)}};
+  write_png(Image{width, height, target.read_rgba8()}, std::string(*output), {picture_metadata(drawn, settings)});
   out << "wrote " << *output << " (" << width << "x" << height << ")\n";
   return kExitSuccess;
 }

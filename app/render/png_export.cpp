@@ -1,25 +1,25 @@
 #include "app/render/png_export.h"
 
-#include <stb_image_write.h>  // libstb.so holds the implementation: do not define STB_IMAGE_WRITE_IMPLEMENTATION
-
-#include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <ctime>
 #include <stdexcept>
 
+#include "app/material/atomic_file.h"
+
 namespace skinlayer {
 
-void write_png(const Image& image, const std::string& path) {
+void write_png(const Image& image, const std::string& path, const std::vector<PngText>& texts) {
   if (image.width < 1 || image.height < 1 ||
       image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4) {
     throw std::runtime_error("cannot write " + path + ": the image is empty");
   }
-  errno = 0;
-  if (stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4) == 0) {
-    const std::string reason = errno != 0 ? std::strerror(errno) : "write failed";
-    throw std::runtime_error("cannot write " + path + ": " + reason);
+  std::string bytes;
+  try {
+    bytes = encode_png_rgba8(image.width, image.height, image.rgba, texts);
+  } catch (const std::runtime_error& error) {
+    throw std::runtime_error("cannot write " + path + ": " + error.what());
   }
+  write_file_atomically(path, bytes);
 }
 
 std::string timestamped_png_name() {

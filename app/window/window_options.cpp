@@ -18,11 +18,11 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
   }
   const cli::ParsedFlags flags =
       cli::ParsedFlags::parse(arguments, cli::material_flags_and({"capture", "view", cli::kModelFlag}), "skinlayer");
-  options.material.layer = cli::material_from_flags(flags);
+  const MaterialDocument document = cli::material_document_from_flags(flags, cli::AlbedoFlag::GreyOrRgb);
+  options.material.layer = document.layer;
   if (options.material.layer.ordinates) choose_resolution(options.material.layer);  // checks the material's minimum
-  const double albedo = options.material.layer.albedo;
-  options.material.albedo_rgb = {albedo, albedo, albedo};
-  options.material.model = cli::model_from_flags(flags);
+  options.material.albedo_rgb = document.albedo_rgb;
+  options.material.model = cli::model_from_flags(flags, document.model.value_or(SubsurfaceModel::Stam));
   if (const std::optional<std::string_view> view = flags.value("view")) {
     const std::optional<ViewKind> kind = parse_view_kind(*view);
     if (!kind) throw cli::UsageError("view = '" + std::string(*view) + "' is not one of sphere, polar, both, compare");

@@ -50,12 +50,13 @@ TEST(MaterialToFlags, ReadsBackToTheSameMaterial) {
   materials[6].ordinates = 48;
   materials[7].bottom.sigma = 0.2;
   materials[7].bottom.eta = 1.2;
-  materials[7].tau = 1.0 / 3.0;  // no short T reads back: --tau
+  materials[7].tau = 0.1;  // no T reads back to exactly this depth: --tau
   for (const Material& material : materials) {
     const std::string flags = material_to_flags(material);
     expect_same(read_back(flags), material, flags);
   }
   EXPECT_NE(material_to_flags(materials[1]).find("--T 0.1 "), std::string::npos) << material_to_flags(materials[1]);
+  EXPECT_NE(material_to_flags(materials[7]).find("--tau 0.1 "), std::string::npos) << material_to_flags(materials[7]);
 }
 
 }  // namespace

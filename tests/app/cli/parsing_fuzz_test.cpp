@@ -970,7 +970,10 @@ bool check_model(const ParsedFlags& flags, const std::vector<std::string>& argum
 TEST(ParsingFuzz, MaterialAndModelFlagsRandomArguments) {
   Random random(0x5eed0007);
   const std::vector<std::string> extremes = extreme_numbers();
-  const std::vector<std::string_view> known = material_flags_and({kModelFlag});
+  // The parameter flags and --model; --material and --preset read files and presets, fuzzed by
+  // MaterialJsonRandomDocuments below.
+  std::vector<std::string_view> known(material_flag_names().begin(), material_flag_names().end());
+  known.push_back(kModelFlag);
   std::vector<std::string> names(known.begin(), known.end());
   names.insert(names.end(), {"sigmaa", "Sigma", "", "output", "help"});
   int failures = 0, materials = 0;

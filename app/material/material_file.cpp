@@ -1,0 +1,28 @@
+#include "app/material/material_file.h"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+
+#include "app/material/atomic_file.h"
+#include "app/material/material_json.h"
+#include "app/material/picture_metadata.h"
+#include "app/material/png_codec.h"
+
+namespace skinlayer {
+
+MaterialDocument read_material_file(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw MaterialFileError("cannot read " + path + ": " + std::strerror(errno));
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (file.bad()) throw MaterialFileError("cannot read " + path + ": " + std::strerror(errno));
+  if (is_png(bytes)) return material_from_picture(bytes, path);
+  return read_material_json(bytes, path);
+}
+
+void write_material_file(const MaterialDocument& document, const std::string& path) {
+  write_file_atomically(path, material_json_text(document));
+}
+
+}  // namespace skinlayer

@@ -1,0 +1,283 @@
+#include "app/material/material_json.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "app/material/exact_transparency.h"
+
+namespace skinlayer {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+std::string type_name(const Json& value) {
+  if (value.is_number()) return "a number";
+  if (value.is_string()) return "a string";
+  if (value.is_boolean()) return "a boolean";
+  if (value.is_array()) return "a list";
+  if (value.is_object()) return "an object";
+  return "null";
+}
+
+std::string joined(std::initializer_list<std::string_view> names) {
+  std::string text;
+  for (const std::string_view name : names) text.append(text.empty() ? "" : ", ").append(name);
+  return text;
+}
+
+std::string range_of(const ParameterInfo& info) {
+  char text[96];
+  std::snprintf(text, sizeof text, "[%.10g, %.10g]", info.min, info.max);
+  return text;
+}
+
+// Reads one document, naming the file and the key path ("layers[0].g") in every error.
+class DocumentReader {
+ public:
+  explicit DocumentReader(std::string_view source) : source_(source) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
+    throw MaterialFileError(source_ + ": key \"" + path + "\" " + what);
+  }
+
+  void only_keys(const Json& object, const std::string& path, std::initializer_list<std::string_view> valid) const {
+    for (const auto& [key, value] : object.items()) {
+      if (std::find(valid.begin(), valid.end(), key) == valid.end()) {
+        throw MaterialFileError(source_ + ": unknown key \"" + join(path, key) + "\"; valid keys " +
+                                (path.empty() ? "at the top level" : "in \"" + path + "\"") + ": " + joined(valid));
+      }
+    }
+  }
+
+  const Json& required(const Json& object, const std::string& path, std::string_view key, std::string_view what) const {
+    const auto found = object.find(key);
+    if (found == object.end()) fail(join(path, key), "is missing (" + std::string(what) + ")");
+    return *found;
+  }
+
+  const Json& object(const Json& value, const std::string& path) const {
+    if (!value.is_object()) fail(path, "must be an object, not " + type_name(value));
+    return value;
+  }
+
+  std::string text(const Json& value, const std::string& path) const {
+    if (!value.is_string()) fail(path, "must be a string, not " + type_name(value));
+    return value.get<std::string>();
+  }
+
+  // A number checked against its row of core's parameter table.
+  double parameter(const Json& value, const std::string& path, std::string_view flag) const {
+    const ParameterInfo& info = parameter_info(flag);
+    if (!value.is_number()) {
+      fail(path, "must be a number in " + range_of(info) + " (" + std::string(info.description) + "), not " +
+                     type_name(value));
+    }
+    const double number = value.get<double>();
+    try {
+      check_parameter(info, number);
+    } catch (const ParameterError& error) {
+      fail(path, "is out of range: " + std::string(error.what()));
+    }
+    return number;
+  }
+
+  double required_parameter(const Json& object, const std::string& path, std::string_view key,
+                            std::string_view flag) const {
+    const ParameterInfo& info = parameter_info(flag);
+    return parameter(required(object, path, key, std::string(info.description) + ", a number in " + range_of(info)),
+                     join(path, key), flag);
+  }
+
+  static std::string join(const std::string& path, std::string_view key) {
+    return path.empty() ? std::string(key) : path + "." + std::string(key);
+  }
+
+ private:
+  std::string source_;
+};
+
+Json albedo_json(const MaterialDocument& document) {
+  if (document.grey()) return document.albedo_rgb[0];
+  return Json::array({document.albedo_rgb[0], document.albedo_rgb[1], document.albedo_rgb[2]});
+}
+
+void read_layer(const DocumentReader& reader, const Json& layer, const std::string& path, MaterialDocument& document) {
+  reader.object(layer, path);
+  reader.only_keys(layer, path, {"T", "tau", "albedo", "g"});
+  const bool has_t = layer.contains("T"), has_tau = layer.contains("tau");
+  if (has_t && has_tau) reader.fail(path, "gives both \"T\" and \"tau\"; give one (T = exp(-tau))");
+  if (!has_t && !has_tau) {
+    reader.fail(path + ".T", "is missing (transparency T in [0, 1], or \"tau\": optical depth, a number or \"inf\")");
+  }
+  if (has_t) {
+    document.layer.tau = optical_depth_from_transparency(reader.parameter(layer["T"], path + ".T", "T"));
+  } else if (layer["tau"].is_string() && layer["tau"].get<std::string>() == "inf") {
+    document.layer.tau = INFINITY;
+  } else {
+    if (layer["tau"].is_string())
+      reader.fail(path + ".tau", "must be a number or \"inf\", not \"" + layer["tau"].get<std::string>() + "\"");
+    document.layer.tau = reader.parameter(layer["tau"], path + ".tau", "tau");
+  }
+  const Json& albedo = reader.required(layer, path, "albedo", "single-scattering albedo: a number or [r, g, b]");
+  if (albedo.is_array()) {
+    if (albedo.size() != 3)
+      reader.fail(path + ".albedo", "must hold 3 numbers [r, g, b], not " + std::to_string(albedo.size()));
+    for (std::size_t c = 0; c < 3; ++c) {
+      document.albedo_rgb[c] = reader.parameter(albedo[c], path + ".albedo[" + std::to_string(c) + "]", "albedo");
+    }
+  } else {
+    const double grey = reader.parameter(albedo, path + ".albedo", "albedo");
+    document.albedo_rgb = {grey, grey, grey};
+  }
+  document.layer.albedo = document.albedo_rgb[0];
+  document.layer.g = reader.required_parameter(layer, path, "g", "g");
+}
+
+void read_bottom(const DocumentReader& reader, const Json& bottom, MaterialDocument& document) {
+  reader.object(bottom, "bottom");
+  const std::string type =
+      reader.text(reader.required(bottom, "bottom", "type", "air, matched or lambert"), "bottom.type");
+  if (type == "air") {
+    reader.only_keys(bottom, "bottom", {"type", "sigma", "eta"});
+    document.layer.bottom = Bottom{};
+    if (bottom.contains("sigma")) {
+      document.layer.bottom.sigma = reader.parameter(bottom["sigma"], "bottom.sigma", "bottom-sigma");
+    }
+    if (bottom.contains("eta")) document.layer.bottom.eta = reader.parameter(bottom["eta"], "bottom.eta", "bottom-eta");
+  } else if (type == "matched") {
+    reader.only_keys(bottom, "bottom", {"type"});
+    document.layer.bottom = Bottom{BottomKind::Matched, std::nullopt, std::nullopt, 0.0};
+  } else if (type == "lambert") {
+    reader.only_keys(bottom, "bottom", {"type", "albedo"});
+    const double albedo = reader.required_parameter(bottom, "bottom", "albedo", "lambert");
+    document.layer.bottom = Bottom{BottomKind::Lambert, std::nullopt, std::nullopt, albedo};
+  } else {
+    reader.fail("bottom.type", "is \"" + type + "\", not one of air, matched, lambert");
+  }
+}
+
+}  // namespace
+
+Json material_json(const MaterialDocument& document) {
+  Json json;
+  json["format"] = kMaterialFormat;
+  json["version"] = kMaterialVersion;
+  if (!document.name.empty()) json["name"] = document.name;
+  if (!document.description.empty()) json["description"] = document.description;
+  const Material& m = document.layer;
+  json["top"] = {{"sigma", m.sigma}, {"eta", m.eta}};
+  Json layer = Json::object();
+  if (const std::optional<double> transparency = exact_transparency(m.tau)) {
+    layer["T"] = *transparency;
+  } else {
+    layer["tau"] = m.tau;
+  }
+  layer["albedo"] = albedo_json(document);
+  layer["g"] = m.g;
+  json["layers"] = Json::array({layer});
+  switch (m.bottom.kind) {
+    case BottomKind::Air:
+      json["bottom"] = {{"type", "air"}, {"sigma", m.bottom_sigma()}, {"eta", m.bottom_eta()}};
+      break;
+    case BottomKind::Matched:
+      json["bottom"] = {{"type", "matched"}};
+      break;
+    case BottomKind::Lambert:
+      json["bottom"] = {{"type", "lambert"}, {"albedo", m.bottom.lambert_albedo}};
+      break;
+  }
+  if (m.ordinates) json["ordinates"] = *m.ordinates;
+  if (document.model) json["model"] = subsurface_model_name(*document.model);
+  return json;
+}
+
+std::string material_json_text(const MaterialDocument& document) { return material_json(document).dump(2) + "\n"; }
+
+MaterialDocument read_material_json(std::string_view text, std::string_view source) {
+  Json json;
+  try {
+    json = Json::parse(text.begin(), text.end());
+  } catch (const Json::parse_error& error) {
+    // error.byte is the 1-based offset of the last byte read; line and column are counted here.
+    const std::size_t end = std::min(error.byte == 0 ? 0 : error.byte - 1, text.size());
+    const std::size_t line = 1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + end, '\n'));
+    const std::size_t line_start = text.rfind('\n', end == 0 ? 0 : end - 1);
+    const std::size_t column = line_start == std::string_view::npos || end == 0 ? end + 1 : end - line_start;
+    std::string reason = error.what();
+    const std::size_t colon = reason.find(": ", reason.find("parse error"));
+    if (colon != std::string::npos) reason = reason.substr(colon + 2);
+    throw MaterialFileError(std::string(source) + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                            ": not valid JSON: " + reason);
+  }
+  return material_from_json(json, source);
+}
+
+MaterialDocument material_from_json(const Json& json, std::string_view source) {
+  const DocumentReader reader(source);
+  if (!json.is_object()) {
+    throw MaterialFileError(std::string(source) + ": not a skinlayer material file (a JSON object with \"format\": \"" +
+                            std::string(kMaterialFormat) + "\")");
+  }
+  const auto format = json.find("format");
+  if (format == json.end() || !format->is_string() || format->get<std::string>() != kMaterialFormat) {
+    throw MaterialFileError(std::string(source) + ": not a skinlayer material file (key \"format\" must be \"" +
+                            std::string(kMaterialFormat) + "\")");
+  }
+  const Json& version =
+      reader.required(json, "", "version", "the format's version, " + std::to_string(kMaterialVersion));
+  if (!version.is_number_integer() && !version.is_number_unsigned()) {
+    reader.fail("version", "must be a whole number, not " + type_name(version));
+  }
+  if (version.get<long long>() > kMaterialVersion) {
+    throw MaterialFileError(std::string(source) + ": version " + std::to_string(version.get<long long>()) +
+                            " is newer than this build of skinlayer reads (" + std::to_string(kMaterialVersion) + ")");
+  }
+  if (version.get<long long>() < 1)
+    reader.fail("version", "must be 1, not " + std::to_string(version.get<long long>()));
+  reader.only_keys(json, "",
+                   {"format", "version", "name", "description", "top", "layers", "bottom", "ordinates", "model"});
+
+  MaterialDocument document;
+  if (json.contains("name")) document.name = reader.text(json["name"], "name");
+  if (json.contains("description")) document.description = reader.text(json["description"], "description");
+
+  const Json& top = reader.object(reader.required(json, "", "top", "the top interface: {\"sigma\", \"eta\"}"), "top");
+  reader.only_keys(top, "top", {"sigma", "eta"});
+  document.layer.sigma = reader.required_parameter(top, "top", "sigma", "sigma");
+  document.layer.eta = reader.required_parameter(top, "top", "eta", "eta");
+
+  const Json& layers =
+      reader.required(json, "", "layers", "a list of layers, each {\"T\" or \"tau\", \"albedo\", \"g\"}");
+  if (!layers.is_array()) reader.fail("layers", "must be a list of layers, not " + type_name(layers));
+  if (layers.size() != 1) {
+    reader.fail("layers", "holds " + std::to_string(layers.size()) +
+                              " layers; this build solves exactly one (stacked layers are not yet supported)");
+  }
+  read_layer(reader, layers[0], "layers[0]", document);
+
+  read_bottom(reader, reader.required(json, "", "bottom", "{\"type\": \"air\" | \"matched\" | \"lambert\", ...}"),
+              document);
+
+  if (json.contains("ordinates")) {
+    const double ordinates = reader.parameter(json["ordinates"], "ordinates", "ordinates");
+    if (ordinates != std::floor(ordinates)) reader.fail("ordinates", "must be a whole number");
+    document.layer.ordinates = static_cast<int>(ordinates);
+  }
+  if (json.contains("model")) {
+    const std::string name = reader.text(json["model"], "model");
+    document.model = parse_subsurface_model(name);
+    if (!document.model) reader.fail("model", "is \"" + name + "\", not one of stam, lambert, hk");
+  }
+  try {
+    validate(document.layer);
+  } catch (const ParameterError& error) {
+    throw MaterialFileError(std::string(source) + ": " + error.what());
+  }
+  return document;
+}
+
+}  // namespace skinlayer

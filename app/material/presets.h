@@ -1,0 +1,24 @@
+// The named presets: the material files of app/presets/, embedded at build time (shaders/embed_text.cmake), each
+// with its name (the file's, without .json) and a one-line description.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/material/material_document.h"
+
+namespace skinlayer {
+
+struct PresetInfo {
+  std::string name;
+  std::string description;
+};
+
+// Every preset, in name order.
+std::vector<PresetInfo> preset_list();
+
+// The preset's material. Throws MaterialFileError for an unknown name, listing the known ones.
+MaterialDocument preset_material(std::string_view name);
+
+}  // namespace skinlayer

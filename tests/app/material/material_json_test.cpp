@@ -1,0 +1,154 @@
+// Material files (app/material/material_json.h): what `material` writes reads back bit for bit, and every way a
+// file can be wrong gets one line that names the file and the key (or line:column).
+#include "app/material/material_json.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/material.h"
+
+namespace skinlayer {
+namespace {
+
+void expect_same(const MaterialDocument& a, const MaterialDocument& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.description, b.description);
+  EXPECT_EQ(a.layer.sigma, b.layer.sigma);
+  EXPECT_EQ(a.layer.eta, b.layer.eta);
+  EXPECT_EQ(a.layer.tau, b.layer.tau);
+  EXPECT_EQ(a.layer.albedo, b.layer.albedo);
+  EXPECT_EQ(a.layer.g, b.layer.g);
+  EXPECT_EQ(a.layer.bottom.kind, b.layer.bottom.kind);
+  EXPECT_EQ(a.layer.bottom_sigma(), b.layer.bottom_sigma());
+  EXPECT_EQ(a.layer.bottom_eta(), b.layer.bottom_eta());
+  EXPECT_EQ(a.layer.bottom.lambert_albedo, b.layer.bottom.lambert_albedo);
+  EXPECT_EQ(a.layer.ordinates, b.layer.ordinates);
+  EXPECT_EQ(a.albedo_rgb, b.albedo_rgb);
+  EXPECT_EQ(a.model, b.model);
+}
+
+std::vector<MaterialDocument> assorted_documents() {
+  std::vector<MaterialDocument> documents(7);
+  documents[1].name = "skin «test»";
+  documents[1].description = "UTF-8 survives: σ, η, Ω";
+  documents[1].albedo_rgb = {0.95, 0.7, 0.55};
+  documents[1].layer.albedo = 0.95;
+  documents[2].layer.tau = INFINITY;
+  documents[3].layer.tau = 0.1;  // no T reads back to exactly this depth: "tau"
+  documents[3].layer.bottom = parse_bottom("lambert:0.35");
+  documents[4].layer.bottom = parse_bottom("matched");
+  documents[4].layer.ordinates = 48;
+  documents[4].model = SubsurfaceModel::HanrahanKrueger;
+  documents[5].layer.bottom.sigma = 0.1;
+  documents[5].layer.bottom.eta = 1.2;
+  documents[5].layer.sigma = 0.05;
+  documents[5].layer.g = -0.95;
+  documents[6].layer.tau = optical_depth_from_transparency(0.1);
+  return documents;
+}
+
+TEST(MaterialJson, WhatIsWrittenReadsBackBitForBit) {
+  for (const MaterialDocument& document : assorted_documents()) {
+    const std::string text = material_json_text(document);
+    expect_same(read_material_json(text, "test.json"), document);
+  }
+  // T with the fewest digits that read back exactly; the semi-infinite layer as T 0; tau where no T reads back.
+  const std::vector<MaterialDocument> documents = assorted_documents();
+  EXPECT_NE(material_json_text(documents[6]).find("\"T\": 0.1,"), std::string::npos);
+  EXPECT_NE(material_json_text(documents[2]).find("\"T\": 0.0"), std::string::npos);
+  EXPECT_NE(material_json_text(documents[3]).find("\"tau\": 0.1,"), std::string::npos);
+  EXPECT_NE(material_json_text(documents[1]).find("[\n"), std::string::npos) << "an RGB albedo is a list";
+}
+
+TEST(MaterialJson, EveryValueIsExplicitAndTheBottomStatesItsInterface) {
+  const nlohmann::ordered_json json = material_json(MaterialDocument{});
+  EXPECT_EQ(json["format"], "skinlayer-material");
+  EXPECT_EQ(json["version"], 1);
+  EXPECT_EQ(json["top"]["sigma"], 0.5);
+  EXPECT_EQ(json["bottom"]["sigma"], 0.5) << "air's sigma written although the material leaves it to the top's";
+  EXPECT_EQ(json["bottom"]["eta"], 1.4);
+  EXPECT_EQ(json["layers"].size(), 1u);
+  EXPECT_EQ(json["layers"][0]["T"], 0.2);
+}
+
+TEST(MaterialJson, TauInfAndMinimalFilesRead) {
+  const MaterialDocument document = read_material_json(R"({"format": "skinlayer-material", "version": 1,
+    "top": {"sigma": 0.3, "eta": 1.5}, "layers": [{"tau": "inf", "albedo": [0.9, 0.8, 0.7], "g": 0.5}],
+    "bottom": {"type": "air"}, "model": "lambert"})",
+                                                       "min.json");
+  EXPECT_TRUE(std::isinf(document.layer.tau));
+  EXPECT_EQ(document.albedo_rgb[2], 0.7);
+  EXPECT_EQ(document.layer.albedo, 0.9);
+  EXPECT_FALSE(document.layer.bottom.sigma.has_value()) << "air without sigma: the top's, as --bottom air";
+  EXPECT_EQ(document.model, SubsurfaceModel::Lambert);
+}
+
+struct BadFile {
+  std::string text;
+  std::vector<std::string> message_has;  // each must appear in the one-line message
+};
+
+// A valid file with one replacement made.
+std::string valid_with(const std::string& from, const std::string& to) {
+  std::string text = R"({
+  "format": "skinlayer-material",
+  "version": 1,
+  "top": {"sigma": 0.5, "eta": 1.4},
+  "layers": [{"T": 0.2, "albedo": 1, "g": 0.8}],
+  "bottom": {"type": "air", "sigma": 0.5, "eta": 1.4}
+})";
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(MaterialJson, EachKindOfErrorIsOneLineNamingTheFileAndTheKey) {
+  const std::vector<BadFile> cases = {
+      {valid_with("\"eta\": 1.4}", "\"eta\" 1.4}"), {"bad.json:4:", "not valid JSON"}},  // line 4
+      {"", {"bad.json:1:1", "not valid JSON"}},
+      {valid_with("\"sigma\": 0.5, \"eta\": 1.4}", "\"sigma\": 0.5, \"etaa\": 1.4}"),
+       {"bad.json", "unknown key \"top.etaa\"", "sigma, eta"}},
+      {valid_with("\"version\": 1,", "\"version\": 1, \"colour\": 3,"), {"unknown key \"colour\"", "layers"}},
+      {valid_with("\"g\": 0.8", "\"g\": \"0.8\""), {"bad.json", "\"layers[0].g\"", "must be a number", "a string"}},
+      {valid_with("\"g\": 0.8", "\"g\": 1.2"), {"bad.json", "\"layers[0].g\"", "out of range", "[-0.95, 0.95]"}},
+      {valid_with(", \"g\": 0.8", ""), {"bad.json", "\"layers[0].g\"", "missing"}},
+      {valid_with("\"T\": 0.2, ", ""), {"\"layers[0].T\"", "missing", "tau"}},
+      {valid_with("\"T\": 0.2", "\"T\": 0.2, \"tau\": 1"), {"\"layers[0]\"", "both"}},
+      {valid_with("\"version\": 1", "\"version\": 2"), {"bad.json", "version 2", "newer"}},
+      {valid_with("\"version\": 1", "\"version\": 0"), {"\"version\"", "must be 1"}},
+      {valid_with("\"skinlayer-material\"", "\"something-else\""), {"bad.json", "not a skinlayer material file"}},
+      {valid_with("\"type\": \"air\"", "\"type\": \"wood\""), {"\"bottom.type\"", "wood", "matched"}},
+      {valid_with("\"type\": \"air\", \"sigma\": 0.5, \"eta\": 1.4", "\"type\": \"lambert\""),
+       {"\"bottom.albedo\"", "missing"}},
+      {valid_with("\"type\": \"air\", \"sigma\": 0.5, \"eta\": 1.4", "\"type\": \"matched\", \"sigma\": 1"),
+       {"unknown key \"bottom.sigma\"", "type"}},
+      {valid_with("\"albedo\": 1", "\"albedo\": [1, 0.5]"), {"\"layers[0].albedo\"", "3 numbers"}},
+      {valid_with("\"albedo\": 1", "\"albedo\": [1, 0.5, 1.5]"), {"\"layers[0].albedo[2]\"", "out of range"}},
+      {valid_with("[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}]", "[]"), {"\"layers\"", "holds 0 layers"}},
+      {valid_with("\"layers\": [{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}]", "\"layers\": {}"),
+       {"\"layers\"", "must be a list"}},
+      {valid_with("\"top\": {\"sigma\": 0.5, \"eta\": 1.4},", ""), {"\"top\"", "missing"}},
+      {valid_with("\"version\": 1,", "\"version\": 1, \"ordinates\": 10.5,"), {"\"ordinates\"", "whole number"}},
+      {valid_with("\"version\": 1,", "\"version\": 1, \"model\": \"phong\","), {"\"model\"", "phong", "stam"}},
+      {"[1, 2, 3]", {"bad.json", "not a skinlayer material file"}},
+  };
+  for (const BadFile& bad : cases) {
+    try {
+      read_material_json(bad.text, "bad.json");
+      ADD_FAILURE() << "accepted: " << bad.text;
+    } catch (const MaterialFileError& error) {
+      const std::string message = error.what();
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      EXPECT_EQ(message.rfind("bad.json", 0), 0u) << message;
+      for (const std::string& part : bad.message_has) EXPECT_NE(message.find(part), std::string::npos) << message;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace skinlayer

@@ -1,0 +1,149 @@
+// Materials that last (issue 11), on the real executable: `material` writes what --material reads back bit for bit,
+// a rendered PNG carries its material, flags override a file, `presets` lists them, and every failure is one line
+// with exit status 2 (1 for an unwritable output) that leaves no file behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "tests/app/error_expectations.h"
+#include "tests/app/process_runner.h"
+
+namespace skinlayer::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kRows = "theta_i,theta_o,phi\n0,0,0\n30,25,180\n60,70,90\n80,10,0\n45,45,180\n";
+
+// A fresh folder for one test, removed afterwards.
+class MaterialCommands : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("skinlayer_material_test_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
+    return names;
+  }
+
+  fs::path dir_;
+};
+
+ProcessResult eval_with(std::vector<std::string> flags) {
+  flags.insert(flags.begin(), "eval");
+  return run_skinlayer(flags, kRows);
+}
+
+TEST_F(MaterialCommands, AWrittenMaterialEvaluatesBitForBitLikeItsFlags) {
+  const std::vector<std::vector<std::string>> materials = {
+      {},
+      {"--sigma", "0.3", "--T", "0.1", "--albedo", "0.9", "--g", "0.5", "--bottom", "lambert:0.3"},
+      {"--eta", "1.2", "--tau", "0.1", "--bottom", "air", "--bottom-sigma", "0.2", "--bottom-eta", "1.1"},
+      {"--T", "0", "--albedo", "0.7", "--bottom", "matched", "--model", "hk"},
+  };
+  for (const std::vector<std::string>& flags : materials) {
+    std::vector<std::string> write = {"material", "-o", path("m.json")};
+    write.insert(write.end(), flags.begin(), flags.end());
+    const ProcessResult written = run_skinlayer(write);
+    ASSERT_EQ(written.exit_code, 0) << written.err;
+    EXPECT_TRUE(written.out.empty()) << "with -o nothing goes to stdout";
+    const ProcessResult direct = eval_with(flags);
+    const ProcessResult from_file = eval_with({"--material", path("m.json")});
+    ASSERT_EQ(direct.exit_code, 0) << direct.err;
+    ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
+    EXPECT_EQ(from_file.out, direct.out) << "flags: " << ::testing::PrintToString(flags);
+    // And to stdout: the same file.
+    std::vector<std::string> print = {"material"};
+    print.insert(print.end(), flags.begin(), flags.end());
+    std::ifstream file(path("m.json"));
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(run_skinlayer(print).out, text);
+  }
+}
+
+TEST_F(MaterialCommands, FlagsGivenNextToAFileOverrideItsValues) {
+  ASSERT_EQ(run_skinlayer({"material", "--sigma", "0.3", "--g", "0.5", "-o", path("m.json")}).exit_code, 0);
+  const ProcessResult overridden = eval_with({"--material", path("m.json"), "--g", "0.2"});
+  const ProcessResult direct = eval_with({"--sigma", "0.3", "--g", "0.2", "--bottom-sigma", "0.3"});
+  ASSERT_EQ(overridden.exit_code, 0) << overridden.err;
+  EXPECT_EQ(overridden.out, direct.out) << "the file's sigma 0.3 (top and its explicit bottom), the flag's g";
+  // A preset, with a grey albedo over its RGB one, and a different top roughness.
+  const ProcessResult preset = eval_with({"--preset", "skin-fair", "--albedo", "0.5", "--sigma", "0.2"});
+  const ProcessResult spelled = eval_with({"--sigma", "0.2", "--eta", "1.4", "--T", "0.02", "--albedo", "0.5", "--g",
+                                           "0.8", "--bottom-sigma", "0.35", "--bottom-eta", "1.4"});
+  ASSERT_EQ(preset.exit_code, 0) << preset.err;
+  EXPECT_EQ(preset.out, spelled.out);
+}
+
+TEST_F(MaterialCommands, ARenderedPngCarriesItsMaterial) {
+  const std::vector<std::string> flags = {"--sigma",  "0.3", "--T",      "0.05",
+                                          "--albedo", "0.8", "--bottom", "lambert:0.4"};
+  std::vector<std::string> render = {"render", "--size", "48x48", "--view", "sphere", "-o", path("shot.png")};
+  render.insert(render.end(), flags.begin(), flags.end());
+  const ProcessResult rendered = run_skinlayer(render);
+  ASSERT_EQ(rendered.exit_code, 0) << rendered.err;
+  const ProcessResult from_png = eval_with({"--material", path("shot.png")});
+  ASSERT_EQ(from_png.exit_code, 0) << from_png.err;
+  EXPECT_EQ(from_png.out, eval_with(flags).out);
+  // An RGB picture reads back into `material` with its three channels and the settings it was drawn with.
+  ASSERT_EQ(run_skinlayer(
+                {"render", "--size", "32x32", "--preset", "skin-dark", "--light-theta", "30", "-o", path("rgb.png")})
+                .exit_code,
+            0);
+  const ProcessResult material = run_skinlayer({"material", "--material", path("rgb.png")});
+  ASSERT_EQ(material.exit_code, 0) << material.err;
+  EXPECT_NE(material.out.find("\"name\": \"skin-dark\""), std::string::npos) << material.out;
+  EXPECT_NE(material.out.find("0.82"), std::string::npos) << material.out;
+}
+
+TEST_F(MaterialCommands, PresetsListsNameAndDescription) {
+  const ProcessResult result = run_skinlayer({"presets"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  for (const char* name : {"paper-default", "skin-fair", "skin-medium", "skin-dark", "leaf", "wax", "jade"}) {
+    EXPECT_NE(result.out.find(std::string(name) + " "), std::string::npos) << name;
+  }
+  EXPECT_NE(result.out.find("a look, not a measurement"), std::string::npos);
+}
+
+TEST_F(MaterialCommands, EveryFailureIsOneLineAndWritesNothing) {
+  std::ofstream(path("typo.json")) << R"({"format": "skinlayer-material", "version": 1,
+  "top": {"sigma": 0.5, "eta": 1.4}, "layers": [{"T": 0.2, "albedo": 1, "g": 0.8}],
+  "bottom": {"type": "air", "sigmaa": 0.3}})";
+  std::ofstream(path("broken.json")) << "{\"format\": \"skinlayer-material\",\n \"version\": 1,,\n}";
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--material", path("typo.json")}), 2,
+                                   {"typo.json", "unknown key \"bottom.sigmaa\"", "sigma, eta"}));
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--material", path("broken.json")}), 2, {"broken.json:2:", "JSON"}));
+  EXPECT_TRUE(
+      failed_with_one_line(eval_with({"--material", path("missing.json")}), 2, {"missing.json", "cannot read"}));
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--preset", "nope"}), 2, {"unknown preset \"nope\"", "skin-fair"}));
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--preset", "wax", "--material", path("typo.json")}), 2,
+                                   {"--material", "--preset"}));
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--preset", "skin-fair"}), 2, {"RGB", "--albedo"}));
+  EXPECT_TRUE(
+      failed_with_one_line(eval_with({"--preset", "paint-red-base", "--albedo", "0.5", "--bottom-sigma", "0.2"}), 2,
+                           {"bottom-sigma", "lambert", "paint-red-base"}));
+  // An unwritable output: exit status 1 like any failed write, and no file, partial or temporary, left behind.
+  const ProcessResult unwritable = run_skinlayer({"material", "-o", path("no-such-folder/m.json")});
+  EXPECT_TRUE(failed_with_one_line(unwritable, 1, {"no-such-folder/m.json"}));
+  fs::permissions(dir_, fs::perms::owner_read | fs::perms::owner_exec);
+  const ProcessResult read_only = run_skinlayer({"material", "-o", path("m.json")});
+  fs::permissions(dir_, fs::perms::owner_all);
+  if (::geteuid() != 0) {  // root writes anyway
+    EXPECT_TRUE(failed_with_one_line(read_only, 1, {"m.json"}));
+  }
+  for (const std::string& name : entries()) {
+    EXPECT_TRUE(name == "typo.json" || name == "broken.json" || (name == "m.json" && ::geteuid() == 0)) << name;
+  }
+}
+
+}  // namespace
+}  // namespace skinlayer::test
