@@ -26,7 +26,9 @@ std::filesystem::path window_executable() {
 }  // namespace
 
 bool is_previewer_invocation(std::span<const std::string_view> arguments) {
-  return arguments.empty() || arguments.front() == "--capture" || arguments.front().starts_with("--capture=");
+  if (arguments.empty()) return true;
+  const std::string_view first = arguments.front();
+  return first.starts_with("--") && first != "--help" && first != "--version";
 }
 
 void exec_previewer(int argc, char** argv) {

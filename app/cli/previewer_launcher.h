@@ -1,4 +1,5 @@
-// `skinlayer` with no command, or `skinlayer --capture FILE [material flags]`, runs the previewer: the separate
+// `skinlayer` with no command, or with flags and no command (`skinlayer --sigma 0.3`, `skinlayer --preset wax
+// --capture shot.png`), runs the previewer: the separate
 // executable skinlayer-window in the same folder as skinlayer. The window links libGL and skinlayer links
 // libOSMesa, and one process must never load both (../shared/docs/platform-notes.md), hence two executables.
 #pragma once
@@ -8,7 +9,8 @@
 
 namespace skinlayer::cli {
 
-// True for the arguments that start the previewer: none, or a first argument "--capture" / "--capture=FILE".
+// True for the arguments that start the previewer: none, or a first argument that is a flag ("--sigma",
+// "--capture=FILE", ...) other than skinlayer's own --help, -h and --version.
 bool is_previewer_invocation(std::span<const std::string_view> arguments);
 
 // Replaces this process with skinlayer-window (from the folder of /proc/self/exe), passing arguments

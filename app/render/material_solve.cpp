@@ -32,6 +32,19 @@ DirectionalAlbedo model_albedo(const LayerTables& tables, const DirectionalAlbed
 
 }  // namespace
 
+MaterialDocument material_document(const ColorMaterial& material) {
+  MaterialDocument document;
+  document.layer = material.layer;
+  document.layer.albedo = material.albedo_rgb[0];
+  document.albedo_rgb = material.albedo_rgb;
+  document.model = material.model;
+  return document;
+}
+
+ColorMaterial color_material(const MaterialDocument& document) {
+  return ColorMaterial{document.layer, document.albedo_rgb, document.model.value_or(SubsurfaceModel::Stam)};
+}
+
 ColorTables solve_color(const ColorMaterial& material, double theta_i, const SolveOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   ColorTables result;

@@ -5,6 +5,7 @@
 #include <array>
 #include <vector>
 
+#include "app/material/material_document.h"
 #include "core/layer_tables.h"
 #include "core/material.h"
 #include "core/solver.h"
@@ -17,6 +18,10 @@ struct ColorMaterial {
   std::array<double, 3> albedo_rgb = {1.0, 1.0, 1.0};
   SubsurfaceModel model = SubsurfaceModel::Stam;  // the comparison models share the surface term
 };
+
+// The material as a file holds it (app/material), and back; a ColorMaterial has no name or description.
+MaterialDocument material_document(const ColorMaterial& material);
+ColorMaterial color_material(const MaterialDocument& document);
 
 struct ColorTables {
   ColorMaterial material;

@@ -18,6 +18,20 @@ std::optional<ViewKind> parse_view_kind(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view view_kind_name(ViewKind view) {
+  switch (view) {
+    case ViewKind::Sphere:
+      return "sphere";
+    case ViewKind::Polar:
+      return "polar";
+    case ViewKind::Both:
+      return "both";
+    case ViewKind::Compare:
+      return "compare";
+  }
+  return "both";
+}
+
 std::array<double, 3> light_direction(double theta, double phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }

@@ -16,6 +16,7 @@ enum class ViewKind { Sphere, Polar, Both, Compare };
 
 // "sphere", "polar", "both", "compare"; nullopt for anything else.
 std::optional<ViewKind> parse_view_kind(std::string_view name);
+std::string_view view_kind_name(ViewKind view);
 
 // The renderer slot of each sphere of the Compare view, left to right, and the model it shows. A model's slot is
 // its enum value (Stam 0, Lambert 1, Hanrahan-Krueger 2), as the previewer uploads them.

@@ -3,12 +3,14 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "app/gl/gl_api.h"
+#include "app/material/picture_metadata.h"
 #include "app/preview/preview_state.h"
 #include "app/preview/solve_worker.h"
 #include "app/preview/view_layout.h"
@@ -226,7 +228,8 @@ class Previewer {
   // Saves a region of the back buffer; failures are shown in the panel (and thrown in capture mode).
   void export_picture(const Viewport& region, const std::string& path) {
     try {
-      const SavedScreenshot saved = save_screenshot(region, path);
+      const SavedScreenshot saved =
+          save_screenshot(region, path, {picture_metadata(shown_material(), drawing_settings())});
       out_ << "wrote " << saved.path << " (" << saved.width << "x" << saved.height << ")\n" << std::flush;
       last_export_ =
           "saved " + saved.path + " (" + std::to_string(saved.width) + "x" + std::to_string(saved.height) + ")";
@@ -234,6 +237,21 @@ class Previewer {
       if (capture_path_) throw;
       last_export_ = error.what();
     }
+  }
+
+  // The material of the picture on screen (the shown result's; the sliders may be ahead of it).
+  MaterialDocument shown_material() const {
+    return material_document(shown_ ? shown_->request.material : state_.material);
+  }
+
+  // How the picture was drawn, for its metadata.
+  nlohmann::ordered_json drawing_settings() const {
+    return {{"command", "previewer"},
+            {"view", std::string(view_kind_name(state_.view.view))},
+            {"light_theta", state_.light.theta_degrees},
+            {"light_phi", state_.light.phi_degrees},
+            {"exposure", exposure_multiplier(state_.view)},
+            {"scale", state_.view.log_lobes ? "log" : "linear"}};
   }
 
   // --capture: once the shown result answers the final parameters and a few frames have shown it, save the whole

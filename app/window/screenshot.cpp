@@ -5,10 +5,10 @@
 
 namespace skinlayer {
 
-SavedScreenshot save_screenshot(const Viewport& region, const std::string& path) {
+SavedScreenshot save_screenshot(const Viewport& region, const std::string& path, const std::vector<PngText>& texts) {
   const std::string target = path.empty() ? timestamped_png_name() : path;
   const Image image{region.width, region.height, read_bound_rgba8(region.x, region.y, region.width, region.height)};
-  write_png(image, target);
+  write_png(image, target, texts);
   return {target, region.width, region.height};
 }
 

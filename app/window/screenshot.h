@@ -3,7 +3,9 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "app/material/png_codec.h"
 #include "app/render/renderer.h"
 
 namespace skinlayer {
@@ -15,8 +17,8 @@ struct SavedScreenshot {
 };
 
 // Reads `region` (framebuffer pixels, origin bottom-left) of the bound framebuffer and writes it to path, or to
-// timestamped_png_name() in the current folder when path is empty. Throws std::runtime_error naming the path if
-// it cannot be written.
-SavedScreenshot save_screenshot(const Viewport& region, const std::string& path);
+// timestamped_png_name() in the current folder when path is empty, with the text chunks (the picture's material:
+// app/material/picture_metadata.h). Throws std::runtime_error naming the path if it cannot be written.
+SavedScreenshot save_screenshot(const Viewport& region, const std::string& path, const std::vector<PngText>& texts);
 
 }  // namespace skinlayer

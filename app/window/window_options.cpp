@@ -37,16 +37,17 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
 
 std::string window_usage() {
   return "Usage: skinlayer [--capture FILE.png] [--view sphere|polar|both|compare] [--model stam|lambert|hk]\n"
-         "                 [material flags]\n"
+         "                 [--material FILE | --preset NAME] [--albedo A | r,g,b] [material flags]\n"
          "\n"
          "Opens the previewer: a lit sphere of the material beside polar plots of its BRDF and BTDF, with controls\n"
          "for every parameter (press F1 in the window for the keys). Needs a display; without one, use\n"
-         "`skinlayer render -o out.png`.\n"
+         "`skinlayer render -o out.png`, which takes the same material flags.\n"
          "  --capture FILE.png   render until the material is solved, save a screenshot of the whole window\n"
          "                       (framebuffer resolution) to FILE.png, print its size and exit\n"
          "  --view V             the views shown first: sphere, polar, both, or compare (three spheres:\n"
          "                       Lambert | Hanrahan-Krueger | the layer model)\n"
          "  --model M            the subsurface model of the sphere and plots: stam, lambert, hk\n"
+         "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in [0, 1]\n"
          "\n" +
          cli::material_flags_usage();
 }

@@ -1,5 +1,6 @@
-// skinlayer-window's command line: [--capture FILE.png] [--view V] [--model M] [material flags]. `skinlayer` (no command, or --capture)
-// runs skinlayer-window with its own arguments unchanged, so these are also skinlayer's previewer arguments.
+// skinlayer-window's command line: [--capture FILE.png] [--view V] [--model M] [material flags]. `skinlayer` with
+// no command (no arguments, or flags only) runs skinlayer-window with its arguments unchanged, so these are also
+// skinlayer's previewer arguments.
 #pragma once
 
 #include <optional>
@@ -13,7 +14,7 @@
 namespace skinlayer {
 
 struct WindowOptions {
-  ColorMaterial material;                   // from the material flags; --albedo sets all three channels
+  ColorMaterial material;                   // from --material/--preset and the material flags (RGB --albedo)
   ViewKind view = ViewKind::Both;           // --view sphere|polar|both|compare
   std::optional<std::string> capture_path;  // --capture: save the whole window there once solved, then exit
   bool help = false;                        // --help or -h

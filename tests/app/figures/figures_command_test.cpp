@@ -3,7 +3,6 @@
 // skinlayer eval at those points with the material flags the CSV records.
 #include <gtest/gtest.h>
 #include <stb_image.h>  // libstb.so holds the implementation
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -124,6 +123,16 @@ TEST_F(FiguresCommand, EveryPngDecodesAtItsStatedSize) {
   }
 }
 
+// Every figure remembers its (first curve's) material: `material --material FIG.png` reads it back.
+TEST_F(FiguresCommand, EveryPngCarriesItsMaterial) {
+  ASSERT_EQ(stated_.size(), kFigureCount);
+  for (const StatedPng& figure : stated_) {
+    const ProcessResult material = run_skinlayer({"material", "--material", (dir_ / (figure.name + ".png")).string()});
+    ASSERT_EQ(material.exit_code, 0) << figure.name << ": " << material.err;
+    EXPECT_NE(material.out.find("\"name\": \"" + figure.name + "\""), std::string::npos) << material.out;
+  }
+}
+
 TEST_F(FiguresCommand, IndexShowsEveryPngAndLinksEveryCsv) {
   const std::string index = read_text(dir_ / "index.html");
   std::size_t pngs = 0;
@@ -151,7 +160,9 @@ TEST_F(FiguresCommand, CsvValuesEqualEvalAtThosePoints) {
       ASSERT_TRUE(csv.column.contains(name)) << figure.name << ".csv has no column " << name;
     }
     ASSERT_FALSE(csv.rows.empty()) << figure.name;
-    const auto field = [&](const std::vector<std::string>& row, const char* name) { return row.at(csv.column.at(name)); };
+    const auto field = [&](const std::vector<std::string>& row, const char* name) {
+      return row.at(csv.column.at(name));
+    };
     // The eval flags of a row, and the rows to check per flag set.
     std::map<std::vector<std::string>, std::vector<const std::vector<std::string>*>> groups;
     const std::size_t stride = std::max<std::size_t>(1, csv.rows.size() / kRowsPerFile);
@@ -159,9 +170,19 @@ TEST_F(FiguresCommand, CsvValuesEqualEvalAtThosePoints) {
       const std::vector<std::string>& row = csv.rows[k];
       ASSERT_EQ(row.size(), csv.column.size()) << figure.name << " row " << k;
       if (field(row, "quantity") == "interface_btdf") continue;  // core's microfacet_btdf: no eval column
-      const std::vector<std::string> flags = {"eval", "--model", field(row, "model"), "--sigma", field(row, "sigma"),
-                                              "--eta", field(row, "eta"), "--T", field(row, "T"),
-                                              "--albedo", field(row, "albedo"), "--g", field(row, "g")};
+      const std::vector<std::string> flags = {"eval",
+                                              "--model",
+                                              field(row, "model"),
+                                              "--sigma",
+                                              field(row, "sigma"),
+                                              "--eta",
+                                              field(row, "eta"),
+                                              "--T",
+                                              field(row, "T"),
+                                              "--albedo",
+                                              field(row, "albedo"),
+                                              "--g",
+                                              field(row, "g")};
       groups[flags].push_back(&row);
     }
     ASSERT_FALSE(groups.empty()) << figure.name;

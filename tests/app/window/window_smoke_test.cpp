@@ -10,6 +10,7 @@
 #include <memory>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "tests/app/process_runner.h"
 
@@ -30,7 +31,7 @@ TEST(WindowSmoke, CaptureUnderXvfbWritesTheWholeWindow) {
   std::filesystem::remove(png);
 
   const ProcessResult result = run_process({*xvfb_run, "-a", "-s", "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE,
-                                        "--capture", png.string(), "--sigma", "0.3"});
+                                            "--capture", png.string(), "--sigma", "0.3"});
   ASSERT_EQ(result.exit_code, 0) << "stdout: " << result.out << "\nstderr: " << result.err;
 
   // "wrote FILE (WxH)": the framebuffer size the window reported.
@@ -65,6 +66,48 @@ TEST(WindowSmoke, CaptureUnderXvfbWritesTheWholeWindow) {
   std::printf("[ capture ] %dx%d, luminance mean %.1f, variance %.1f\n", width, height, mean, variance);
   EXPECT_GT(variance, 0.0);
   std::filesystem::remove(png);
+}
+
+// The previewer takes render's material flags (RGB --albedo included), --material and --preset; its capture carries
+// the material it shows, which --material reads back.
+TEST(WindowSmoke, CaptureTakesMaterialFilesPresetsAndRgbAlbedoAndRemembersThem) {
+  const std::optional<std::string> xvfb_run = find_in_path("xvfb-run");
+  if (!xvfb_run) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::filesystem::path json = temporary_png("skinlayer-window-material").replace_extension(".json");
+  ASSERT_EQ(
+      run_process({SKINLAYER_EXECUTABLE, "material", "--sigma", "0.3", "--T", "0.05", "-o", json.string()}).exit_code,
+      0);
+  struct Case {
+    std::vector<std::string> flags;
+    std::vector<std::string> remembered;  // in `skinlayer material --material capture.png`
+  };
+  const std::vector<Case> cases = {
+      {{"--material", json.string(), "--albedo", "0.95,0.7,0.55"}, {"\"sigma\": 0.3", "0.05", "0.7", "0.55"}},
+      {{"--preset", "jade"}, {"\"sigma\": 0.08", "1.62"}},
+  };
+  for (const Case& c : cases) {
+    const std::filesystem::path png = temporary_png("skinlayer-window-remembers");
+    std::vector<std::string> argv = {*xvfb_run,   "-a",        "-s", "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE,
+                                     "--capture", png.string()};
+    argv.insert(argv.end(), c.flags.begin(), c.flags.end());
+    const ProcessResult captured = run_process(argv);
+    ASSERT_EQ(captured.exit_code, 0) << captured.err;
+    const ProcessResult material = run_process({SKINLAYER_EXECUTABLE, "material", "--material", png.string()});
+    ASSERT_EQ(material.exit_code, 0) << material.err;
+    for (const std::string& part : c.remembered) EXPECT_NE(material.out.find(part), std::string::npos) << material.out;
+    std::filesystem::remove(png);
+  }
+  std::filesystem::remove(json);
+}
+
+TEST(WindowSmoke, FlagsWithoutACommandOpenThePreviewer) {
+  // `skinlayer --sigma 0.3` is the previewer (here without a display: its one-line error), not an unknown command.
+  const ProcessResult result =
+      run_process({"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", SKINLAYER_EXECUTABLE, "--sigma", "0.3"});
+  EXPECT_NE(result.exit_code, 0);
+  EXPECT_TRUE(one_line(result.err)) << result.err;
+  EXPECT_NE(result.err.find("skinlayer render"), std::string::npos) << result.err;
+  EXPECT_EQ(result.err.find("unknown command"), std::string::npos) << result.err;
 }
 
 TEST(WindowSmoke, WithoutADisplayOneLinePointsToRender) {
