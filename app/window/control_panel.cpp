@@ -93,7 +93,8 @@ void status_line(const PanelStatus& status) {
 
 }  // namespace
 
-PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelStatus& status) {
+PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelStatus& status,
+                           const FileSectionInput& file) {
   PanelActions actions;
   ImGui::SetNextWindowPos(ImVec2(rect.x, rect.y));
   ImGui::SetNextWindowSize(ImVec2(rect.width, rect.height));
@@ -114,6 +115,7 @@ PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelSta
     ImGui::PopTextWrapPos();
   }
 
+  if (ImGui::CollapsingHeader("File", ImGuiTreeNodeFlags_DefaultOpen)) actions.file = file_section(file);
   if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
     material_controls(state.material, status.unicode);
     actions.reset_material = ImGui::Button("Reset to the paper's default (R)");

@@ -1,5 +1,5 @@
-// The control panel on the left of the window: the material, light and view controls (params_ui), the energy
-// readout at the light's angle, the screenshot settings, and the status line.
+// The control panel on the left of the window: the material file (file_panel.h), the material, light and view
+// controls (params_ui), the energy readout at the light's angle, the screenshot settings, and the status line.
 #pragma once
 
 #include <string>
@@ -7,6 +7,7 @@
 #include "app/preview/preview_state.h"
 #include "app/preview/solve_worker.h"
 #include "app/preview/view_layout.h"
+#include "app/window/file_panel.h"
 
 namespace skinlayer {
 
@@ -21,9 +22,11 @@ struct PanelStatus {
 struct PanelActions {
   bool save_screenshot = false;
   bool reset_material = false;
+  FileSectionResult file;  // the File section: open, save, presets, recent, undo, redo
 };
 
 // Draws the panel in rect (ImGui must be inside a frame) and edits state.
-PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelStatus& status);
+PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelStatus& status,
+                           const FileSectionInput& file);
 
 }  // namespace skinlayer

@@ -45,6 +45,8 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title) {
   }
   glfwSetWindowUserPointer(window_, this);  // GlfwWindow is not movable: this stays valid
   glfwSetKeyCallback(window_, on_key);
+  glfwSetDropCallback(window_, on_drop);
+  title_ = title;
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(1);
 }
@@ -57,12 +59,27 @@ void GlfwWindow::on_key(GLFWwindow* window, int key, int /*scancode*/, int actio
 
 std::vector<GlfwWindow::KeyPress> GlfwWindow::take_key_presses() { return std::exchange(key_presses_, {}); }
 
+void GlfwWindow::on_drop(GLFWwindow* window, int count, const char** paths) {
+  auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
+  if (self == nullptr) return;
+  for (int k = 0; k < count; ++k) self->dropped_paths_.emplace_back(paths[k]);
+}
+
+std::vector<std::string> GlfwWindow::take_dropped_paths() { return std::exchange(dropped_paths_, {}); }
+
+void GlfwWindow::set_title(const std::string& title) {
+  if (title == title_) return;
+  title_ = title;
+  glfwSetWindowTitle(window_, title.c_str());
+}
+
 GlfwWindow::~GlfwWindow() {
   if (window_ != nullptr) glfwDestroyWindow(window_);
 }
 
 bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_) == GLFW_TRUE; }
 void GlfwWindow::request_close() const { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+void GlfwWindow::cancel_close() const { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
 void GlfwWindow::swap_buffers() const { glfwSwapBuffers(window_); }
 
 std::array<int, 2> GlfwWindow::framebuffer_size() const {

@@ -34,7 +34,9 @@ class GlfwWindow {
   GLFWwindow* handle() const { return window_; }
   bool should_close() const;
   void request_close() const;
+  void cancel_close() const;  // the user's close request is answered by a question first
   void swap_buffers() const;
+  void set_title(const std::string& title);  // only calls GLFW when the title changes
 
   // Key presses since the last call, in order (repeats excluded). They are queued by a GLFW key callback installed
   // before ImGui's, which chains to it, so a press and release within one frame are never lost (ImGui 1.86 reads
@@ -44,6 +46,9 @@ class GlfwWindow {
     int mods;  // GLFW_MOD_* bits
   };
   std::vector<KeyPress> take_key_presses();
+
+  // Paths of files dropped onto the window since the last call, in order.
+  std::vector<std::string> take_dropped_paths();
 
   std::array<int, 2> framebuffer_size() const;  // pixels
   std::array<int, 2> window_size() const;       // screen coordinates (ImGui's units)
@@ -60,10 +65,13 @@ class GlfwWindow {
   };
 
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void on_drop(GLFWwindow* window, int count, const char** paths);
 
   Library library_;
   GLFWwindow* window_ = nullptr;  // owned: glfwDestroyWindow in the destructor; its user pointer is this
   std::vector<KeyPress> key_presses_;
+  std::vector<std::string> dropped_paths_;
+  std::string title_;
 };
 
 // Wakes a thread blocked in glfwWaitEvents*; callable from any thread while GLFW is initialized.

@@ -3,6 +3,8 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <deque>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -10,13 +12,19 @@
 #include <vector>
 
 #include "app/gl/gl_api.h"
+#include "app/material/material_file.h"
 #include "app/material/picture_metadata.h"
+#include "app/material/presets.h"
+#include "app/preview/edit_history.h"
+#include "app/preview/material_session.h"
 #include "app/preview/preview_state.h"
+#include "app/preview/recent_files.h"
 #include "app/preview/solve_worker.h"
 #include "app/preview/view_layout.h"
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
 #include "app/window/control_panel.h"
+#include "app/window/file_panel.h"
 #include "app/window/glfw_window.h"
 #include "app/window/help_overlay.h"
 #include "app/window/screenshot.h"
@@ -46,15 +54,27 @@ class Previewer {
         capture_path_(options.capture_path),
         window_(kWindowWidth, kWindowHeight, "skinlayer"),
         imgui_(window_.handle(), window_.content_scale()),
+        history_(Edit{options.material, LightState{}}),
+        session_(initial_session(options)),
+        test_actions_(options.test_actions.begin(), options.test_actions.end()),
         worker_(post_empty_event) {
     state_.material = options.material;
     state_.view.view = options.view;
+    for (const PresetInfo& preset : preset_list()) preset_names_.push_back(preset.name);
+    recent_path_ = recent_files_path();
+    if (recent_path_) recent_ = read_recent_files(*recent_path_);
   }
 
   int run() {
     const auto start = std::chrono::steady_clock::now();
     double timeout = 0.0;
-    while (!window_.should_close() && !captured_) {
+    while (!captured_) {
+      if (window_.should_close()) {
+        // Closing with unsaved changes asks first (never in capture mode, which edits nothing by hand).
+        if (capture_path_ || quit_confirmed_ || !unsaved(session_, state_.material)) break;
+        window_.cancel_close();
+        dialog_ = FileDialog{FileDialog::Kind::ConfirmDiscard, "", {FileCommand::Kind::Quit, ""}};
+      }
       wait_events(timeout);
       timeout = frame();
       if (capture_path_ &&
@@ -80,9 +100,12 @@ class Previewer {
     PreviewState edited = state_;
     ViewOverlayInput overlay{layout, shown_ ? &plot_tables() : nullptr, scene_.lobes, imgui_.unicode_labels()};
     activity |= view_overlays(overlay, edited.light);
-    const PanelActions panel = control_panel(layout.panel, edited, panel_status());
+    const PanelActions panel = control_panel(layout.panel, edited, panel_status(), file_section_input());
     bool save = panel.save_screenshot;
     bool reset = panel.reset_material;
+    bool undo = panel.file.undo, redo = panel.file.redo;
+    std::vector<FileCommand> file_commands;
+    if (panel.file.command.kind != FileCommand::Kind::None) file_commands.push_back(panel.file.command);
     const std::vector<GlfwWindow::KeyPress> presses = window_.take_key_presses();
     for (const Action action : pressed_actions(presses, ImGui::GetIO().WantTextInput)) {
       activity = true;
@@ -105,11 +128,39 @@ class Previewer {
         case Action::Quit:
           window_.request_close();
           break;
+        case Action::Open:
+          file_commands.push_back({FileCommand::Kind::Open, ""});
+          break;
+        case Action::Save:
+          file_commands.push_back({FileCommand::Kind::Save, ""});
+          break;
+        case Action::SaveAs:
+          file_commands.push_back({FileCommand::Kind::SaveAs, ""});
+          break;
+        case Action::Undo:
+          undo = true;
+          break;
+        case Action::Redo:
+          redo = true;
+          break;
       }
     }
     draw_help_overlay(edited.show_help);
     if (reset) edited = reset_material(edited);
     state_ = edited;
+    for (const std::string& path : window_.take_dropped_paths()) {
+      file_commands.push_back({FileCommand::Kind::OpenPath, path});
+    }
+    if (const FileCommand confirmed = file_dialogs(dialog_); confirmed.kind != FileCommand::Kind::None) {
+      file_commands.push_back(confirmed);
+    }
+    run_test_action(file_commands, undo, redo);
+    for (const FileCommand& command : file_commands) run_file_command(command);
+    if (undo) step_history(history_.undo(current_edit()));
+    if (redo) step_history(history_.redo(current_edit()));
+    // One slider drag, or one drag of the light on the sphere, is one undo step: it commits on release.
+    history_.observe(current_edit(), ImGui::IsAnyItemActive());
+    window_.set_title(window_title(session_, state_.material, imgui_.unicode_labels()));
     submit_if_needed();
 
     const ImGuiIO& io = ImGui::GetIO();
@@ -239,6 +290,203 @@ class Previewer {
     }
   }
 
+  static MaterialSession initial_session(const WindowOptions& options) {
+    if (!options.material_path.empty()) {
+      MaterialSession session = opened_session(options.document, options.material_path);
+      session.saved = options.material;  // flags given next to the file count as opened, not as unsaved edits
+      return session;
+    }
+    MaterialSession session =
+        untitled_session(options.material, options.preset.empty() ? "untitled" : "preset " + options.preset);
+    session.name = options.document.name;
+    session.description = options.document.description;
+    return session;
+  }
+
+  Edit current_edit() const { return Edit{state_.material, state_.light}; }
+
+  void step_history(const std::optional<Edit>& edit) {
+    if (!edit) return;
+    state_.material = edit->material;
+    state_.light = edit->light;
+  }
+
+  FileSectionInput file_section_input() const {
+    const bool unicode = imgui_.unicode_labels();
+    std::string title = window_title(session_, state_.material, unicode);
+    title = title.substr(title.find(unicode ? "\u2014 " : "- ") + (unicode ? std::string("\u2014 ").size() : 2));
+    return FileSectionInput{title,
+                            unsaved(session_, state_.material),
+                            preset_names_,
+                            recent_,
+                            file_message_,
+                            history_.undo_steps(),
+                            history_.redo_steps()};
+  }
+
+  void remember_recent(const std::string& path) {
+    if (!recent_path_) return;
+    recent_ = with_recent_file(recent_, path);
+    try {
+      write_recent_files(*recent_path_, recent_);
+    } catch (const std::exception&) {
+      // The list is a convenience: an unwritable config folder must not stop the work.
+    }
+  }
+
+  // Commands that replace the material ask first when it has unsaved changes.
+  void run_file_command(const FileCommand& command) {
+    const bool replaces = command.kind == FileCommand::Kind::OpenPath || command.kind == FileCommand::Kind::LoadPreset;
+    if (replaces && unsaved(session_, state_.material)) {
+      dialog_ = FileDialog{FileDialog::Kind::ConfirmDiscard, "", command};
+      return;
+    }
+    switch (command.kind) {
+      case FileCommand::Kind::None:
+        break;
+      case FileCommand::Kind::Open:
+        dialog_ = FileDialog{FileDialog::Kind::Open, chooser_start(), {}};
+        break;
+      case FileCommand::Kind::OpenPath:
+        open_material(command.argument);
+        break;
+      case FileCommand::Kind::LoadPreset:
+        load_preset(command.argument);
+        break;
+      case FileCommand::Kind::Save:
+        if (!session_.path.empty()) {
+          save_material(session_.path);
+        } else if (dialog_.kind != FileDialog::Kind::ConfirmDiscard) {
+          dialog_ = FileDialog{FileDialog::Kind::SaveAs, chooser_start(), {}};
+        }
+        // Saving from the unsaved-changes question goes on with what it interrupted (after a Save as if needed).
+        if (dialog_.kind == FileDialog::Kind::ConfirmDiscard) run_after_confirm(/*saved=*/true);
+        break;
+      case FileCommand::Kind::SaveAs:
+        if (command.argument.empty()) {
+          dialog_ = FileDialog{FileDialog::Kind::SaveAs, chooser_start(), {}};
+        } else {
+          save_material(command.argument);
+          if (pending_after_save_.kind != FileCommand::Kind::None && !unsaved(session_, state_.material)) {
+            run_file_command(std::exchange(pending_after_save_, {}));
+          }
+        }
+        break;
+      case FileCommand::Kind::Discard:
+        run_after_confirm(/*saved=*/false);
+        break;
+      case FileCommand::Kind::Quit:
+        quit_confirmed_ = true;
+        window_.request_close();
+        break;
+    }
+  }
+
+  // The unsaved-changes question was answered with Save or Discard: go on with what it interrupted.
+  void run_after_confirm(bool saved) {
+    const FileCommand next = std::exchange(dialog_, {}).after_discard;
+    if (saved && unsaved(session_, state_.material)) {
+      pending_after_save_ = next;  // saving needs a path first (Save as); go on once it is saved
+      dialog_ = FileDialog{FileDialog::Kind::SaveAs, chooser_start(), {}};
+      return;
+    }
+    session_.saved = state_.material;  // discarded: replacing the material no longer asks
+    run_file_command(next);
+  }
+
+  std::string chooser_start() const {
+    if (!session_.path.empty()) return session_.path;
+    std::error_code error;
+    const std::string folder = std::filesystem::current_path(error).string() + "/";
+    return session_.name.empty() ? folder : folder + session_.name + ".json";
+  }
+
+  void open_material(const std::string& path) {
+    try {
+      const MaterialDocument document = read_material_file(path);
+      state_.material = color_material(document);
+      session_ = opened_session(document, path);
+      file_message_ = "opened " + path;
+      if (!session_.path.empty()) remember_recent(path);
+    } catch (const std::exception& error) {
+      file_message_ = error.what();
+    }
+  }
+
+  void load_preset(const std::string& name) {
+    try {
+      const MaterialDocument document = preset_material(name);
+      state_.material = color_material(document);
+      session_ = untitled_session(state_.material, "preset " + name);
+      session_.name = document.name;
+      session_.description = document.description;
+      file_message_ = document.description;
+    } catch (const std::exception& error) {
+      file_message_ = error.what();
+    }
+  }
+
+  void save_material(std::string path) {
+    if (std::filesystem::path(path).extension().empty()) path += ".json";
+    try {
+      write_material_file(document_to_save(session_, state_.material), path);
+      session_.path = path;
+      session_.saved = state_.material;
+      file_message_ = "saved " + path;
+      remember_recent(path);
+    } catch (const std::exception& error) {
+      file_message_ = error.what();
+    }
+  }
+
+  // --test-actions: one action a frame, once the shown result answers the current parameters, so that each edit
+  // is solved and committed as its own undo step, as a person's would be.
+  void run_test_action(std::vector<FileCommand>& commands, bool& undo, bool& redo) {
+    if (test_actions_.empty() || !shown_ || solving() || dialog_.kind == FileDialog::Kind::Open ||
+        dialog_.kind == FileDialog::Kind::SaveAs) {
+      return;
+    }
+    const std::string action = test_actions_.front();
+    test_actions_.pop_front();
+    const std::size_t space = action.find(' ');
+    const std::string verb = action.substr(0, space);
+    const std::string argument = space == std::string::npos ? "" : action.substr(space + 1);
+    if (verb == "undo") {
+      undo = true;
+    } else if (verb == "redo") {
+      redo = true;
+    } else if (verb == "drop") {
+      commands.push_back({FileCommand::Kind::OpenPath, argument});
+    } else if (verb == "save") {
+      commands.push_back({FileCommand::Kind::SaveAs, argument});
+    } else if (verb == "preset") {
+      commands.push_back({FileCommand::Kind::LoadPreset, argument});
+    } else if (verb == "discard" && dialog_.kind == FileDialog::Kind::ConfirmDiscard) {
+      commands.push_back({FileCommand::Kind::Discard, ""});
+    } else if (verb == "title") {
+      out_ << "title: " << window_title(session_, state_.material, false) << "\n" << std::flush;
+    } else if (verb == "set") {
+      const std::size_t gap = argument.find(' ');
+      const std::string name = argument.substr(0, gap);
+      const double value = std::stod(argument.substr(gap + 1));
+      Material& layer = state_.material.layer;
+      if (name == "sigma")
+        layer.sigma = value;
+      else if (name == "eta")
+        layer.eta = value;
+      else if (name == "g")
+        layer.g = value;
+      else if (name == "T")
+        layer.tau = optical_depth_from_transparency(value);
+      else if (name == "albedo")
+        state_.material.albedo_rgb = {value, value, value};
+      else
+        throw std::runtime_error("test action: unknown parameter " + name);
+    } else {
+      throw std::runtime_error("test action: unknown action '" + action + "'");
+    }
+  }
+
   // The material of the picture on screen (the shown result's; the sliders may be ahead of it).
   MaterialDocument shown_material() const {
     return material_document(shown_ ? shown_->request.material : state_.material);
@@ -257,7 +505,7 @@ class Previewer {
   // --capture: once the shown result answers the final parameters and a few frames have shown it, save the whole
   // window through the same export path as the S key, and finish.
   void capture_if_ready(std::array<int, 2> framebuffer) {
-    if (!capture_path_) return;
+    if (!capture_path_ || !test_actions_.empty()) return;
     const bool final_result = submitted_ && !worker_.settling();
     if (final_result && !error_.empty()) throw std::runtime_error(error_);
     if (!final_result || !shown_ || shown_->preview || !same_request(shown_->request, *submitted_)) return;
@@ -282,6 +530,16 @@ class Previewer {
   int eager_frames_ = kEagerFrames;
   int settled_frames_ = 0;
   bool captured_ = false;
+  EditHistory history_;
+  MaterialSession session_;
+  FileDialog dialog_;
+  FileCommand pending_after_save_;  // what a Save in the unsaved-changes question interrupted
+  bool quit_confirmed_ = false;
+  std::string file_message_;
+  std::vector<std::string> preset_names_;
+  std::optional<std::filesystem::path> recent_path_;
+  std::vector<std::string> recent_;
+  std::deque<std::string> test_actions_;
   SolveWorker worker_;  // last: destroyed (joined) first, while GLFW, which it wakes, is still initialized
 };
 

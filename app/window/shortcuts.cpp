@@ -9,13 +9,20 @@ namespace skinlayer {
 namespace {
 
 constexpr std::array kShortcuts = {
-    Shortcut{GLFW_KEY_S, false, "S or Ctrl+S", "save a screenshot (target and path from the Screenshot panel)",
+    Shortcut{GLFW_KEY_O, true, false, "Ctrl+O", "open a material file or a skinlayer PNG", Action::Open},
+    Shortcut{GLFW_KEY_S, true, false, "Ctrl+S", "save the material (to its file; else asks for a path)", Action::Save},
+    Shortcut{GLFW_KEY_S, true, true, "Ctrl+Shift+S", "save the material as a new file", Action::SaveAs},
+    Shortcut{GLFW_KEY_Z, true, false, "Ctrl+Z", "undo a material or light change", Action::Undo},
+    Shortcut{GLFW_KEY_Z, true, true, "Ctrl+Shift+Z", "redo", Action::Redo},
+    Shortcut{GLFW_KEY_Y, true, false, "Ctrl+Y", "redo", Action::Redo},
+    Shortcut{GLFW_KEY_S, false, false, "S", "save a screenshot (target and path from the Screenshot panel)",
              Action::SaveScreenshot},
-    Shortcut{GLFW_KEY_R, false, "R", "reset the material to the paper's default", Action::ResetMaterial},
-    Shortcut{GLFW_KEY_L, false, "L", "lobe radius: linear / log", Action::ToggleLogScale},
-    Shortcut{GLFW_KEY_F1, false, "F1", "show / hide this help", Action::ToggleHelp},
-    Shortcut{GLFW_KEY_ESCAPE, false, "Esc", "hide this help", Action::CloseHelp},
-    Shortcut{GLFW_KEY_Q, true, "Ctrl+Q", "quit", Action::Quit},
+    Shortcut{GLFW_KEY_R, false, false, "R", "reset the material to the paper's default", Action::ResetMaterial},
+    Shortcut{GLFW_KEY_L, false, false, "L", "lobe radius: linear / log", Action::ToggleLogScale},
+    Shortcut{GLFW_KEY_F1, false, false, "F1", "show / hide this help", Action::ToggleHelp},
+    Shortcut{GLFW_KEY_ESCAPE, false, false, "Esc", "hide this help", Action::CloseHelp},
+    Shortcut{GLFW_KEY_Q, true, false, "Ctrl+Q", "quit (asks first when the material has unsaved changes)",
+             Action::Quit},
 };
 
 constexpr std::array kGestures = {
@@ -25,6 +32,7 @@ constexpr std::array kGestures = {
     Gesture{"Ctrl-click or right-click a slider", "reset it to its default"},
     Gesture{"Type in the box beside a slider", "exact value; Enter applies it (clamped to the range)"},
     Gesture{"Click the albedo swatch", "color picker for the RGB albedo; right-click resets to white"},
+    Gesture{"Drop a file on the window", "open a material file or a skinlayer PNG's material"},
 };
 
 }  // namespace
@@ -37,8 +45,12 @@ std::vector<Action> pressed_actions(std::span<const GlfwWindow::KeyPress> presse
   if (typing) return actions;
   for (const GlfwWindow::KeyPress& press : presses) {
     const bool ctrl = (press.mods & GLFW_MOD_CONTROL) != 0;
+    const bool shift = (press.mods & GLFW_MOD_SHIFT) != 0;
     for (const Shortcut& shortcut : kShortcuts) {
-      if (shortcut.key == press.key && (ctrl || !shortcut.needs_ctrl)) actions.push_back(shortcut.action);
+      // F1 and Esc work with any modifier; letters only with exactly the modifiers listed.
+      const bool letter = shortcut.key >= GLFW_KEY_A && shortcut.key <= GLFW_KEY_Z;
+      const bool modifiers_match = !letter || (ctrl == shortcut.needs_ctrl && (!ctrl || shift == shortcut.needs_shift));
+      if (shortcut.key == press.key && modifiers_match) actions.push_back(shortcut.action);
     }
   }
   return actions;

@@ -10,11 +10,24 @@
 
 namespace skinlayer {
 
-enum class Action { SaveScreenshot, ResetMaterial, ToggleLogScale, ToggleHelp, CloseHelp, Quit };
+enum class Action {
+  SaveScreenshot,
+  Open,
+  Save,
+  SaveAs,
+  Undo,
+  Redo,
+  ResetMaterial,
+  ToggleLogScale,
+  ToggleHelp,
+  CloseHelp,
+  Quit
+};
 
 struct Shortcut {
   int key;                // GLFW key code
-  bool needs_ctrl;        // only with Ctrl held; otherwise with or without Ctrl
+  bool needs_ctrl;        // only with Ctrl held; otherwise only without it
+  bool needs_shift;       // only with Shift held (with Ctrl); otherwise only without it
   std::string_view keys;  // as the help shows it
   std::string_view meaning;
   Action action;

@@ -1,5 +1,6 @@
 #include "app/window/window_options.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "app/cli/errors.h"
@@ -16,13 +17,23 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
     options.help = true;
     return options;
   }
-  const cli::ParsedFlags flags =
-      cli::ParsedFlags::parse(arguments, cli::material_flags_and({"capture", "view", cli::kModelFlag}), "skinlayer");
+  const cli::ParsedFlags flags = cli::ParsedFlags::parse(
+      arguments, cli::material_flags_and({"capture", "view", cli::kModelFlag, "test-actions"}), "skinlayer");
   const MaterialDocument document = cli::material_document_from_flags(flags, cli::AlbedoFlag::GreyOrRgb);
   options.material.layer = document.layer;
   if (options.material.layer.ordinates) choose_resolution(options.material.layer);  // checks the material's minimum
   options.material.albedo_rgb = document.albedo_rgb;
   options.material.model = cli::model_from_flags(flags, document.model.value_or(SubsurfaceModel::Stam));
+  options.document = document;
+  options.material_path = std::string(flags.value("material").value_or(""));
+  options.preset = std::string(flags.value("preset").value_or(""));
+  if (const std::optional<std::string_view> actions = flags.value("test-actions")) {
+    for (std::size_t start = 0; start <= actions->size();) {
+      const std::size_t end = std::min(actions->find(';', start), actions->size());
+      if (end > start) options.test_actions.emplace_back(actions->substr(start, end - start));
+      start = end + 1;
+    }
+  }
   if (const std::optional<std::string_view> view = flags.value("view")) {
     const std::optional<ViewKind> kind = parse_view_kind(*view);
     if (!kind) throw cli::UsageError("view = '" + std::string(*view) + "' is not one of sphere, polar, both, compare");
@@ -48,6 +59,8 @@ std::string window_usage() {
          "                       Lambert | Hanrahan-Krueger | the layer model)\n"
          "  --model M            the subsurface model of the sphere and plots: stam, lambert, hk\n"
          "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in [0, 1]\n"
+         "  --test-actions LIST  for tests: ';'-separated actions run once the first solve is shown (set NAME\n"
+         "                       VALUE, undo, redo, drop PATH, save PATH, preset NAME, discard, title)\n"
          "\n" +
          cli::material_flags_usage();
 }

@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "app/render/material_solve.h"
 #include "app/render/scene.h"
@@ -15,6 +16,10 @@ namespace skinlayer {
 
 struct WindowOptions {
   ColorMaterial material;                   // from --material/--preset and the material flags (RGB --albedo)
+  MaterialDocument document;                // the same with the file's or preset's name and description
+  std::string material_path;                // --material FILE (a material file or PNG), or empty
+  std::string preset;                       // --preset NAME, or empty
+  std::vector<std::string> test_actions;    // --test-actions "a;b;...": the tests' hook (previewer.h)
   ViewKind view = ViewKind::Both;           // --view sphere|polar|both|compare
   std::optional<std::string> capture_path;  // --capture: save the whole window there once solved, then exit
   bool help = false;                        // --help or -h

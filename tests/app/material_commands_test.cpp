@@ -3,6 +3,7 @@
 // with exit status 2 (1 for an unwritable output) that leaves no file behind.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -61,6 +62,12 @@ TEST_F(MaterialCommands, AWrittenMaterialEvaluatesBitForBitLikeItsFlags) {
     ASSERT_EQ(direct.exit_code, 0) << direct.err;
     ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
     EXPECT_EQ(from_file.out, direct.out) << "flags: " << ::testing::PrintToString(flags);
+    std::vector<std::string> albedo = {"albedo", "--theta-i", "0,45"};
+    albedo.insert(albedo.end(), flags.begin(), flags.end());
+    const std::vector<std::string> model_free(albedo.begin(), std::find(albedo.begin(), albedo.end(), "--model"));
+    EXPECT_EQ(run_skinlayer({"albedo", "--theta-i", "0,45", "--material", path("m.json")}).out,
+              run_skinlayer(model_free).out)
+        << "albedo reads the file too";
     // And to stdout: the same file.
     std::vector<std::string> print = {"material"};
     print.insert(print.end(), flags.begin(), flags.end());

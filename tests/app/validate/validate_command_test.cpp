@@ -37,6 +37,9 @@ TEST(ValidateCommand, QuickRunAgreesEverywhereAndWritesTheReport) {
     EXPECT_EQ(png.substr(1, 3), "PNG") << set.name;
     EXPECT_NE(report.find("## " + set.name + "\n"), std::string::npos) << set.name;
     EXPECT_NE(report.find("](" + set.name + ".png)"), std::string::npos) << set.name;
+    // The plot remembers its set's material, as every PNG skinlayer writes does.
+    const ProcessResult material = run_skinlayer({"material", "--material", (dir / (set.name + ".png")).string()});
+    EXPECT_NE(material.out.find("\"name\": \"" + set.name + "\""), std::string::npos) << material.err;
   }
   EXPECT_EQ(report.find("**disagrees**"), std::string::npos);
 }

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <regex>
 #include <string>
@@ -98,6 +100,63 @@ TEST(WindowSmoke, CaptureTakesMaterialFilesPresetsAndRgbAlbedoAndRemembersThem) 
     std::filesystem::remove(png);
   }
   std::filesystem::remove(json);
+}
+
+// The window's own test hook (--test-actions) drives undo, redo, drop and save as the keys and the mouse would;
+// the capture's material and the printed titles show the outcome.
+struct Scripted {
+  ProcessResult run;
+  std::string material;  // `skinlayer material --material capture.png`
+};
+
+Scripted run_scripted(const std::string& actions, const std::filesystem::path& config) {
+  const std::optional<std::string> xvfb_run = find_in_path("xvfb-run");
+  const std::filesystem::path png = temporary_png("skinlayer-window-scripted");
+  std::filesystem::remove(png);
+  Scripted result;
+  result.run = run_process({"env", "XDG_CONFIG_HOME=" + config.string(), *xvfb_run, "-a", "-s", "-screen 0 1280x720x24",
+                            SKINLAYER_EXECUTABLE, "--capture", png.string(), "--test-actions", actions});
+  if (result.run.exit_code == 0) {
+    result.material = run_process({SKINLAYER_EXECUTABLE, "material", "--material", png.string()}).out;
+  }
+  std::filesystem::remove(png);
+  return result;
+}
+
+TEST(WindowSmoke, UndoRedoDropAndSaveThroughTheWindowsTestHook) {
+  if (!find_in_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::filesystem::path dir = temporary_png("skinlayer-window-files").replace_extension("");
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const std::string file = (dir / "thin.json").string();
+  ASSERT_EQ(run_process({SKINLAYER_EXECUTABLE, "material", "--sigma", "0.2", "--T", "0.05", "-o", file}).exit_code, 0);
+
+  // Two edits, two undos, one redo: the first edit stands.
+  Scripted undo = run_scripted("set sigma 0.3;set g 0.5;undo;undo;redo", dir / "config");
+  ASSERT_EQ(undo.run.exit_code, 0) << undo.run.err;
+  EXPECT_NE(undo.material.find("\"sigma\": 0.3"), std::string::npos) << undo.material;
+  EXPECT_NE(undo.material.find("\"g\": 0.8"), std::string::npos) << undo.material;
+
+  // A drop over unsaved changes asks first; discarding them loads the dropped file, and the title names it.
+  Scripted drop = run_scripted("set g 0.3;drop " + file + ";title;discard;title", dir / "config");
+  ASSERT_EQ(drop.run.exit_code, 0) << drop.run.err;
+  EXPECT_NE(drop.run.out.find("title: skinlayer - untitled *\n"), std::string::npos) << drop.run.out;
+  EXPECT_NE(drop.run.out.find("title: skinlayer - thin.json\n"), std::string::npos) << drop.run.out;
+  EXPECT_NE(drop.material.find("\"sigma\": 0.2"), std::string::npos) << drop.material;
+  EXPECT_NE(drop.material.find("\"T\": 0.05"), std::string::npos) << drop.material;
+  EXPECT_NE(drop.material.find("\"g\": 0.8"), std::string::npos) << drop.material;
+
+  // Save as: the file holds the edit, the title loses its mark, and the recent list remembers it.
+  const std::string saved = (dir / "saved.json").string();
+  Scripted save = run_scripted("set albedo 0.6;title;save " + saved + ";title", dir / "config");
+  ASSERT_EQ(save.run.exit_code, 0) << save.run.err;
+  EXPECT_NE(save.run.out.find("title: skinlayer - saved.json\n"), std::string::npos) << save.run.out;
+  const ProcessResult reread = run_process({SKINLAYER_EXECUTABLE, "material", "--material", saved});
+  EXPECT_NE(reread.out.find("\"albedo\": 0.6"), std::string::npos) << reread.out;
+  std::ifstream recent(dir / "config" / "skinlayer" / "recent.json");
+  const std::string recent_text((std::istreambuf_iterator<char>(recent)), std::istreambuf_iterator<char>());
+  EXPECT_NE(recent_text.find(saved), std::string::npos) << recent_text;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(WindowSmoke, FlagsWithoutACommandOpenThePreviewer) {
