@@ -463,6 +463,8 @@ class Previewer {
       commands.push_back({FileCommand::Kind::LoadPreset, argument});
     } else if (verb == "discard" && dialog_.kind == FileDialog::Kind::ConfirmDiscard) {
       commands.push_back({FileCommand::Kind::Discard, ""});
+    } else if (verb == "quit") {
+      window_.request_close();  // as Ctrl+Q or the window's close button
     } else if (verb == "title") {
       out_ << "title: " << window_title(session_, state_.material, false) << "\n" << std::flush;
     } else if (verb == "set") {

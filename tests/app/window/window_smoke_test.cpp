@@ -159,6 +159,22 @@ TEST(WindowSmoke, UndoRedoDropAndSaveThroughTheWindowsTestHook) {
   std::filesystem::remove_all(dir);
 }
 
+// Quitting with unsaved changes asks first: the window is still there (it prints its title) until the changes are
+// discarded, and then it closes by itself.
+TEST(WindowSmoke, QuittingWithUnsavedChangesAsksFirst) {
+  const std::optional<std::string> xvfb_run = find_in_path("xvfb-run");
+  if (!xvfb_run) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const ProcessResult result = run_process({*xvfb_run, "-a", "-s", "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE,
+                                            "--test-actions", "set g 0.3;quit;title;discard"});
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("title: skinlayer - untitled *\n"), std::string::npos) << result.out;
+  // With nothing unsaved, quit quits at once: the action after it never runs.
+  const ProcessResult saved = run_process(
+      {*xvfb_run, "-a", "-s", "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE, "--test-actions", "quit;title"});
+  EXPECT_EQ(saved.exit_code, 0) << saved.err;
+  EXPECT_EQ(saved.out.find("title:"), std::string::npos) << saved.out;
+}
+
 TEST(WindowSmoke, FlagsWithoutACommandOpenThePreviewer) {
   // `skinlayer --sigma 0.3` is the previewer (here without a display: its one-line error), not an unknown command.
   const ProcessResult result =
