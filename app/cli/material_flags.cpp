@@ -91,8 +91,6 @@ std::string usage_entry(const ParameterInfo& info) {
 
 std::span<const std::string_view> material_flag_names() { return kMaterialFlags; }
 
-std::span<const std::string_view> material_source_flag_names() { return kSourceFlags; }
-
 std::vector<std::string_view> material_flags_and(std::initializer_list<std::string_view> own_flags) {
   std::vector<std::string_view> flags(kMaterialFlags.begin(), kMaterialFlags.end());
   flags.insert(flags.end(), kSourceFlags.begin(), kSourceFlags.end());

@@ -19,10 +19,8 @@ namespace skinlayer::cli {
 // The material flag names, without dashes (the parameters; not --material and --preset).
 std::span<const std::string_view> material_flag_names();
 
-// --material FILE and --preset NAME: where the material starts before its flags apply.
-std::span<const std::string_view> material_source_flag_names();
-
-// The material flag names and the source flags, followed by a command's own flags.
+// The material flag names and the source flags (--material FILE, --preset NAME: where the material starts before
+// its flags apply), followed by a command's own flags.
 std::vector<std::string_view> material_flags_and(std::initializer_list<std::string_view> own_flags);
 
 // How a command takes --albedo: one number, or also three "r,g,b" (render and the previewer).

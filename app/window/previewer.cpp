@@ -4,7 +4,6 @@
 
 #include <chrono>
 #include <deque>
-#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -27,6 +26,7 @@
 #include "app/window/file_panel.h"
 #include "app/window/glfw_window.h"
 #include "app/window/help_overlay.h"
+#include "app/window/material_files.h"
 #include "app/window/screenshot.h"
 #include "app/window/shortcuts.h"
 #include "app/window/ui_context.h"
@@ -55,14 +55,11 @@ class Previewer {
         window_(kWindowWidth, kWindowHeight, "skinlayer"),
         imgui_(window_.handle(), window_.content_scale()),
         history_(Edit{options.material, LightState{}}),
-        session_(initial_session(options)),
+        files_(initial_session(options), recent_files_path()),
         test_actions_(options.test_actions.begin(), options.test_actions.end()),
         worker_(post_empty_event) {
     state_.material = options.material;
     state_.view.view = options.view;
-    for (const PresetInfo& preset : preset_list()) preset_names_.push_back(preset.name);
-    recent_path_ = recent_files_path();
-    if (recent_path_) recent_ = read_recent_files(*recent_path_);
   }
 
   int run() {
@@ -71,9 +68,8 @@ class Previewer {
     while (!captured_) {
       if (window_.should_close()) {
         // Closing with unsaved changes asks first (never in capture mode, which edits nothing by hand).
-        if (capture_path_ || quit_confirmed_ || !unsaved(session_, state_.material)) break;
+        if (capture_path_ || files_.may_close(state_.material)) break;
         window_.cancel_close();
-        dialog_ = FileDialog{FileDialog::Kind::ConfirmDiscard, "", {FileCommand::Kind::Quit, ""}};
       }
       wait_events(timeout);
       timeout = frame();
@@ -151,7 +147,7 @@ class Previewer {
     for (const std::string& path : window_.take_dropped_paths()) {
       file_commands.push_back({FileCommand::Kind::OpenPath, path});
     }
-    if (const FileCommand confirmed = file_dialogs(dialog_); confirmed.kind != FileCommand::Kind::None) {
+    if (const FileCommand confirmed = file_dialogs(files_.dialog()); confirmed.kind != FileCommand::Kind::None) {
       file_commands.push_back(confirmed);
     }
     run_test_action(file_commands, undo, redo);
@@ -160,7 +156,7 @@ class Previewer {
     if (redo) step_history(history_.redo(current_edit()));
     // One slider drag, or one drag of the light on the sphere, is one undo step: it commits on release.
     history_.observe(current_edit(), ImGui::IsAnyItemActive());
-    window_.set_title(window_title(session_, state_.material, imgui_.unicode_labels()));
+    window_.set_title(window_title(files_.session(), state_.material, imgui_.unicode_labels()));
     submit_if_needed();
 
     const ImGuiIO& io = ImGui::GetIO();
@@ -312,138 +308,22 @@ class Previewer {
   }
 
   FileSectionInput file_section_input() const {
-    const bool unicode = imgui_.unicode_labels();
-    std::string title = window_title(session_, state_.material, unicode);
-    title = title.substr(title.find(unicode ? "\u2014 " : "- ") + (unicode ? std::string("\u2014 ").size() : 2));
-    return FileSectionInput{title,
-                            unsaved(session_, state_.material),
-                            preset_names_,
-                            recent_,
-                            file_message_,
-                            history_.undo_steps(),
-                            history_.redo_steps()};
+    FileSectionInput input = files_.section_input(state_.material, imgui_.unicode_labels());
+    input.undo_steps = history_.undo_steps();
+    input.redo_steps = history_.redo_steps();
+    return input;
   }
 
-  void remember_recent(const std::string& path) {
-    if (!recent_path_) return;
-    recent_ = with_recent_file(recent_, path);
-    try {
-      write_recent_files(*recent_path_, recent_);
-    } catch (const std::exception&) {
-      // The list is a convenience: an unwritable config folder must not stop the work.
-    }
-  }
-
-  // Commands that replace the material ask first when it has unsaved changes.
   void run_file_command(const FileCommand& command) {
-    const bool replaces = command.kind == FileCommand::Kind::OpenPath || command.kind == FileCommand::Kind::LoadPreset;
-    if (replaces && unsaved(session_, state_.material)) {
-      dialog_ = FileDialog{FileDialog::Kind::ConfirmDiscard, "", command};
-      return;
-    }
-    switch (command.kind) {
-      case FileCommand::Kind::None:
-        break;
-      case FileCommand::Kind::Open:
-        dialog_ = FileDialog{FileDialog::Kind::Open, chooser_start(), {}};
-        break;
-      case FileCommand::Kind::OpenPath:
-        open_material(command.argument);
-        break;
-      case FileCommand::Kind::LoadPreset:
-        load_preset(command.argument);
-        break;
-      case FileCommand::Kind::Save:
-        if (!session_.path.empty()) {
-          save_material(session_.path);
-        } else if (dialog_.kind != FileDialog::Kind::ConfirmDiscard) {
-          dialog_ = FileDialog{FileDialog::Kind::SaveAs, chooser_start(), {}};
-        }
-        // Saving from the unsaved-changes question goes on with what it interrupted (after a Save as if needed).
-        if (dialog_.kind == FileDialog::Kind::ConfirmDiscard) run_after_confirm(/*saved=*/true);
-        break;
-      case FileCommand::Kind::SaveAs:
-        if (command.argument.empty()) {
-          dialog_ = FileDialog{FileDialog::Kind::SaveAs, chooser_start(), {}};
-        } else {
-          save_material(command.argument);
-          if (pending_after_save_.kind != FileCommand::Kind::None && !unsaved(session_, state_.material)) {
-            run_file_command(std::exchange(pending_after_save_, {}));
-          }
-        }
-        break;
-      case FileCommand::Kind::Discard:
-        run_after_confirm(/*saved=*/false);
-        break;
-      case FileCommand::Kind::Quit:
-        quit_confirmed_ = true;
-        window_.request_close();
-        break;
-    }
-  }
-
-  // The unsaved-changes question was answered with Save or Discard: go on with what it interrupted.
-  void run_after_confirm(bool saved) {
-    const FileCommand next = std::exchange(dialog_, {}).after_discard;
-    if (saved && unsaved(session_, state_.material)) {
-      pending_after_save_ = next;  // saving needs a path first (Save as); go on once it is saved
-      dialog_ = FileDialog{FileDialog::Kind::SaveAs, chooser_start(), {}};
-      return;
-    }
-    session_.saved = state_.material;  // discarded: replacing the material no longer asks
-    run_file_command(next);
-  }
-
-  std::string chooser_start() const {
-    if (!session_.path.empty()) return session_.path;
-    std::error_code error;
-    const std::string folder = std::filesystem::current_path(error).string() + "/";
-    return session_.name.empty() ? folder : folder + session_.name + ".json";
-  }
-
-  void open_material(const std::string& path) {
-    try {
-      const MaterialDocument document = read_material_file(path);
-      state_.material = color_material(document);
-      session_ = opened_session(document, path);
-      file_message_ = "opened " + path;
-      if (!session_.path.empty()) remember_recent(path);
-    } catch (const std::exception& error) {
-      file_message_ = error.what();
-    }
-  }
-
-  void load_preset(const std::string& name) {
-    try {
-      const MaterialDocument document = preset_material(name);
-      state_.material = color_material(document);
-      session_ = untitled_session(state_.material, "preset " + name);
-      session_.name = document.name;
-      session_.description = document.description;
-      file_message_ = document.description;
-    } catch (const std::exception& error) {
-      file_message_ = error.what();
-    }
-  }
-
-  void save_material(std::string path) {
-    if (std::filesystem::path(path).extension().empty()) path += ".json";
-    try {
-      write_material_file(document_to_save(session_, state_.material), path);
-      session_.path = path;
-      session_.saved = state_.material;
-      file_message_ = "saved " + path;
-      remember_recent(path);
-    } catch (const std::exception& error) {
-      file_message_ = error.what();
-    }
+    if (files_.run(command, state_.material)) window_.request_close();
   }
 
   // --test-actions: one action a frame, once the shown result answers the current parameters, so that each edit
   // is solved and committed as its own undo step, as a person's would be.
   void run_test_action(std::vector<FileCommand>& commands, bool& undo, bool& redo) {
-    if (test_actions_.empty() || !shown_ || solving() || dialog_.kind == FileDialog::Kind::Open ||
-        dialog_.kind == FileDialog::Kind::SaveAs) {
+    const FileDialog::Kind dialog = files_.dialog().kind;
+    if (test_actions_.empty() || !shown_ || solving() || dialog == FileDialog::Kind::Open ||
+        dialog == FileDialog::Kind::SaveAs) {
       return;
     }
     const std::string action = test_actions_.front();
@@ -461,29 +341,31 @@ class Previewer {
       commands.push_back({FileCommand::Kind::SaveAs, argument});
     } else if (verb == "preset") {
       commands.push_back({FileCommand::Kind::LoadPreset, argument});
-    } else if (verb == "discard" && dialog_.kind == FileDialog::Kind::ConfirmDiscard) {
+    } else if (verb == "discard") {
+      if (dialog != FileDialog::Kind::ConfirmDiscard) throw std::runtime_error("test action: nothing to discard");
       commands.push_back({FileCommand::Kind::Discard, ""});
     } else if (verb == "quit") {
       window_.request_close();  // as Ctrl+Q or the window's close button
     } else if (verb == "title") {
-      out_ << "title: " << window_title(session_, state_.material, false) << "\n" << std::flush;
+      out_ << "title: " << window_title(files_.session(), state_.material, false) << "\n" << std::flush;
     } else if (verb == "set") {
       const std::size_t gap = argument.find(' ');
       const std::string name = argument.substr(0, gap);
       const double value = std::stod(argument.substr(gap + 1));
       Material& layer = state_.material.layer;
-      if (name == "sigma")
+      if (name == "sigma") {
         layer.sigma = value;
-      else if (name == "eta")
+      } else if (name == "eta") {
         layer.eta = value;
-      else if (name == "g")
+      } else if (name == "g") {
         layer.g = value;
-      else if (name == "T")
+      } else if (name == "T") {
         layer.tau = optical_depth_from_transparency(value);
-      else if (name == "albedo")
+      } else if (name == "albedo") {
         state_.material.albedo_rgb = {value, value, value};
-      else
+      } else {
         throw std::runtime_error("test action: unknown parameter " + name);
+      }
     } else {
       throw std::runtime_error("test action: unknown action '" + action + "'");
     }
@@ -533,14 +415,7 @@ class Previewer {
   int settled_frames_ = 0;
   bool captured_ = false;
   EditHistory history_;
-  MaterialSession session_;
-  FileDialog dialog_;
-  FileCommand pending_after_save_;  // what a Save in the unsaved-changes question interrupted
-  bool quit_confirmed_ = false;
-  std::string file_message_;
-  std::vector<std::string> preset_names_;
-  std::optional<std::filesystem::path> recent_path_;
-  std::vector<std::string> recent_;
+  MaterialFiles files_;
   std::deque<std::string> test_actions_;
   SolveWorker worker_;  // last: destroyed (joined) first, while GLFW, which it wakes, is still initialized
 };
