@@ -373,7 +373,10 @@ class Previewer {
 
   // The material of the picture on screen (the shown result's; the sliders may be ahead of it).
   MaterialDocument shown_material() const {
-    return material_document(shown_ ? shown_->request.material : state_.material);
+    MaterialDocument document = material_document(shown_ ? shown_->request.material : state_.material);
+    document.name = files_.session().name;
+    document.description = files_.session().description;
+    return document;
   }
 
   // How the picture was drawn, for its metadata.

@@ -146,6 +146,12 @@ TEST(WindowSmoke, UndoRedoDropAndSaveThroughTheWindowsTestHook) {
   EXPECT_NE(drop.material.find("\"T\": 0.05"), std::string::npos) << drop.material;
   EXPECT_NE(drop.material.find("\"g\": 0.8"), std::string::npos) << drop.material;
 
+  // A preset from the presets menu replaces the material; the title names it.
+  Scripted preset = run_scripted("preset wax;title", dir / "config");
+  ASSERT_EQ(preset.run.exit_code, 0) << preset.run.err;
+  EXPECT_NE(preset.run.out.find("title: skinlayer - preset wax\n"), std::string::npos) << preset.run.out;
+  EXPECT_NE(preset.material.find("\"name\": \"wax\""), std::string::npos) << preset.material;
+
   // Save as: the file holds the edit, the title loses its mark, and the recent list remembers it.
   const std::string saved = (dir / "saved.json").string();
   Scripted save = run_scripted("set albedo 0.6;title;save " + saved + ";title", dir / "config");
