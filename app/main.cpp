@@ -45,5 +45,5 @@ int main(int argc, char** argv) {
   skinlayer::retain_freed_heap_memory();
   const std::vector<std::string_view> arguments(argv + 1, argv + argc);
   return skinlayer::cli::run_reporting_errors(std::cerr,
-                                              [&arguments, argc, argv] { return dispatch(arguments, argc, argv); });
+                                             [&arguments, argc, argv] { return dispatch(arguments, argc, argv); });
 }

@@ -31,8 +31,9 @@ Eigen::MatrixXd bottom_bounce_image(const InterfaceKernels& kernels, const Eigen
 bool bottom_bounce_matters(const Eigen::MatrixXd& image_mode0, std::span<const Eigen::MatrixXd> reflection_mode0,
                            double fraction = 0.4);
 
-// The finer ordinate count for the image: four times the automatic rule's need for the top's refracted lobe
-// (1.75 ordinates per lobe width sigma (1 - 1/eta), core/solver.cpp), but at least 96 (the ripple is worst where the
+// The finer ordinate count for the image: four times the base need of the top's refracted lobe, 1.75 ordinates per
+// lobe width sigma (1 - 1/eta) (core/solver.cpp's rule away from index matching, where it asks up to 6), but at
+// least 96 (the ripple is worst where the
 // light leaves near the critical angle, whatever sigma: at sigma 0.5, 52 ordinates left 1.0%, 96 left 0.37%), a
 // multiple of 4, at most 256, and at least the solve's own N (equal to it: no correction is needed).
 int bottom_bounce_ordinates(int ordinates, const RoughDielectric& top);

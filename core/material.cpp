@@ -46,11 +46,17 @@ const ParameterInfo& parameter_info(std::string_view flag) {
   throw std::logic_error("unknown parameter '" + std::string(flag) + "'");
 }
 
+std::string range_text(const ParameterInfo& info) {
+  // Appended, not "[" + ...: GCC 12 reports a false -Wrestrict overlap for a literal prepended to a temporary.
+  std::string text = "[";
+  text.append(format_number(info.min)).append(", ").append(format_number(info.max)).append("]");
+  return text;
+}
+
 void check_parameter(const ParameterInfo& info, double value) {
   if (!(value >= info.min && value <= info.max)) {  // false for NaN too
-    throw ParameterError(std::string(info.flag) + " = " + format_number(value) +
-                         " is out of range; valid range is [" + format_number(info.min) + ", " +
-                         format_number(info.max) + "] (" + std::string(info.description) + ")");
+    throw ParameterError(std::string(info.flag) + " = " + format_number(value) + " is out of range; valid range is " +
+                         range_text(info) + " (" + std::string(info.description) + ")");
   }
 }
 

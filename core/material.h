@@ -64,6 +64,9 @@ struct ParameterInfo {
 std::span<const ParameterInfo> parameter_table();
 const ParameterInfo& parameter_info(std::string_view flag);
 
+// "[<min>, <max>]", as the range errors and the help print it ("%.10g"; "inf" for an unbounded maximum).
+std::string range_text(const ParameterInfo& info);
+
 // Throws ParameterError unless value is a number in [info.min, info.max]. The message reads
 // "<flag> = <value> is out of range; valid range is [<min>, <max>] (<description>)".
 void check_parameter(const ParameterInfo& info, double value);

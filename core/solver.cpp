@@ -296,7 +296,7 @@ int refracted_lobe_ordinates(const LayerGeometry& geometry) {
 // towards grazing; Catmull-Rom between its nodes must follow the sharpest lobe the tables hold. The unscattered
 // transmission is exact outside them (core/unscattered_light.h); three sharp features stay in them:
 // - the unscattered light's reflection off a rough bottom (Beckmann sigma3, seen through the top about
-//   s = sigma3 eta wide), where it is not buried under scattered light: T^2 >= Omega (1 - T) / 4;
+//   s = sigma3 eta wide), where it is not buried under scattered light: T^2 > Omega (1 - T) / 4;
 // - single forward scattering (Henyey-Greenstein, half width 0.77 (1 - g) / sqrt(g) radians) of light that crossed
 //   the top's refracted lobe, widened by the exit's lobe, where the layer transmits (T >= 0.2);
 // - a near-matched interface's critical angle lies near grazing, where its refracted lobe (w) is stretched outside
@@ -324,9 +324,8 @@ int lobe_table_size(const Material& material, const LayerGeometry& geometry) {
   }
   for (const RoughDielectric* interface :
        {geometry.top_open ? nullptr : &geometry.top, geometry.base == LayerBase::Rough ? &geometry.bottom : nullptr}) {
-    if (interface && near_matched(*interface) > 0.0) {
-      spacing = std::min(spacing, 0.8 * refracted_lobe_width(*interface) / near_matched(*interface));
-    }
+    const double nearness = interface ? near_matched(*interface) : 0.0;
+    if (nearness > 0.0) spacing = std::min(spacing, 0.8 * refracted_lobe_width(*interface) / nearness);
   }
   const int nodes = ceil_to_int(1.0 + kQuarterPiSquared / spacing - 1e-9);
   return std::clamp((nodes + 7) / 8 * 8, kDefaultTableSize, 96);

@@ -22,9 +22,7 @@ constexpr std::string_view kDefaultThetas = "0,30,60,80";
 // The comma-separated list of incidence angles in degrees, each a number in [0, 90].
 std::vector<double> parse_theta_list(std::string_view list) {
   std::vector<double> thetas;
-  while (true) {
-    const std::size_t comma = list.find(',');
-    const std::string_view item = list.substr(0, comma);
+  for (const std::string_view item : split_list(list, ',')) {
     const std::optional<double> value = parse_number(item);
     if (!value) {
       throw UsageError(std::string(kThetaFlag) + " = " + quoted(item) + " " + number_rejection(item) +
@@ -36,9 +34,8 @@ std::vector<double> parse_theta_list(std::string_view list) {
                        " is out of range; valid range is [0, 90] (degrees)");
     }
     thetas.push_back(*value);
-    if (comma == std::string_view::npos) return thetas;
-    list.remove_prefix(comma + 1);
   }
+  return thetas;
 }
 
 }  // namespace

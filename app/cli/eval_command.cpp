@@ -41,8 +41,7 @@ int run_eval_command(std::span<const std::string_view> arguments, std::istream& 
   const ParsedFlags flags = ParsedFlags::parse(arguments, material_flags_and({kModelFlag}), "skinlayer eval");
   const MaterialDocument document = material_document_from_flags(flags);
   const Material material = single_channel(document);
-  const LayerTables tables =
-      solve_model(material, model_from_flags(flags, document.model.value_or(SubsurfaceModel::Stam)));
+  const LayerTables tables = solve_model(material, model_from_flags(flags, document.model));
   const std::vector<AngleRow> rows = read_angle_rows(in);
 
   NumericTable table({"theta_i", "theta_o", "phi"}, {"brdf_surface", "brdf_subsurface", "brdf", "btdf"});

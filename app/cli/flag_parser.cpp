@@ -22,6 +22,16 @@ bool wants_help(std::span<const std::string_view> arguments) {
                      [](std::string_view argument) { return argument == "--help" || argument == "-h"; });
 }
 
+std::vector<std::string_view> split_list(std::string_view text, char separator) {
+  std::vector<std::string_view> items;
+  for (std::size_t start = 0;;) {
+    const std::size_t end = text.find(separator, start);
+    items.push_back(text.substr(start, end - start));
+    if (end == std::string_view::npos) return items;
+    start = end + 1;
+  }
+}
+
 ParsedFlags ParsedFlags::parse(std::span<const std::string_view> arguments,
                                std::span<const std::string_view> known_flags, std::string_view command,
                                std::span<const std::string_view> known_switches) {

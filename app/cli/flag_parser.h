@@ -13,6 +13,10 @@ namespace skinlayer::cli {
 // True when any argument is "--help" or "-h".
 bool wants_help(std::span<const std::string_view> arguments);
 
+// The items of a list-valued flag ("0,30,60", "0.9,0.6,0.5"): the text split at every separator, empty items kept
+// ("" is one empty item, "a," is "a" and ""), views into `text`.
+std::vector<std::string_view> split_list(std::string_view text, char separator);
+
 // The flags given to one command, each at most once, by name without the dashes.
 class ParsedFlags {
  public:

@@ -37,7 +37,7 @@ int run_material_command(std::span<const std::string_view> arguments, std::ostre
   const std::vector<std::string_view> known = material_flags_and({kModelFlag, "name", "description", "output"});
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer material");
   MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
-  document.model = model_from_flags(flags, document.model.value_or(SubsurfaceModel::Stam));
+  document.model = model_from_flags(flags, document.model);
   if (const auto name = flags.value("name")) document.name = std::string(*name);
   if (const auto description = flags.value("description")) document.description = std::string(*description);
   if (const auto path = flags.value("output")) {

@@ -24,12 +24,6 @@ constexpr std::array<std::string_view, 10> kMaterialFlags = {
 };
 constexpr std::array<std::string_view, 2> kSourceFlags = {"material", "preset"};
 
-std::string range_text(const ParameterInfo& info) {
-  std::string text = "[";
-  text.append(format_short(info.min)).append(", ").append(format_short(info.max)).append("]");
-  return text;
-}
-
 // The flag's value checked against its row of the parameter table, or nullopt when the flag is absent.
 std::optional<double> checked_number(const ParsedFlags& flags, std::string_view name) {
   const std::optional<std::string_view> text = flags.value(name);
@@ -100,13 +94,7 @@ std::vector<std::string_view> material_flags_and(std::initializer_list<std::stri
 
 std::array<double, 3> albedo_rgb_from_text(std::string_view text) {
   std::array<double, 3> rgb{};
-  std::vector<std::string_view> parts;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = text.find(',', start);
-    parts.push_back(text.substr(start, comma - start));
-    if (comma == std::string_view::npos) break;
-    start = comma + 1;
-  }
+  const std::vector<std::string_view> parts = split_list(text, ',');
   if (parts.size() != 1 && parts.size() != 3) {
     throw UsageError("albedo = " + quoted(text) + " must be one number or three (r,g,b), each in [0, 1]");
   }

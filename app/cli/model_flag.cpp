@@ -8,9 +8,9 @@
 
 namespace skinlayer::cli {
 
-SubsurfaceModel model_from_flags(const ParsedFlags& flags, SubsurfaceModel fallback) {
+SubsurfaceModel model_from_flags(const ParsedFlags& flags, std::optional<SubsurfaceModel> fallback) {
   const std::optional<std::string_view> text = flags.value(kModelFlag);
-  if (!text) return fallback;
+  if (!text) return fallback.value_or(SubsurfaceModel::Stam);
   const std::optional<SubsurfaceModel> model = parse_subsurface_model(*text);
   if (!model) {
     throw UsageError("model = " + quoted(*text) +

@@ -84,8 +84,8 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
       material_flags_and({kModelFlag, "light-theta", "light-phi", "view", "size", "exposure", "scale", "output"});
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer render");
   const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
-  ColorMaterial material{document.layer, document.albedo_rgb,
-                         model_from_flags(flags, document.model.value_or(SubsurfaceModel::Stam))};
+  ColorMaterial material = color_material(document);
+  material.model = model_from_flags(flags, document.model);
   const std::optional<std::string_view> output = flags.value("output");
   if (!output) throw UsageError("render needs -o FILE.png (the picture to write)");
   const ViewKind view = parse_view(flags.value("view").value_or("both"));

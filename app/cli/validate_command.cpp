@@ -98,8 +98,9 @@ int run_validate_command(std::span<const std::string_view> arguments, std::ostre
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer validate", switches);
   const bool quick = flags.has("quick");
   const std::uint64_t seed = flags.has("seed") ? whole_number("seed", *flags.value("seed"), 0, 1e15) : 1;
-  const int threads = flags.has("threads") ? static_cast<int>(whole_number("threads", *flags.value("threads"), 1, 256))
-                                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = flags.has("threads")
+                          ? static_cast<int>(whole_number("threads", *flags.value("threads"), 1, 256))
+                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const std::vector<validation::ValidationSet> sets = chosen_sets(flags.value("set"));
   const std::filesystem::path dir{std::string(flags.value("output").value_or("validation"))};
   std::error_code error;
@@ -129,8 +130,8 @@ int run_validate_command(std::span<const std::string_view> arguments, std::ostre
           << std::flush;
     };
     char header[256];
-    std::snprintf(header, sizeof header, "[%zu/%zu] %s: %s, θi %g°, %s paths\n", k + 1, sets.size(), set.name.c_str(),
-                  set.description.c_str(), set.theta_i_deg, with_thousands(options.paths).c_str());
+    std::snprintf(header, sizeof header, "[%zu/%zu] %s: %s, θi %g°, %s paths\n", k + 1, sets.size(),
+                  set.name.c_str(), set.description.c_str(), set.theta_i_deg, with_thousands(options.paths).c_str());
     out << header << std::flush;
     results.push_back(validation::run_validation_set(set, options));
     validation::print_set_table(out, results.back());
@@ -150,8 +151,8 @@ int run_validate_command(std::span<const std::string_view> arguments, std::ostre
   validation::print_summary(out, results);
   validation::write_markdown_report(dir, results, {quick ? "quick" : "full", seed, threads, seconds});
   char footer[320];
-  std::snprintf(footer, sizeof footer, "wrote %s and %zu plots in %.1f s\n", (dir / "validation.md").string().c_str(),
-                results.size(), seconds);
+  std::snprintf(footer, sizeof footer, "wrote %s and %zu plots in %.1f s\n",
+                (dir / "validation.md").string().c_str(), results.size(), seconds);
   out << footer;
   const bool all_agree =
       std::all_of(results.begin(), results.end(), [](const validation::SetResult& r) { return r.agrees(); });

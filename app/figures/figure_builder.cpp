@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
-#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "app/cli/numbers.h"
 #include "app/figures/model_spheres.h"
@@ -25,8 +26,8 @@ struct Sample {
 };
 
 struct Lobe {
-  std::string curve;  // the CSV's curve label
-  std::string value;  // the varied parameter's value
+  std::string curve;   // the CSV's curve label
+  std::string value;   // the varied parameter's value
   LayerParams params;
   SubsurfaceModel model;
   double theta_i_deg;
@@ -45,7 +46,7 @@ Lobe sample_lobe(const FigureCurve& curve, FigureKind kind, SolveCache& cache) {
   const Material material = curve.params.material();
   const double theta_i = degrees_to_radians(curve.theta_i_deg);
   const LayerTables* tables = kind == FigureKind::SurfaceLobes ? nullptr : &cache.tables(curve.params, curve.model);
-  const RoughDielectric interface { material.eta, material.sigma };
+  const RoughDielectric interface{material.eta, material.sigma};
   const Vec3 wi = direction_from_angles(theta_i, 0.0);
   for (int s = -90; s <= 90; s += kStepDeg) {
     const double theta_o = degrees_to_radians(theta_of(s)), phi = degrees_to_radians(phi_of(s));
@@ -81,17 +82,16 @@ void write_csv(const std::vector<Lobe>& lobes, const FigureSpec& spec, const std
   for (const Lobe& lobe : lobes) {
     const std::string material = std::string(subsurface_model_name(lobe.model)) + "," +
                                  format_shortest(lobe.params.sigma) + "," + format_shortest(lobe.params.eta) + "," +
-                                 format_shortest(lobe.params.transparency) + "," + format_shortest(lobe.params.albedo) +
-                                 "," + format_shortest(lobe.params.g);
+                                 format_shortest(lobe.params.transparency) + "," +
+                                 format_shortest(lobe.params.albedo) + "," + format_shortest(lobe.params.g);
     const bool surface = spec.kind == FigureKind::SurfaceLobes;
     for (const char side : {'R', 'T'}) {
-      const char* quantity =
-          side == 'R' ? (surface ? "brdf_surface" : "brdf_subsurface") : (surface ? "interface_btdf" : "btdf");
+      const char* quantity = side == 'R' ? (surface ? "brdf_surface" : "brdf_subsurface")
+                                         : (surface ? "interface_btdf" : "btdf");
       for (const Sample& s : side == 'R' ? lobe.reflection : lobe.transmission) {
-        out << csv_field(lobe.curve) << ',' << spec.parameter << ',' << lobe.value << ','
-            << format_shortest(lobe.theta_i_deg) << ',' << format_shortest(theta_of(s.signed_theta_deg)) << ','
-            << format_shortest(phi_of(s.signed_theta_deg)) << ',' << side << ',' << quantity << ','
-            << format_number(s.f);
+        out << csv_field(lobe.curve) << ',' << spec.parameter << ',' << lobe.value << ',' << format_shortest(lobe.theta_i_deg)
+            << ',' << format_shortest(theta_of(s.signed_theta_deg)) << ',' << format_shortest(phi_of(s.signed_theta_deg))
+            << ',' << side << ',' << quantity << ',' << format_number(s.f);
         if (spec.rescale_to_peak) out << ',' << format_number(lobe.peak > 0.0 ? s.f / lobe.peak : 0.0);
         out << ',' << material << '\n';
       }
@@ -131,15 +131,15 @@ PngText figure_metadata(const FigureSpec& spec) {
 }  // namespace
 
 const LayerTables& SolveCache::tables(const LayerParams& params, SubsurfaceModel model) {
-  const auto key =
-      std::make_tuple(params.sigma, params.eta, params.transparency, params.albedo, params.g, static_cast<int>(model));
+  const auto key = std::make_tuple(params.sigma, params.eta, params.transparency, params.albedo, params.g,
+                                   static_cast<int>(model));
   auto found = solved_.find(key);
   if (found == solved_.end()) found = solved_.emplace(key, solve_model(params.material(), model)).first;
   return found->second;
 }
 
 FigureSize build_figure(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, SolveCache& cache,
-                        int size) {
+                  int size) {
   std::vector<Lobe> lobes;
   if (spec.kind == FigureKind::ModelSpheres) {
     // The data behind the spheres: each model's lobes per color channel (Omega = that channel's albedo).
@@ -157,9 +157,8 @@ FigureSize build_figure(const FigureSpec& spec, const std::filesystem::path& dir
     write_png(image, (dir / (spec.name + ".png")).string(), {figure_metadata(spec)});
     return {image.width, image.height};
   }
-  PolarPlot plot{
-      spec.title,       spec.subtitle,       spec.rescale_to_peak ? "relative to each peak" : "1/sr", {}, size,
-      spec.log_decades, spec.separate_scales};
+  PolarPlot plot{spec.title, spec.subtitle, spec.rescale_to_peak ? "relative to each peak" : "1/sr", {}, size,
+                 spec.log_decades, spec.separate_scales};
   for (std::size_t k = 0; k < spec.curves.size(); ++k) {
     lobes.push_back(sample_lobe(spec.curves[k], spec.kind, cache));
     const Lobe& lobe = lobes.back();

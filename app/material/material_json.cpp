@@ -29,12 +29,6 @@ std::string joined(std::initializer_list<std::string_view> names) {
   return text;
 }
 
-std::string range_of(const ParameterInfo& info) {
-  char text[96];
-  std::snprintf(text, sizeof text, "[%.10g, %.10g]", info.min, info.max);
-  return text;
-}
-
 // Reads one document, naming the file and the key path ("layers[0].g") in every error.
 class DocumentReader {
  public:
@@ -73,7 +67,7 @@ class DocumentReader {
   double parameter(const Json& value, const std::string& path, std::string_view flag) const {
     const ParameterInfo& info = parameter_info(flag);
     if (!value.is_number()) {
-      fail(path, "must be a number in " + range_of(info) + " (" + std::string(info.description) + "), not " +
+      fail(path, "must be a number in " + range_text(info) + " (" + std::string(info.description) + "), not " +
                      type_name(value));
     }
     const double number = value.get<double>();
@@ -88,7 +82,7 @@ class DocumentReader {
   double required_parameter(const Json& object, const std::string& path, std::string_view key,
                             std::string_view flag) const {
     const ParameterInfo& info = parameter_info(flag);
-    return parameter(required(object, path, key, std::string(info.description) + ", a number in " + range_of(info)),
+    return parameter(required(object, path, key, std::string(info.description) + ", a number in " + range_text(info)),
                      join(path, key), flag);
   }
 

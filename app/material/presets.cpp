@@ -16,6 +16,8 @@ namespace {
 
 constexpr std::string_view kExtension = ".json";
 
+}  // namespace
+
 std::vector<std::string> preset_names() {
   std::vector<std::string> names;
   for (const std::string_view file : preset_file_names()) {
@@ -24,8 +26,6 @@ std::vector<std::string> preset_names() {
   std::sort(names.begin(), names.end());
   return names;
 }
-
-}  // namespace
 
 std::vector<PresetInfo> preset_list() {
   std::vector<PresetInfo> list;

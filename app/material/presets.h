@@ -15,7 +15,10 @@ struct PresetInfo {
   std::string description;
 };
 
-// Every preset, in name order.
+// Every preset's name, in order (no file is parsed).
+std::vector<std::string> preset_names();
+
+// Every preset, in name order, with its description (each file parsed).
 std::vector<PresetInfo> preset_list();
 
 // The preset's material. Throws MaterialFileError for an unknown name, listing the known ones.

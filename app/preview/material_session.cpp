@@ -35,10 +35,12 @@ MaterialDocument document_to_save(const MaterialSession& session, const ColorMat
   return document;
 }
 
+std::string session_name(const MaterialSession& session) {
+  return session.path.empty() ? session.label : std::filesystem::path(session.path).filename().string();
+}
+
 std::string window_title(const MaterialSession& session, const ColorMaterial& current, bool unicode) {
-  const std::string shown =
-      session.path.empty() ? session.label : std::filesystem::path(session.path).filename().string();
-  std::string title = (unicode ? "skinlayer \u2014 " : "skinlayer - ") + shown;
+  std::string title = (unicode ? "skinlayer \u2014 " : "skinlayer - ") + session_name(session);
   if (unsaved(session, current)) title += unicode ? " \u2022" : " *";
   return title;
 }

@@ -28,7 +28,10 @@ bool unsaved(const MaterialSession& session, const ColorMaterial& current);
 // The document to write for the current material: the session's name and description.
 MaterialDocument document_to_save(const MaterialSession& session, const ColorMaterial& current);
 
-// "skinlayer — skin.json", with " •" (or " *" without Unicode) when there are unsaved changes.
+// What the session is called: the file's name ("skin.json"), else its label ("untitled", "preset wax").
+std::string session_name(const MaterialSession& session);
+
+// "skinlayer — " and session_name, with " •" (or " *" without Unicode) when there are unsaved changes.
 std::string window_title(const MaterialSession& session, const ColorMaterial& current, bool unicode);
 
 }  // namespace skinlayer

@@ -10,27 +10,20 @@
 
 namespace skinlayer {
 
+namespace {
+
+// Each view's name on the command line and in the pictures' metadata, in ViewKind order.
+constexpr std::array<std::string_view, 4> kViewKindNames = {"sphere", "polar", "both", "compare"};
+
+}  // namespace
+
 std::optional<ViewKind> parse_view_kind(std::string_view name) {
-  if (name == "sphere") return ViewKind::Sphere;
-  if (name == "polar") return ViewKind::Polar;
-  if (name == "both") return ViewKind::Both;
-  if (name == "compare") return ViewKind::Compare;
-  return std::nullopt;
+  const auto found = std::find(kViewKindNames.begin(), kViewKindNames.end(), name);
+  if (found == kViewKindNames.end()) return std::nullopt;
+  return static_cast<ViewKind>(found - kViewKindNames.begin());
 }
 
-std::string_view view_kind_name(ViewKind view) {
-  switch (view) {
-    case ViewKind::Sphere:
-      return "sphere";
-    case ViewKind::Polar:
-      return "polar";
-    case ViewKind::Both:
-      return "both";
-    case ViewKind::Compare:
-      return "compare";
-  }
-  return "both";
-}
+std::string_view view_kind_name(ViewKind view) { return kViewKindNames[static_cast<std::size_t>(view)]; }
 
 std::array<double, 3> light_direction(double theta, double phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};

@@ -25,7 +25,7 @@ struct FileDialog {
 };
 
 struct FileSectionInput {
-  std::string title;  // the open file, as the window title shows it
+  std::string title;  // the open file's name (session_name)
   bool unsaved = false;
   std::vector<std::string> presets;  // names
   std::vector<std::string> recent;   // paths, newest first

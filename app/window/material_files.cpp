@@ -12,20 +12,12 @@ namespace skinlayer {
 
 MaterialFiles::MaterialFiles(MaterialSession session, std::optional<std::filesystem::path> recent_list)
     : session_(std::move(session)), recent_list_(std::move(recent_list)) {
-  for (const PresetInfo& preset : preset_list()) preset_names_.push_back(preset.name);
+  preset_names_ = preset_names();
   if (recent_list_) recent_ = read_recent_files(*recent_list_);
 }
 
-FileSectionInput MaterialFiles::section_input(const ColorMaterial& material, bool unicode) const {
-  const std::string title = window_title(session_, material, unicode);
-  const std::string separator = unicode ? "\u2014 " : "- ";
-  return FileSectionInput{title.substr(title.find(separator) + separator.size()),
-                          unsaved(session_, material),
-                          preset_names_,
-                          recent_,
-                          message_,
-                          0,
-                          0};
+FileSectionInput MaterialFiles::section_input(const ColorMaterial& material) const {
+  return FileSectionInput{session_name(session_), unsaved(session_, material), preset_names_, recent_, message_, 0, 0};
 }
 
 bool MaterialFiles::may_close(const ColorMaterial& material) {

@@ -29,7 +29,7 @@ class MaterialFiles {
 
   FileDialog& dialog() { return dialog_; }
   const MaterialSession& session() const { return session_; }
-  FileSectionInput section_input(const ColorMaterial& material, bool unicode) const;
+  FileSectionInput section_input(const ColorMaterial& material) const;
 
  private:
   void after_answer(bool saved, ColorMaterial& material, bool& close);

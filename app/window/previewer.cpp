@@ -308,7 +308,7 @@ class Previewer {
   }
 
   FileSectionInput file_section_input() const {
-    FileSectionInput input = files_.section_input(state_.material, imgui_.unicode_labels());
+    FileSectionInput input = files_.section_input(state_.material);
     input.undo_steps = history_.undo_steps();
     input.redo_steps = history_.redo_steps();
     return input;

@@ -1,6 +1,5 @@
 #include "app/window/window_options.h"
 
-#include <algorithm>
 #include <vector>
 
 #include "app/cli/errors.h"
@@ -20,18 +19,15 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
   const cli::ParsedFlags flags = cli::ParsedFlags::parse(
       arguments, cli::material_flags_and({"capture", "view", cli::kModelFlag, "test-actions"}), "skinlayer");
   const MaterialDocument document = cli::material_document_from_flags(flags, cli::AlbedoFlag::GreyOrRgb);
-  options.material.layer = document.layer;
+  options.material = color_material(document);
   if (options.material.layer.ordinates) choose_resolution(options.material.layer);  // checks the material's minimum
-  options.material.albedo_rgb = document.albedo_rgb;
-  options.material.model = cli::model_from_flags(flags, document.model.value_or(SubsurfaceModel::Stam));
+  options.material.model = cli::model_from_flags(flags, document.model);
   options.document = document;
   options.material_path = std::string(flags.value("material").value_or(""));
   options.preset = std::string(flags.value("preset").value_or(""));
   if (const std::optional<std::string_view> actions = flags.value("test-actions")) {
-    for (std::size_t start = 0; start <= actions->size();) {
-      const std::size_t end = std::min(actions->find(';', start), actions->size());
-      if (end > start) options.test_actions.emplace_back(actions->substr(start, end - start));
-      start = end + 1;
+    for (const std::string_view action : cli::split_list(*actions, ';')) {
+      if (!action.empty()) options.test_actions.emplace_back(action);
     }
   }
   if (const std::optional<std::string_view> view = flags.value("view")) {
