@@ -133,4 +133,32 @@ void match_reflection_energy(FourierKernel& kernel, std::span<const double> node
   for (Eigen::MatrixXd& mode : kernel) mode = d.asDiagonal() * mode * d.asDiagonal();
 }
 
+FourierKernel transmission_by_reciprocity(const FourierKernel& a_to_b, double eta) {
+  FourierKernel b_to_a(a_to_b.size());
+  for (std::size_t m = 0; m < a_to_b.size(); ++m) b_to_a[m] = a_to_b[m].transpose() / (eta * eta);
+  return b_to_a;
+}
+
+std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
+                                                     double z_sign) {
+  std::vector<Vec3> toward_light;
+  toward_light.reserve(cosines.size());
+  for (const double mu : cosines) {
+    toward_light.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, z_sign * std::abs(mu));
+  }
+  return interface_albedo(interface, toward_light);
+}
+
+std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos) {
+  std::vector<double> result;
+  for (const InterfaceAlbedo& a : albedos) result.push_back(a.reflectance);
+  return result;
+}
+
+std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos) {
+  std::vector<double> result;
+  for (const InterfaceAlbedo& a : albedos) result.push_back(a.transmittance);
+  return result;
+}
+
 }  // namespace skinlayer

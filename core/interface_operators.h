@@ -3,8 +3,10 @@
 #pragma once
 
 #include <span>
+#include <vector>
 
 #include "core/fourier.h"
+#include "core/interface_albedo.h"
 #include "core/microfacet.h"
 
 namespace skinlayer {
@@ -35,5 +37,18 @@ void match_column_energy(FourierKernel& kernel, std::span<const double> nodes, s
 // Nodes whose column sum or target is 0 keep d = 1.
 void match_reflection_energy(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights,
                              std::span<const double> target);
+
+// Generalized reciprocity of the radiance BTDF (Walter et al. 2007): f_t12(a -> b) / n2^2 = f_t21(b -> a) / n1^2.
+// The reversed pair of propagation directions has the same azimuth difference, so for a kernel carrying light from
+// medium a into medium b, the kernel from b back into a is its transpose / eta^2, eta = n_b / n_a.
+FourierKernel transmission_by_reciprocity(const FourierKernel& a_to_b, double eta);
+
+// The accurate albedos (interface_albedo) of an interface for light arriving along each cosine, with the direction
+// back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame (+z up): light from above has
+// z_sign +1, light from below -1.
+std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
+                                                     double z_sign);
+std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos);
+std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos);
 
 }  // namespace skinlayer

@@ -14,45 +14,6 @@ std::vector<double> negated(std::span<const double> cosines) {
   return result;
 }
 
-namespace {
-
-// Generalized reciprocity of the radiance BTDF (Walter et al. 2007): f_t12(a -> b) / n2^2 = f_t21(b -> a) / n1^2.
-// The reversed pair of propagation directions has the same azimuth difference, so the coefficients of the exit
-// kernel (layer -> air, mu_j up to mu_o up) are those of the source kernel (air -> layer, -mu_o to -mu_j) / eta^2.
-FourierKernel transmission_by_reciprocity(const FourierKernel& air_to_layer, double eta) {
-  FourierKernel layer_to_air(air_to_layer.size());
-  for (std::size_t m = 0; m < air_to_layer.size(); ++m) layer_to_air[m] = air_to_layer[m].transpose() / (eta * eta);
-  return layer_to_air;
-}
-
-// The accurate albedos (interface_albedo) of an interface for light arriving along each cosine, with the direction
-// back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame. That frame has +z up: into the
-// air for the top (light from the air: z_sign +1; from inside the layer: -1) and into the layer for the bottom (light
-// from inside the layer: +1).
-std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
-                                                     double z_sign) {
-  std::vector<Vec3> toward_light;
-  toward_light.reserve(cosines.size());
-  for (const double mu : cosines) {
-    toward_light.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, z_sign * std::abs(mu));
-  }
-  return interface_albedo(interface, toward_light);
-}
-
-std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos) {
-  std::vector<double> result;
-  for (const InterfaceAlbedo& a : albedos) result.push_back(a.reflectance);
-  return result;
-}
-
-std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos) {
-  std::vector<double> result;
-  for (const InterfaceAlbedo& a : albedos) result.push_back(a.transmittance);
-  return result;
-}
-
-}  // namespace
-
 LayerGeometry classify_layer(const Material& material) {
   LayerGeometry geometry;
   geometry.top_open = material.eta == 1.0;

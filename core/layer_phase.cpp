@@ -1,5 +1,6 @@
 #include "core/layer_phase.h"
 
+#include "core/conventions.h"
 #include "core/layer_interfaces.h"
 
 namespace skinlayer {
@@ -35,6 +36,27 @@ PhaseKernels phase_kernels(double g, const QuadratureRule& quadrature, int max_m
     k.opposite_rows = henyey_greenstein_fourier(g, down, mu_out, projector);
   }
   return k;
+}
+
+BeamParticular beam_particular(const PhaseKernels& kernels, const QuadratureRule& quadrature, int m, double albedo,
+                               std::span<const double> mu_in) {
+  const Eigen::Index n = quadrature.size();
+  const Eigen::Map<const Eigen::VectorXd> mu0(mu_in.data(), static_cast<Eigen::Index>(mu_in.size()));
+  const Eigen::VectorXd flux = mu0.cwiseInverse();  // F = 1/mu0
+  Eigen::MatrixXd source_up = albedo * kernels.beam_up_nodes[m] * flux.asDiagonal();
+  Eigen::MatrixXd source_down = albedo * kernels.beam_down_nodes[m] * flux.asDiagonal();
+  if (m == 0) {
+    const Eigen::Map<const Eigen::VectorXd> a(quadrature.weights.data(), n);
+    for (Eigen::Index k = 0; k < mu0.size(); ++k) {
+      const double scattered =
+          fourier_azimuth_weight(0) * a.dot(kernels.beam_up_nodes[0].col(k) + kernels.beam_down_nodes[0].col(k));
+      source_up.col(k) /= scattered;
+      source_down.col(k) /= scattered;
+    }
+  }
+  return beam_particular_solution(quadrature.nodes, quadrature.weights, kernels.phase.same[m],
+                                  kernels.phase.opposite[m], albedo * fourier_azimuth_weight(m), source_up, source_down,
+                                  mu_in);
 }
 
 }  // namespace skinlayer

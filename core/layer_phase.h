@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "core/boundary_solve.h"
 #include "core/fourier.h"
 #include "core/henyey_greenstein.h"
 #include "core/quadrature.h"
@@ -26,5 +27,12 @@ struct PhaseKernels {
 // beam: the beam enters unscattered (open top); exterior: exits are scattered to directly (open top or open base).
 PhaseKernels phase_kernels(double g, const QuadratureRule& quadrature, int max_modes, int phase_azimuths,
                            std::span<const double> mu_in, std::span<const double> mu_out, bool beam, bool exterior);
+
+// The beam's particular solution (core/boundary_solve.h) in a slab of single-scattering albedo `albedo` (<= the
+// solver's clamp), Fourier mode m, for unit irradiance mu0 F = 1 along each mu_in (kernels built with beam = true).
+// Mode 0's first-scattering source is scaled so that the quadrature scatters exactly the energy the beam loses:
+// c_0 sum_j a_j (p^0(mu_j, -mu0) + p^0(-mu_j, -mu0)) = 1, as mode 0's phase matrix does between nodes.
+BeamParticular beam_particular(const PhaseKernels& kernels, const QuadratureRule& quadrature, int m, double albedo,
+                               std::span<const double> mu_in);
 
 }  // namespace skinlayer

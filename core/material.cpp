@@ -1,5 +1,6 @@
 #include "core/material.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cstdio>
@@ -24,6 +25,10 @@ constexpr std::array kParameters = {
     ParameterInfo{"ordinates", "N", "discrete ordinates per hemisphere", 4.0, 256.0, 0.0},
 };
 
+// An internal interface's relative index n_this / n_above: either side may be denser.
+constexpr ParameterInfo kInterfaceEta{"eta", "η", "interface relative index n_this/n_above (1 = no interface)",
+                                      0.4,   2.5, 1.0};
+
 std::string format_number(double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.10g", value);
@@ -45,6 +50,8 @@ const ParameterInfo& parameter_info(std::string_view flag) {
   }
   throw std::logic_error("unknown parameter '" + std::string(flag) + "'");
 }
+
+const ParameterInfo& interface_eta_info() { return kInterfaceEta; }
 
 std::string range_text(const ParameterInfo& info) {
   // Appended, not "[" + ...: GCC 12 reports a false -Wrestrict overlap for a literal prepended to a temporary.
@@ -72,6 +79,64 @@ void validate(const Material& material) {
     check_parameter(parameter_info("lambert"), material.bottom.lambert_albedo);
   }
   if (material.ordinates) check_parameter(parameter_info("ordinates"), *material.ordinates);
+  const auto in_layer = [](int index, const auto& check) {
+    try {
+      check();
+    } catch (const ParameterError& e) {
+      throw ParameterError("layer " + std::to_string(index) + ": " + e.what());
+    }
+  };
+  const int layers = material.layer_count();
+  if (layers > 1 && std::isinf(material.tau)) {
+    throw ParameterError("layer 1: tau = inf (T = 0) is allowed only for the last layer of a stack");
+  }
+  for (int i = 2; i <= layers; ++i) {
+    const StackedLayer& layer = material.below[static_cast<std::size_t>(i - 2)];
+    in_layer(i, [&] {
+      check_parameter(parameter_info("tau"), layer.tau);
+      check_parameter(parameter_info("albedo"), layer.albedo);
+      check_parameter(parameter_info("g"), layer.g);
+      if (layer.interface) {
+        check_parameter(parameter_info("sigma"), layer.interface->sigma);
+        check_parameter(interface_eta_info(), layer.interface->eta);
+      }
+    });
+    if (i < layers && std::isinf(layer.tau)) {
+      throw ParameterError("layer " + std::to_string(i) +
+                           ": tau = inf (T = 0) is allowed only for the last layer of a stack");
+    }
+  }
+}
+
+double Material::total_tau() const {
+  double total = tau;
+  for (const StackedLayer& layer : below) total += layer.tau;
+  return total;
+}
+
+bool Material::has_internal_interfaces() const {
+  return std::ranges::any_of(below, [](const StackedLayer& l) { return l.interface && l.interface->eta != 1.0; });
+}
+
+double Material::internal_index_ratio() const {
+  double ratio = 1.0;
+  for (const StackedLayer& layer : below) ratio *= layer.interface ? layer.interface->eta : 1.0;
+  return ratio;
+}
+
+bool differ_only_in_albedos(const Material& a, const Material& b) {
+  const auto without_albedos = [](Material m) {
+    m.albedo = 0.0;
+    for (StackedLayer& layer : m.below) layer.albedo = 0.0;
+    return m;
+  };
+  return without_albedos(a) == without_albedos(b);
+}
+
+std::vector<StackedLayer> stack_layers(const Material& material) {
+  std::vector<StackedLayer> layers{{material.tau, material.albedo, material.g, std::nullopt}};
+  layers.insert(layers.end(), material.below.begin(), material.below.end());
+  return layers;
 }
 
 Bottom parse_bottom(std::string_view text) {

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace skinlayer {
 
@@ -30,6 +31,24 @@ struct Bottom {
   std::optional<double> sigma;  // Air only: Beckmann RMS slope; unset = the top's sigma
   std::optional<double> eta;    // Air only: n_layer / n_below; unset = the top's eta (air below)
   double lambert_albedo = 0.0;  // Lambert only: A in [0, 1]
+  bool operator==(const Bottom&) const = default;
+};
+
+// A rough dielectric interface between two stacked layers (Beckmann, as the top): eta = n_this / n_above, the
+// index of the layer under the interface relative to the one over it; eta = 1 is no interface.
+struct LayerInterface {
+  double sigma = 0.5;  // Beckmann RMS slope
+  double eta = 1.0;    // n_this / n_above
+  bool operator==(const LayerInterface&) const = default;
+};
+
+// A homogeneous slab under the first one (Material's own tau, albedo and g are the first layer's).
+struct StackedLayer {
+  double tau = 1.0;                         // optical depth; +infinity (semi-infinite) only for the last layer
+  double albedo = 1.0;                      // single-scattering albedo Omega
+  double g = 0.0;                           // Henyey-Greenstein asymmetry
+  std::optional<LayerInterface> interface;  // a rough interface above this layer; unset = same index, none
+  bool operator==(const StackedLayer&) const = default;
 };
 
 struct Material {
@@ -40,11 +59,31 @@ struct Material {
   double g = 0.8;          // Henyey-Greenstein asymmetry
   Bottom bottom;
   std::optional<int> ordinates;  // discrete ordinates per hemisphere; unset = automatic
+  // Layers 2..n of a stack, top to bottom; empty = the single layer above. The bottom is under the last one.
+  std::vector<StackedLayer> below;
 
-  double transparency() const { return std::exp(-tau); }  // T = exp(-tau_b)
+  double transparency() const { return std::exp(-tau); }  // T = exp(-tau_b), of the first layer
   double bottom_sigma() const { return bottom.sigma.value_or(sigma); }
-  double bottom_eta() const { return bottom.eta.value_or(eta); }
+  // n_last / n_below; unset = air below the last layer (the top's eta times every internal interface's).
+  double bottom_eta() const { return bottom.eta.value_or(eta * internal_index_ratio()); }
+
+  int layer_count() const { return 1 + static_cast<int>(below.size()); }
+  // The optical depth of the whole stack (+infinity when its last layer is semi-infinite).
+  double total_tau() const;
+  // True when some interface between layers refracts (eta != 1).
+  bool has_internal_interfaces() const;
+  // n_last / n_first: the product of the internal interfaces' eta.
+  double internal_index_ratio() const;
+
+  bool operator==(const Material&) const = default;
 };
+
+// True when a and b differ in nothing but their layers' single-scattering albedos (the channels of one material).
+bool differ_only_in_albedos(const Material& a, const Material& b);
+
+// The layers of a stack as single-layer values (tau, albedo, g of layer i, and its interface above; the first has
+// none), top to bottom.
+std::vector<StackedLayer> stack_layers(const Material& material);
 
 // T = exp(-tau_b); T = 0 gives tau_b = +infinity.
 double optical_depth_from_transparency(double transparency);
@@ -63,6 +102,9 @@ struct ParameterInfo {
 // lambert albedo, ordinates.
 std::span<const ParameterInfo> parameter_table();
 const ParameterInfo& parameter_info(std::string_view flag);
+// The relative index n_this / n_above of an interface between stacked layers (LayerInterface::eta): either side
+// may be the denser one. Not a row of parameter_table() (it is per layer).
+const ParameterInfo& interface_eta_info();
 
 // "[<min>, <max>]", as the range errors and the help print it ("%.10g"; "inf" for an unbounded maximum).
 std::string range_text(const ParameterInfo& info);
@@ -71,7 +113,9 @@ std::string range_text(const ParameterInfo& info);
 // "<flag> = <value> is out of range; valid range is [<min>, <max>] (<description>)".
 void check_parameter(const ParameterInfo& info, double value);
 
-// Validates every field of the material against the table. Throws ParameterError naming the first bad field.
+// Validates every field of the material against the table. Throws ParameterError naming the first bad field; a
+// stacked layer's message starts "layer <i>: " (1-based, top to bottom), its interface's keys are "sigma" and "eta".
+// Only the last layer of a stack may be semi-infinite.
 void validate(const Material& material);
 
 // Parses a bottom specification: "air", "matched" or "lambert:A". Throws ParameterError on anything else.

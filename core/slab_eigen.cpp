@@ -2,9 +2,12 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+#include "core/conventions.h"
 
 namespace skinlayer {
 
@@ -60,6 +63,19 @@ SlabEigenSolution slab_eigen(std::span<const double> nodes, std::span<const doub
     solution.g_down.col(j) /= norm;
   }
   return solution;
+}
+
+SlabEigenSolution slab_mode_eigen(std::span<const double> nodes, std::span<const double> weights,
+                                  const Eigen::MatrixXd& same, const Eigen::MatrixXd& opposite, int m, double albedo,
+                                  double tau) {
+  SlabEigenSolution eigen =
+      slab_eigen(nodes, weights, same, opposite, std::min(albedo, kMaxSolvedAlbedo) * fourier_azimuth_weight(m));
+  if (m == 0 && albedo == 1.0 && std::isinf(tau)) {
+    eigen.k(0) = 0.0;
+    eigen.g_up.col(0).setOnes();
+    eigen.g_down.col(0).setOnes();
+  }
+  return eigen;
 }
 
 }  // namespace skinlayer

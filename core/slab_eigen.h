@@ -31,4 +31,17 @@ struct SlabEigenSolution {
 SlabEigenSolution slab_eigen(std::span<const double> nodes, std::span<const double> weights,
                              const Eigen::MatrixXd& same, const Eigen::MatrixXd& opposite, double scattering);
 
+// Omega = 1 makes mode 0's eigen-reduction singular (a double eigenvalue k = 0). Solving at Omega = 1 - 1e-9 keeps
+// it positive definite; the energy this absorbs is ~1e-9 per unit optical path (about 1e-4 of the albedo of a
+// conservative semi-infinite layer, whose mean path length diverges).
+inline constexpr double kMaxSolvedAlbedo = 1.0 - 1e-9;
+
+// The homogeneous solutions of mode m (c_m = fourier_azimuth_weight(m)) of a slab of albedo Omega in [0, 1] and
+// optical depth tau, at Omega clamped to kMaxSolvedAlbedo. Conservative scattering (Omega = 1) in a semi-infinite
+// slab takes the exact bounded solution of mode 0 instead of the clamped albedo's slowest mode: k = 0, u = constant
+// (exact on the quadrature, since mode 0's phase matrix conserves energy).
+SlabEigenSolution slab_mode_eigen(std::span<const double> nodes, std::span<const double> weights,
+                                  const Eigen::MatrixXd& same, const Eigen::MatrixXd& opposite, int m, double albedo,
+                                  double tau);
+
 }  // namespace skinlayer

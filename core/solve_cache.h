@@ -1,6 +1,7 @@
 // An explicit, caller-owned cache of a solve's albedo-independent work: the interface operators
-// (core/layer_interfaces.h), reused by every re-solve that leaves the interfaces, the resolution and the outside
-// directions alone, and the phase-function projections (core/layer_phase.h), reused while g and the resolution stay.
+// (core/layer_interfaces.h) and those of the interfaces between stacked layers (core/internal_interface.h), reused
+// by every re-solve that leaves the interfaces, the resolution and the outside directions alone, and the
+// phase-function projections (core/layer_phase.h), reused while g and the resolution stay.
 // An Omega or T change then costs only the per-mode eigen-decomposition and boundary solve; a g change adds the
 // phase projections; only sigma, eta or the bottom's interface rebuild the interface operators. Core keeps no hidden
 // state: the cache is a value the caller owns and passes (SolveOptions::cache), bounded by a byte budget; the least
@@ -16,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/internal_interface.h"
 #include "core/layer_interfaces.h"
 #include "core/layer_phase.h"
 
@@ -31,6 +33,17 @@ struct InterfaceKernelKey {
   KernelSet set = KernelSet::All;
 
   bool operator==(const InterfaceKernelKey&) const = default;
+};
+
+// What the operators of an interface between stacked layers depend on, exactly.
+struct InternalInterfaceKey {
+  RoughDielectric interface;
+  int ordinates = 0;
+  int modes = 0;
+  int azimuths = 0;
+  std::vector<double> mu_in, mu_out;
+  bool up_rows = false, down_rows = false, beam = false;  // InternalInterfaceNeeds
+  bool operator==(const InternalInterfaceKey&) const = default;
 };
 
 // What the phase-function projections depend on, exactly.
@@ -60,6 +73,11 @@ class SolveCache {
   std::shared_ptr<const PhaseKernels> phase_kernels(const PhaseKernelKey& key, Build&& build) {
     return find_or_build<PhaseKernels>(key, build);
   }
+  template <typename Build>
+  std::shared_ptr<const InternalInterfaceKernels> internal_interface_kernels(const InternalInterfaceKey& key,
+                                                                             Build&& build) {
+    return find_or_build<InternalInterfaceKernels>(key, build);
+  }
 
   int hits() const { return hits_; }
   int misses() const { return misses_; }
@@ -67,7 +85,7 @@ class SolveCache {
   std::size_t bytes() const { return bytes_; }
 
  private:
-  using Key = std::variant<InterfaceKernelKey, PhaseKernelKey>;
+  using Key = std::variant<InterfaceKernelKey, PhaseKernelKey, InternalInterfaceKey>;
   struct Entry {
     Key key;
     std::shared_ptr<const void> value;

@@ -5,6 +5,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "core/bottom_bounce.h"
 #include "core/boundary_solve.h"
@@ -16,15 +17,12 @@
 #include "core/quadrature.h"
 #include "core/slab_eigen.h"
 #include "core/solve_cache.h"
+#include "core/stack_solver.h"
 #include "core/unscattered_light.h"
 
 namespace skinlayer {
 namespace {
 
-// Omega = 1 makes mode 0's eigen-reduction singular (a double eigenvalue k = 0). Solving at Omega = 1 - 1e-9 keeps
-// it positive definite; the energy this absorbs is ~1e-9 per unit optical path (about 1e-4 of the albedo of a
-// conservative semi-infinite layer, whose mean path length diverges).
-constexpr double kMaxSolvedAlbedo = 1.0 - 1e-9;
 // Exterior cosines are kept off 0 (grazing) so that 1/mu stays finite; the tables' theta = 90 deg row is the limit.
 constexpr double kMinCosine = 1e-6;
 constexpr int kDefaultTableSize = 48;
@@ -136,7 +134,6 @@ Eigen::MatrixXd LayerSolver::lambert_reflection() const {
 }
 
 LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
-  const bool conservative = albedo == 1.0;
   const double solved_albedo = std::min(albedo, kMaxSolvedAlbedo);
   const std::span<const double> nodes = quadrature_.nodes;
   const std::span<const double> weights = quadrature_.weights;
@@ -144,15 +141,8 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
   const Eigen::Index count_in = static_cast<Eigen::Index>(mu_in_.size());
   const Eigen::Index count_out = static_cast<Eigen::Index>(mu_out_.size());
   const double scattering = solved_albedo * fourier_azimuth_weight(m);
-  SlabEigenSolution eigen =
-      slab_eigen(nodes, weights, phase_kernels_->phase.same[m], phase_kernels_->phase.opposite[m], scattering);
-  if (m == 0 && conservative && std::isinf(tau_)) {
-    // Conservative scattering in a semi-infinite slab: the slowest mode of the clamped albedo tends to the exact
-    // bounded solution k = 0, u = constant (exact on the quadrature, since mode 0's phase matrix conserves energy).
-    eigen.k(0) = 0.0;
-    eigen.g_up.col(0).setOnes();
-    eigen.g_down.col(0).setOnes();
-  }
+  const SlabEigenSolution eigen = slab_mode_eigen(nodes, weights, phase_kernels_->phase.same[m],
+                                                  phase_kernels_->phase.opposite[m], m, albedo, tau_);
   const bool lambert_mode = geometry_.base == LayerBase::Lambert && m == 0;
   const bool infinite = std::isinf(tau_);
 
@@ -174,21 +164,7 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
   }
   BeamParticular beam;
   if (geometry_.top_open) {
-    Eigen::MatrixXd source_up = solved_albedo * phase_kernels_->beam_up_nodes[m] * beam_flux_.asDiagonal();
-    Eigen::MatrixXd source_down = solved_albedo * phase_kernels_->beam_down_nodes[m] * beam_flux_.asDiagonal();
-    if (m == 0) {
-      // Scale the beam's first-scattering source so that the quadrature scatters exactly the energy it removes:
-      // c_0 sum_j a_j (p^0(mu_j, -mu0) + p^0(-mu_j, -mu0)) = 1, as mode 0's phase matrix does between nodes.
-      const Eigen::Map<const Eigen::VectorXd> a(weights.data(), n);
-      for (Eigen::Index k = 0; k < count_in; ++k) {
-        const double scattered = fourier_azimuth_weight(0) * a.dot(phase_kernels_->beam_up_nodes[0].col(k) +
-                                                                   phase_kernels_->beam_down_nodes[0].col(k));
-        source_up.col(k) /= scattered;
-        source_down.col(k) /= scattered;
-      }
-    }
-    beam = beam_particular_solution(nodes, weights, phase_kernels_->phase.same[m], phase_kernels_->phase.opposite[m],
-                                    scattering, source_up, source_down, mu_in_);
+    beam = beam_particular(*phase_kernels_, quadrature_, m, solved_albedo, mu_in_);
     problem.beam = &beam;
   }
 
@@ -298,15 +274,16 @@ int refracted_lobe_ordinates(const LayerGeometry& geometry) {
 // - the unscattered light's reflection off a rough bottom (Beckmann sigma3, seen through the top about
 //   s = sigma3 eta wide), where it is not buried under scattered light: T^2 > Omega (1 - T) / 4;
 // - single forward scattering (Henyey-Greenstein, half width 0.77 (1 - g) / sqrt(g) radians) of light that crossed
-//   the top's refracted lobe, widened by the exit's lobe, where the layer transmits (T >= 0.2);
+//   the top's refracted lobe, widened by the exit's lobe, where the layer (a stack: all of it) transmits (T >= 0.05);
 // - a near-matched interface's critical angle lies near grazing, where its refracted lobe (w) is stretched outside
 //   and cuts the scattered light sharply.
 // Measured pointwise against a 95-node grid (docs/accuracy.md): a bottom bounce errs 8.8% at h = 0.75 s (sigma3
 // 0.05, T 0.5, Omega 0) and 0.6% at 0.37 s, and 1.2% at 0.27 s where the bottom's critical angle cuts the lobe
-// (sigma3 0.1, eta3 1.2): h <= 0.22 s. A forward lobe of width w errs 2.6% at h = 0.64 w and 0.57% at 0.43 w:
-// h <= 0.4 w. At eta 1.05, sigma 1 (N 128) h = 1.1 w errs 1.2%, 0.73 w 0.5%: h <= 0.8 w, relaxed as eta
-// leaves 1.1 (near_matched). K is a multiple of 8 in [48, 96]; 48 (3 degrees at the normal) where none binds, the
-// default material included.
+// (sigma3 0.1, eta3 1.2): h <= 0.22 s. A forward lobe of width w errs 2.6% at h = 0.64 w and 0.57% at 0.43 w; the
+// DISORT stacks (../shared/reference/disort_multilayer_intensities.csv, g 0.8 under T 0.22 and 0.1) err 0.17-0.22%
+// straight through at 0.4 w (K 48) and 1.4e-4 at 0.25 w (K 64): h <= 0.25 w where T >= 0.05. At eta 1.05, sigma 1 (N
+// 128) h = 1.1 w errs 1.2%, 0.73 w 0.5%: h <= 0.8 w, relaxed as eta leaves 1.1 (near_matched). K is a multiple of 8 in
+// [48, 96]; 48 (3 degrees at the normal) where none binds, the default material included.
 int lobe_table_size(const Material& material, const LayerGeometry& geometry) {
   constexpr double kQuarterPiSquared = 0.25 * kPi * kPi;
   double spacing = kQuarterPiSquared / (kDefaultTableSize - 1);
@@ -316,11 +293,11 @@ int lobe_table_size(const Material& material, const LayerGeometry& geometry) {
     const double top_eta = geometry.top_open ? 1.0 : geometry.top.eta;
     spacing = std::min(spacing, 0.22 * geometry.bottom.sigma * top_eta);
   }
-  if (geometry.base != LayerBase::Lambert && transparency >= 0.2 && material.g > 0.0) {
+  if (geometry.base != LayerBase::Lambert && transparency >= 0.05 && material.g > 0.0) {
     const double forward = 0.77 * (1.0 - material.g) / std::sqrt(material.g);
     const double entry = geometry.top_open ? 0.0 : refracted_lobe_width(geometry.top);
     const double exit = geometry.base == LayerBase::Rough ? refracted_lobe_width(geometry.bottom) : 0.0;
-    spacing = std::min(spacing, 0.4 * std::sqrt(forward * forward + entry * entry + exit * exit));
+    spacing = std::min(spacing, 0.25 * std::sqrt(forward * forward + entry * entry + exit * exit));
   }
   for (const RoughDielectric* interface :
        {geometry.top_open ? nullptr : &geometry.top, geometry.base == LayerBase::Rough ? &geometry.bottom : nullptr}) {
@@ -331,9 +308,30 @@ int lobe_table_size(const Material& material, const LayerGeometry& geometry) {
   return std::clamp((nodes + 7) / 8 * 8, kDefaultTableSize, 96);
 }
 
-}  // namespace
+// Single layers whose resolutions together cover a stack's: each layer's scattering (its albedo and g) over the
+// whole stack's depth, between the stack's top and bottom; and each internal interface in the top's place (as
+// seen from its denser side, the refracted lobe being the same width either way).
+std::vector<Material> resolution_envelopes(const Material& material) {
+  Material base = material;
+  base.below.clear();
+  base.tau = material.total_tau();
+  if (base.bottom.kind == BottomKind::Air && !base.bottom.eta) base.bottom.eta = material.bottom_eta();
+  std::vector<Material> envelopes;
+  for (const StackedLayer& layer : stack_layers(material)) {
+    Material m = base;
+    m.albedo = layer.albedo;
+    m.g = layer.g;
+    envelopes.push_back(m);
+    if (layer.interface && layer.interface->eta != 1.0) {
+      m.sigma = layer.interface->sigma;
+      m.eta = std::max(layer.interface->eta, 1.0 / layer.interface->eta);
+      envelopes.push_back(m);
+    }
+  }
+  return envelopes;
+}
 
-Resolution choose_resolution(const Material& material, const SolveOptions& options) {
+Resolution choose_layer_resolution(const Material& material, const SolveOptions& options) {
   validate(material);
   const LayerGeometry geometry = classify_layer(material);
   const double forwardness = 1.0 - std::abs(material.g);
@@ -397,6 +395,28 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
   return resolution;
 }
 
+}  // namespace
+
+Resolution choose_resolution(const Material& material, const SolveOptions& options) {
+  validate(material);
+  if (material.below.empty()) return choose_layer_resolution(material, options);
+  std::optional<Resolution> result;
+  for (const Material& envelope : resolution_envelopes(material)) {
+    const Resolution r = choose_layer_resolution(envelope, options);
+    if (!result) {
+      result = r;
+      continue;
+    }
+    result->ordinates = std::max(result->ordinates, r.ordinates);
+    result->max_modes = std::max(result->max_modes, r.max_modes);
+    result->table_size = std::max(result->table_size, r.table_size);
+    result->interface_modes = std::max(result->interface_modes, r.interface_modes);
+    result->interface_azimuths = std::max(result->interface_azimuths, r.interface_azimuths);
+    result->phase_azimuths = std::max(result->phase_azimuths, r.phase_azimuths);
+  }
+  return *result;
+}
+
 bool preview_is_coarser(const Material& material) {
   SolveOptions preview;
   preview.preview = true;
@@ -408,6 +428,13 @@ bool preview_is_coarser(const Material& material) {
 
 namespace {
 
+// The single-scattering albedo of each layer, top to bottom.
+std::vector<double> layer_albedos(const Material& material) {
+  std::vector<double> albedos;
+  for (const StackedLayer& layer : stack_layers(material)) albedos.push_back(layer.albedo);
+  return albedos;
+}
+
 // The tables for one resolution and several albedos (the projections are shared); `converged` tells whether every
 // Fourier series met its tolerance before the cap.
 struct TableSolve {
@@ -415,15 +442,33 @@ struct TableSolve {
   bool converged;
 };
 
-TableSolve solve_tables(const Material& material, std::span<const double> albedos, const Resolution& resolution,
-                        const SolveOptions& options) {
+TableSolve solve_tables(std::span<const Material> channels, const Resolution& resolution, const SolveOptions& options) {
+  const Material& material = channels.front();
   const int k = resolution.table_size;
   std::vector<double> grid(k);
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
   const UnscatteredLight unscattered = options.exact_unscattered ? UnscatteredLight(material) : UnscatteredLight();
-  const LayerSolver solver(material, resolution,
-                           kernels_for(material, resolution, grid, grid, options.cache, options.parallel_for),
-                           unscattered.path(), options.cache);
+  const auto kernels = kernels_for(material, resolution, grid, grid, options.cache, options.parallel_for);
+  // One layer: the single-slab solve; a stack: core/stack_solver.h. The channels share either.
+  std::optional<LayerSolver> layer;
+  std::optional<StackSolver> stack;
+  if (material.below.empty()) {
+    layer.emplace(material, resolution, kernels, unscattered.path(), options.cache);
+  } else {
+    stack.emplace(material, resolution, kernels, unscattered.path(), options.cache, options.parallel_for);
+  }
+  struct ModeTables {
+    Eigen::MatrixXd reflection, transmission;
+  };
+  const auto solve_mode = [&](int m, int channel) -> ModeTables {
+    const Material& c = channels[static_cast<std::size_t>(channel)];
+    if (layer) {
+      LayerSolver::ModeResult r = layer->solve_mode(m, c.albedo);
+      return {std::move(r.reflection), std::move(r.transmission)};
+    }
+    StackSolver::ModeResult r = stack->solve_mode(m, layer_albedos(c));
+    return {std::move(r.reflection), std::move(r.transmission)};
+  };
   const auto check_cancelled = [&options] {
     if (options.cancelled && options.cancelled()) throw SolveCancelled();
   };
@@ -435,22 +480,21 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
     int modes = 0;
     std::vector<double> reflection, transmission;  // per mode, K x K with (o, i) at i K + o
   };
-  std::vector<Coefficients> solved(albedos.size());
-  std::vector<char> converged(albedos.size(), 0);
+  std::vector<Coefficients> solved(channels.size());
+  std::vector<char> converged(channels.size(), 0);
   // Several albedos run side by side (SolveOptions::parallel_for), each its modes in order. A single albedo runs
   // its modes side by side instead, kModeBlock at a time; the modes past the convergence point are discarded, so
   // the result is the serial one bit for bit.
   constexpr int kModeBlock = 4;
-  const bool parallel_modes = albedos.size() == 1 && options.parallel_for;
+  const bool parallel_modes = channels.size() == 1 && options.parallel_for;
   const auto solve_albedo = [&](int index) {
-    const double albedo = albedos[static_cast<std::size_t>(index)];
     std::vector<double> reflection, transmission;
     reflection.reserve(plane * resolution.max_modes);
     transmission.reserve(plane * resolution.max_modes);
     double peak_reflection = 0.0, peak_transmission = 0.0;
     int quiet_modes = 0;
     int modes = 0;
-    std::vector<LayerSolver::ModeResult> block;  // modes block_start, block_start + 1, ...
+    std::vector<ModeTables> block;  // modes block_start, block_start + 1, ...
     int block_start = 0;
     for (int m = 0; m < resolution.max_modes && quiet_modes < 2; ++m) {
       if (m == block_start + static_cast<int>(block.size())) {
@@ -458,11 +502,11 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
         block.assign(static_cast<std::size_t>(parallel_modes ? std::min(kModeBlock, resolution.max_modes - m) : 1), {});
         const auto solve_one = [&](int b) {
           check_cancelled();
-          block[static_cast<std::size_t>(b)] = solver.solve_mode(block_start + b, albedo);
+          block[static_cast<std::size_t>(b)] = solve_mode(block_start + b, index);
         };
         run_parallel(options.parallel_for, static_cast<int>(block.size()), solve_one);
       }
-      const LayerSolver::ModeResult& mode = block[static_cast<std::size_t>(m - block_start)];
+      const ModeTables& mode = block[static_cast<std::size_t>(m - block_start)];
       for (int i = 0; i < k; ++i) {
         for (int o = 0; o < k; ++o) {
           reflection.push_back(mode.reflection(o, i));
@@ -488,7 +532,7 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
   if (parallel_modes) {
     solve_albedo(0);
   } else {
-    run_parallel(options.parallel_for, static_cast<int>(albedos.size()), solve_albedo);
+    run_parallel(options.parallel_for, static_cast<int>(channels.size()), solve_albedo);
   }
 
   // The unscattered light's first reflection off a rough bottom, on finer ordinates where it matters
@@ -496,11 +540,11 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
   // preview, which is a quick look by definition.
   const auto refine_bottom_bounce = [&] {
     if (unscattered.path() != UnscatteredPath::TopThenBottom || options.preview) return;
-    const InterfaceKernels& coarse = solver.kernels();
+    const InterfaceKernels& coarse = *kernels;
     Resolution finer = resolution;
     finer.ordinates = bottom_bounce_ordinates(resolution.ordinates, coarse.geometry.top);
     if (finer.ordinates <= resolution.ordinates) return;
-    const Eigen::VectorXd coarse_attenuation = slab_attenuation(coarse.quadrature.nodes, material.tau);
+    const Eigen::VectorXd coarse_attenuation = slab_attenuation(coarse.quadrature.nodes, unscattered.tau());
     const Eigen::MatrixXd coarse_mode0 = bottom_bounce_image(coarse, coarse_attenuation, 0);
     std::vector<Eigen::MatrixXd> mode0;
     for (const Coefficients& c : solved) mode0.push_back(Eigen::Map<const Eigen::MatrixXd>(c.reflection.data(), k, k));
@@ -508,7 +552,7 @@ TableSolve solve_tables(const Material& material, std::span<const double> albedo
     check_cancelled();
     const auto fine =
         kernels_for(material, finer, grid, grid, options.cache, options.parallel_for, KernelSet::BottomBounce);
-    const Eigen::VectorXd fine_attenuation = slab_attenuation(fine->quadrature.nodes, material.tau);
+    const Eigen::VectorXd fine_attenuation = slab_attenuation(fine->quadrature.nodes, unscattered.tau());
     int modes = 0;
     for (const Coefficients& c : solved) modes = std::max(modes, c.modes);
     for (int m = 0; m < modes; ++m) {
@@ -533,14 +577,32 @@ void check_albedos(std::span<const double> albedos) {
   for (const double albedo : albedos) check_parameter(parameter_info("albedo"), albedo);
 }
 
+// The material once per first-layer albedo.
+std::vector<Material> with_first_albedos(const Material& material, std::span<const double> albedos) {
+  std::vector<Material> channels(albedos.size(), material);
+  for (std::size_t c = 0; c < albedos.size(); ++c) channels[c].albedo = albedos[c];
+  return channels;
+}
+
+// Channels must be valid and differ only in their layers' albedos.
+void check_channels(std::span<const Material> channels) {
+  for (const Material& c : channels) {
+    validate(c);
+    if (!differ_only_in_albedos(c, channels.front())) {
+      throw std::invalid_argument("solve: the channels of one material may differ only in their albedos");
+    }
+  }
+}
+
 }  // namespace
 
-std::vector<LayerTables> solve(const Material& material, std::span<const double> albedos, const SolveOptions& options) {
-  check_albedos(albedos);
-  // The resolution serves every albedo: lobe_table_size judges the bottom's sharp reflection by the darkest one,
+std::vector<LayerTables> solve(std::span<const Material> channels, const SolveOptions& options) {
+  if (channels.empty()) return {};
+  check_channels(channels);
+  // The resolution serves every channel: lobe_table_size judges the bottom's sharp reflection by the darkest one,
   // under which it stands out most.
-  Material resolved = material;
-  if (!albedos.empty()) resolved.albedo = std::ranges::min(albedos);
+  Material resolved = channels.front();
+  for (const Material& c : channels) resolved.albedo = std::min(resolved.albedo, c.albedo);
   Resolution resolution = choose_resolution(resolved, options);
   if (resolution.table_size < 4) {
     throw ParameterError("table_size = " + std::to_string(resolution.table_size) +
@@ -548,14 +610,19 @@ std::vector<LayerTables> solve(const Material& material, std::span<const double>
   }
   // The automatic cap on Fourier modes suits most materials; thin, strongly forward-scattering layers seen near
   // grazing need more, so an unconverged series is solved again with twice the cap (up to 256 modes).
-  TableSolve result = solve_tables(material, albedos, resolution, options);
+  TableSolve result = solve_tables(channels, resolution, options);
   while (!result.converged && options.max_modes == 0 && !options.preview && resolution.max_modes < 256) {
     SolveOptions doubled = options;
     doubled.max_modes = 2 * resolution.max_modes;
     resolution = choose_resolution(resolved, doubled);
-    result = solve_tables(material, albedos, resolution, doubled);
+    result = solve_tables(channels, resolution, doubled);
   }
   return std::move(result.tables);
+}
+
+std::vector<LayerTables> solve(const Material& material, std::span<const double> albedos, const SolveOptions& options) {
+  check_albedos(albedos);
+  return solve(with_first_albedos(material, albedos), options);
 }
 
 LayerTables solve(const Material& material, const SolveOptions& options) {
@@ -568,11 +635,12 @@ double brdf_surface(const Material& material, double theta_i, double theta_o, do
   return microfacet_brdf({material.eta, material.sigma}, wi, wo);
 }
 
-std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& material,
-                                                               std::span<const double> theta_i,
-                                                               std::span<const double> albedos,
-                                                               const SolveOptions& options) {
-  check_albedos(albedos);
+namespace {
+
+std::vector<std::vector<DirectionalAlbedo>> layer_directional_albedo(const Material& material,
+                                                                     std::span<const double> theta_i,
+                                                                     std::span<const double> albedos,
+                                                                     const SolveOptions& options) {
   SolveOptions mode_zero = options;
   mode_zero.max_modes = 1;  // hemispherical fractions need only the azimuthal mean
   const Resolution resolution = choose_resolution(material, mode_zero);
@@ -642,6 +710,48 @@ std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& m
     result.push_back(std::move(rows));
   }
   return result;
+}
+
+std::vector<std::vector<DirectionalAlbedo>> stack_directional_albedo(std::span<const Material> channels,
+                                                                     std::span<const double> theta_i,
+                                                                     const SolveOptions& options) {
+  const Material& material = channels.front();
+  SolveOptions mode_zero = options;
+  mode_zero.max_modes = 1;  // hemispherical fractions need only the azimuthal mean
+  const Resolution resolution = choose_resolution(material, mode_zero);
+  std::vector<double> mu0(theta_i.size());
+  for (std::size_t k = 0; k < theta_i.size(); ++k) mu0[k] = std::cos(theta_i[k]);
+  const StackSolver solver(material, resolution,
+                           kernels_for(material, resolution, mu0, {}, options.cache, options.parallel_for),
+                           UnscatteredPath::None, options.cache, options.parallel_for);
+  std::vector<std::vector<DirectionalAlbedo>> result;
+  for (const Material& channel : channels) {
+    std::vector<DirectionalAlbedo> rows = solver.directional_albedo(solver.solve_mode(0, layer_albedos(channel)));
+    for (std::size_t k = 0; k < rows.size(); ++k) rows[k].theta_i = theta_i[k];
+    result.push_back(std::move(rows));
+  }
+  return result;
+}
+
+}  // namespace
+
+std::vector<std::vector<DirectionalAlbedo>> directional_albedo(std::span<const Material> channels,
+                                                               std::span<const double> theta_i,
+                                                               const SolveOptions& options) {
+  if (channels.empty()) return {};
+  check_channels(channels);
+  if (!channels.front().below.empty()) return stack_directional_albedo(channels, theta_i, options);
+  std::vector<double> albedos;
+  for (const Material& c : channels) albedos.push_back(c.albedo);
+  return layer_directional_albedo(channels.front(), theta_i, albedos, options);
+}
+
+std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& material,
+                                                               std::span<const double> theta_i,
+                                                               std::span<const double> albedos,
+                                                               const SolveOptions& options) {
+  check_albedos(albedos);
+  return directional_albedo(with_first_albedos(material, albedos), theta_i, options);
 }
 
 std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std::span<const double> theta_i,

@@ -74,12 +74,17 @@ Resolution choose_resolution(const Material& material, const SolveOptions& optio
 // True when SolveOptions::preview would solve this material at a coarser resolution than the full solve does.
 bool preview_is_coarser(const Material& material);
 
-// Solves the layer. Throws ParameterError for an invalid material.
+// Solves the layer (or the stack of layers). Throws ParameterError for an invalid material.
 LayerTables solve(const Material& material, const SolveOptions& options = {});
 
-// Solves the layer once per single-scattering albedo in `albedos` (material.albedo is ignored), sharing every
-// albedo-independent step (interface and phase-function projections): an RGB albedo costs far less than three
-// solves. One LayerTables per albedo, in order.
+// Solves several channels of one material (RGB): materials that differ in nothing but their layers' albedos,
+// sharing every albedo-independent step. One LayerTables per channel, in order. Throws ParameterError for an
+// invalid material and std::invalid_argument for channels that differ in anything else.
+std::vector<LayerTables> solve(std::span<const Material> channels, const SolveOptions& options = {});
+
+// Solves the layer once per single-scattering albedo of its first layer in `albedos` (material.albedo is ignored),
+// sharing every albedo-independent step (interface and phase-function projections): an RGB albedo costs far less
+// than three solves. One LayerTables per albedo, in order.
 std::vector<LayerTables> solve(const Material& material, std::span<const double> albedos,
                                const SolveOptions& options = {});
 
@@ -94,6 +99,9 @@ struct DirectionalAlbedo {
   double transmittance;           // left through the bottom (including any unscattered beam)
   double absorptance;             // 1 - reflectance - transmittance: medium, base, and shadowing losses
   double interface_loss;          // the part of absorptance that Smith shadowing-masking removes at the interfaces
+  // A stack's (Material::below non-empty) absorptance of each layer, top to bottom: what its medium absorbs; the
+  // rest of absorptance is interface_loss and a Lambertian base's share. Empty for a single layer.
+  std::vector<double> layer_absorptance;
   double reflectance() const { return reflectance_surface + reflectance_subsurface; }
 };
 std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std::span<const double> theta_i,
@@ -103,6 +111,11 @@ std::vector<DirectionalAlbedo> directional_albedo(const Material& material, std:
 std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& material,
                                                                std::span<const double> theta_i,
                                                                std::span<const double> albedos,
+                                                               const SolveOptions& options = {});
+
+// The same for several channels of one material (as solve(channels)): one row list per channel, in order.
+std::vector<std::vector<DirectionalAlbedo>> directional_albedo(std::span<const Material> channels,
+                                                               std::span<const double> theta_i,
                                                                const SolveOptions& options = {});
 
 }  // namespace skinlayer

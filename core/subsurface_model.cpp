@@ -1,6 +1,7 @@
 #include "core/subsurface_model.h"
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "core/conventions.h"
@@ -83,6 +84,10 @@ std::optional<SubsurfaceModel> parse_subsurface_model(std::string_view name) {
 }
 
 LayerTables solve_model(const Material& material, SubsurfaceModel model, const SolveOptions& options) {
+  if (model != SubsurfaceModel::Stam && !material.below.empty()) {
+    throw ParameterError("model = " + std::string(subsurface_model_name(model)) + " describes one layer; a stack of " +
+                         std::to_string(material.layer_count()) + " layers takes model stam");
+  }
   switch (model) {
     case SubsurfaceModel::Lambert: return lambert_tables(material, options);
     case SubsurfaceModel::HanrahanKrueger: return hanrahan_krueger_tables(material, options);

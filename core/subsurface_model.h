@@ -24,6 +24,7 @@ std::optional<SubsurfaceModel> parse_subsurface_model(std::string_view name);
 
 // The model's subsurface BRDF and BTDF as tables. Stam: solve(). Lambert: mode 0 only. Hanrahan-Krueger: its
 // closed form sampled on the tables' grid and projected onto Fourier modes in azimuth (tolerance as in solve()).
+// The comparison models describe one layer: for a stack they throw ParameterError.
 LayerTables solve_model(const Material& material, SubsurfaceModel model, const SolveOptions& options = {});
 
 }  // namespace skinlayer

@@ -136,12 +136,15 @@ std::vector<SlopeNode> slope_nodes() {
 }  // namespace
 
 UnscatteredLight::UnscatteredLight(const Material& material)
-    : tau_(material.tau),
-      index_below_(material.bottom.kind == BottomKind::Matched ? material.eta : material.eta / material.bottom_eta()) {
+    : tau_(material.total_tau()),
+      index_below_(material.bottom.kind == BottomKind::Matched
+                       ? material.eta * material.internal_index_ratio()
+                       : material.eta * material.internal_index_ratio() / material.bottom_eta()) {
   const bool top_open = material.eta == 1.0;
   top_ = {material.eta, material.sigma};
   bottom_ = {1.0 / material.bottom_eta(), material.bottom_sigma()};
-  if (std::isinf(material.tau)) return;
+  // Across an interface between stacked layers the unscattered light stays in the tables (core/stack_solver.h).
+  if (std::isinf(tau_) || material.has_internal_interfaces()) return;
   switch (material.bottom.kind) {
     case BottomKind::Lambert:
       return;

@@ -52,6 +52,8 @@ double sum_depth_terms(std::span<const DepthTerm> terms, double tau);
 class UnscatteredLight {
  public:
   UnscatteredLight() = default;
+  // A stack without interfaces between its layers has the unscattered light of one slab of its total depth; with
+  // one, none (it stays in the tables; core/stack_solver.h).
   explicit UnscatteredLight(const Material& material);
 
   UnscatteredPath path() const { return path_; }

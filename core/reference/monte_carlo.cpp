@@ -139,6 +139,15 @@ bool phi_in_range(double phi, double lo, double hi) {
   return false;
 }
 
+// One slab of the stack in the walk's depth coordinate: optical depth from the top of the first layer.
+struct WalkLayer {
+  double top = 0.0, bottom = 0.0;  // bottom = +infinity for a semi-infinite last layer
+  double albedo = 1.0, g = 0.0;
+  // The rough interface above the layer (none for the first, or eta = 1): eta = n_this / n_above.
+  bool interface_above = false;
+  double eta_above = 1.0, sigma_above = 0.5;
+};
+
 class Walker {
  public:
   Walker(const Material& material, double theta_i, std::span<const AngularBin> bins)
@@ -146,7 +155,18 @@ class Walker {
     top_present_ = material.eta != 1.0;
     eta_b_ = material.bottom_eta();
     sigma_b_ = material.bottom_sigma();
-    tau_b_ = material.tau;
+    double depth = 0.0;
+    for (const StackedLayer& layer : stack_layers(material)) {
+      WalkLayer walk{depth, depth + layer.tau, layer.albedo, layer.g, false, 1.0, 0.5};
+      if (layer.interface && layer.interface->eta != 1.0) {
+        walk.interface_above = true;
+        walk.eta_above = layer.interface->eta;
+        walk.sigma_above = layer.interface->sigma;
+      }
+      layers_.push_back(walk);
+      depth += layer.tau;
+    }
+    tau_b_ = depth;
   }
 
   void trace(Rng& rng, Tallies& tallies) const {
@@ -169,6 +189,7 @@ class Walker {
       d = -omega_i_;
     }
     double tau = 0.0;
+    std::size_t layer = 0;  // the slab the photon is in
     for (std::uint64_t events = 0;; ++events) {
       if (events >= kMaxEventsPerPath) {
         ++tallies.truncated;
@@ -176,7 +197,32 @@ class Walker {
       }
       const double s = -std::log(1.0 - uniform01(rng));  // 1 - u in (0, 1]
       const double tau_new = tau - s * d.z();
-      if (d.z() < 0.0 && tau_new >= tau_b_) {  // reaches the bottom
+      const WalkLayer& here = layers_[layer];
+      if (d.z() < 0.0 && tau_new >= here.bottom && layer + 1 < layers_.size()) {
+        // Reaches the next slab down. The free path is memoryless, so the walk restarts at the face.
+        tau = here.bottom;
+        const WalkLayer& below = layers_[layer + 1];
+        if (below.interface_above) {
+          const Crossing c = cross_rough_interface(-d, below.eta_above, below.sigma_above, rng);
+          if (!c.alive) return;
+          weight *= c.weight;
+          refracted = true;
+          d = c.wo;
+          if (c.reflected) continue;
+        }
+        ++layer;
+      } else if (d.z() > 0.0 && tau_new <= here.top && layer > 0) {  // reaches the next slab up
+        tau = here.top;
+        if (here.interface_above) {
+          const Crossing c = cross_rough_interface(flip_z(-d), 1.0 / here.eta_above, here.sigma_above, rng);
+          if (!c.alive) return;
+          weight *= c.weight;
+          refracted = true;
+          d = flip_z(c.wo);
+          if (c.reflected) continue;
+        }
+        --layer;
+      } else if (d.z() < 0.0 && tau_new >= tau_b_) {  // reaches the bottom
         tau = tau_b_;
         switch (m_.bottom.kind) {
           case BottomKind::Matched:
@@ -223,14 +269,14 @@ class Walker {
         }
       } else {  // collision inside the medium
         tau = tau_new;
-        weight *= m_.albedo;
+        weight *= here.albedo;
         if (weight <= 0.0) return;
         if (weight < kRouletteThreshold) {
           if (uniform01(rng) >= kRouletteSurvival) return;
           weight /= kRouletteSurvival;
         }
         scattered = true;
-        d = sample_henyey_greenstein(d, m_.g, rng);
+        d = sample_henyey_greenstein(d, here.g, rng);
       }
     }
   }
@@ -272,7 +318,8 @@ class Walker {
   bool top_present_ = true;
   double eta_b_ = 1.0;
   double sigma_b_ = 0.5;
-  double tau_b_ = 0.0;
+  double tau_b_ = 0.0;  // the stack's total optical depth
+  std::vector<WalkLayer> layers_;
 };
 
 }  // namespace

@@ -4,8 +4,8 @@
 // core/microfacet.h, which have their own unit tests), the Material type and its validation.
 //
 // Threads: this reference module uses std::thread, because a useful number of paths needs both cores; it is built
-// as its own library (skinlayer_reference), so the solver library itself stays free of threads. Each thread owns its own std::mt19937_64 seeded from (seed, thread index), so
-// a result is reproducible for the same seed and thread count.
+// as its own library (skinlayer_reference), so the solver library itself stays free of threads. Each thread owns its
+// own std::mt19937_64 seeded from (seed, thread index), so a result is reproducible for the same seed and thread count.
 //
 // The walk (one photon = weight 1, unpolarized), for light from omega_i = (theta_i, phi_i = 0) onto the top:
 //   * Rough interface crossing (top: eta = material.eta, sigma; bottom air: eta_b = bottom_eta(), sigma_b), with
@@ -22,6 +22,10 @@
 //     collision weight *= Omega (with Russian roulette for small weights) and the direction is resampled from the
 //     Henyey-Greenstein phase function (analytic inversion, uniform azimuth about the current direction).
 //     tau_b = +infinity (T = 0) is semi-infinite; tau_b = 0 (T = 1) has no medium.
+//   * Stacks (Material::below): the depth runs through the layers, each with its own Omega and g. A free path that
+//     reaches the face between two layers stops there (the exponential is memoryless, so the walk restarts at the
+//     face): an index-matched face lets it pass; a rough interface between them (eta = n_below / n_above) is
+//     crossed as above, from whichever side the photon arrives.
 //   * Bottom: Air (a rough interface as above; transmitted photons leave below), Matched (photons reaching tau_b
 //     leave unchanged), Lambert (at tau_b a cosine-distributed new upward direction, weight *= A).
 //   * A path is cut after kMaxEventsPerPath events (collisions plus interface and base interactions); the rest of
