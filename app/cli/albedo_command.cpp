@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "app/cli/errors.h"
@@ -47,14 +48,17 @@ std::string albedo_usage() {
          "  theta_i,reflectance_surface,reflectance_subsurface,reflectance,transmittance,absorptance\n"
          "Directional-hemispherical fractions of the incident flux: reflectance = reflectance_surface +\n"
          "reflectance_subsurface, and reflectance + transmittance + absorptance = 1. transmittance includes any\n"
-         "unscattered beam.\n"
+         "unscattered beam. A stack (--layer, repeated) adds absorptance_layer1, absorptance_layer2, ...: what\n"
+         "each layer's medium absorbs; the rest of absorptance is lost to the interfaces' shadowing and to a\n"
+         "Lambertian base.\n"
          "\n"
          "  --theta-i LIST\n"
          "      comma-separated incidence angles in degrees from the normal, each in [0, 90]; default " +
          std::string(kDefaultThetas) + ".\n\n" + material_flags_usage() +
          "\n"
          "Example:\n"
-         "  skinlayer albedo --albedo 0.9 --g 0.5 --bottom lambert:0.3 --theta-i 0,45,85\n";
+         "  skinlayer albedo --albedo 0.9 --g 0.5 --bottom lambert:0.3 --theta-i 0,45,85\n"
+         "  skinlayer albedo --layer tau=0.3,albedo=0.95,g=0.8 --layer T=0,albedo=0.99,g=0.7\n";
 }
 
 int run_albedo_command(std::span<const std::string_view> arguments, std::ostream& out) {
@@ -75,12 +79,21 @@ int run_albedo_command(std::span<const std::string_view> arguments, std::ostream
                              std::to_string(thetas_degrees.size()) + " angles");
   }
 
-  NumericTable table({"theta_i"},
-                     {"reflectance_surface", "reflectance_subsurface", "reflectance", "transmittance", "absorptance"});
+  // A stack adds what each of its layers absorbs, after the columns a single layer has.
+  std::vector<std::string> layer_columns;
+  for (int i = 1; material.layer_count() > 1 && i <= material.layer_count(); ++i) {
+    layer_columns.push_back("absorptance_layer" + std::to_string(i));
+  }
+  std::vector<std::string_view> columns = {"reflectance_surface", "reflectance_subsurface", "reflectance",
+                                           "transmittance", "absorptance"};
+  columns.insert(columns.end(), layer_columns.begin(), layer_columns.end());
+  NumericTable table({"theta_i"}, columns);
   for (std::size_t index = 0; index < albedos.size(); ++index) {
     const DirectionalAlbedo& albedo = albedos[index];
-    table.add_row({thetas_degrees[index], albedo.reflectance_surface, albedo.reflectance_subsurface,
-                   albedo.reflectance(), albedo.transmittance, albedo.absorptance});
+    std::vector<double> row = {thetas_degrees[index], albedo.reflectance_surface, albedo.reflectance_subsurface,
+                               albedo.reflectance(),  albedo.transmittance,       albedo.absorptance};
+    if (!layer_columns.empty()) row.insert(row.end(), albedo.layer_absorptance.begin(), albedo.layer_absorptance.end());
+    table.add_row(row);
   }
   table.require_finite();
   table.write_csv(out);

@@ -64,7 +64,9 @@ ParsedFlags ParsedFlags::parse(std::span<const std::string_view> arguments,
     } else {
       throw UsageError("flag --" + std::string(name) + " needs a value");
     }
-    if (flags.has(name)) throw UsageError("flag --" + std::string(name) + " is given more than once");
+    if (flags.has(name) && !is_known(kRepeatableFlags, name)) {
+      throw UsageError("flag --" + std::string(name) + " is given more than once");
+    }
     flags.values_.emplace_back(name, value);
   }
   return flags;
@@ -75,6 +77,14 @@ std::optional<std::string_view> ParsedFlags::value(std::string_view name) const 
     if (flag == name) return value;
   }
   return std::nullopt;
+}
+
+std::vector<std::string_view> ParsedFlags::values(std::string_view name) const {
+  std::vector<std::string_view> result;
+  for (const auto& [flag, value] : values_) {
+    if (flag == name) result.push_back(value);
+  }
+  return result;
 }
 
 }  // namespace skinlayer::cli

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/cli/errors.h"
+#include "app/cli/layer_flag.h"
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/material/exact_transparency.h"
@@ -19,9 +20,11 @@ namespace {
 // --bottom lambert:A.
 constexpr std::string_view kLambertParameter = "lambert";
 
-constexpr std::array<std::string_view, 10> kMaterialFlags = {
-    "sigma", "eta", "T", "tau", "albedo", "g", "bottom", "bottom-sigma", "bottom-eta", "ordinates",
+constexpr std::array<std::string_view, 11> kMaterialFlags = {
+    "sigma", "eta", "T", "tau", "albedo", "g", "layer", "bottom", "bottom-sigma", "bottom-eta", "ordinates",
 };
+// The single layer's own flags, which --layer replaces.
+constexpr std::array<std::string_view, 4> kSingleLayerFlags = {"T", "tau", "albedo", "g"};
 constexpr std::array<std::string_view, 2> kSourceFlags = {"material", "preset"};
 
 // The flag's value checked against its row of the parameter table, or nullopt when the flag is absent.
@@ -137,6 +140,29 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
   }
   material.albedo = document.albedo_rgb[0];
   if (const auto value = checked_number(flags, "g")) material.g = *value;
+  const std::vector<std::string_view> layer_specs = flags.values("layer");
+  if (!layer_specs.empty()) {
+    for (const std::string_view single : kSingleLayerFlags) {
+      if (flags.has(single)) {
+        throw UsageError("flag --" + std::string(single) +
+                         " sets the single layer's value; with --layer give it inside each layer, as in --layer " +
+                         "T=0.5,albedo=0.9,g=0.8");
+      }
+    }
+    material.below.clear();
+    document.below_rgb.clear();
+    for (std::size_t i = 0; i < layer_specs.size(); ++i) {
+      const LayerSpec spec =
+          parse_layer_spec(layer_specs[i], static_cast<int>(i) + 1, albedo_flag == AlbedoFlag::GreyOrRgb);
+      if (i == 0) {
+        material.tau = spec.tau;
+        material.g = spec.g;
+      } else {
+        material.below.push_back({spec.tau, spec.albedo[0], spec.g, spec.interface});
+      }
+      document.set_layer_albedo(i, spec.albedo);
+    }
+  }
   if (const auto text = flags.value("bottom")) {
     material.bottom = parse_bottom(*text);
     origin.clear();
@@ -167,6 +193,16 @@ Material single_channel(const MaterialDocument& document) {
 
 std::string material_to_flags(const Material& material) {
   std::string text = "--sigma " + format_shortest(material.sigma) + " --eta " + format_shortest(material.eta);
+  if (!material.below.empty()) {
+    for (const StackedLayer& layer : stack_layers(material)) {
+      text += " --layer " + format_layer_spec(layer, {layer.albedo, layer.albedo, layer.albedo});
+    }
+    text += " --bottom " + format_bottom(material.bottom);
+    if (material.bottom.sigma) text += " --bottom-sigma " + format_shortest(*material.bottom.sigma);
+    if (material.bottom.eta) text += " --bottom-eta " + format_shortest(*material.bottom.eta);
+    if (material.ordinates) text += " --ordinates " + std::to_string(*material.ordinates);
+    return text;
+  }
   // T with the fewest digits that give back the same tau (0.1, not exp(-(-ln 0.1)) = 0.10000000000000002).
   const std::optional<double> transparency = exact_transparency(material.tau);
   const std::string depth =
@@ -193,6 +229,16 @@ std::string material_flags_usage() {
     if (info.flag == kLambertParameter) continue;
     if (info.flag == "bottom-sigma") text += usage_entry(parameter_info(kLambertParameter));
     text += usage_entry(info);
+    if (info.flag == "g") {
+      text +=
+          "  --layer T=X|tau=X[,albedo=A][,g=G][,sigma=S,eta=E]\n"
+          "      one layer of a stack, repeated top to bottom, in place of --T/--tau, --albedo and --g. Keys range\n"
+          "      as the flags; albedo r:g:b where --albedo takes RGB. sigma and eta (n_this/n_above, range\n"
+          "      " +
+          range_text(interface_eta_info()) +
+          ", 1 = none) give a rough interface above the layer, for every layer but the first (both or\n"
+          "      neither). Only the last layer may be semi-infinite (T=0). --bottom applies under the last layer.\n";
+    }
   }
   return text;
 }

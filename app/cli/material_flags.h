@@ -1,6 +1,7 @@
 // The material flags shared by the solving commands, read into a skinlayer::Material against core's parameter
-// table: [--material FILE | --preset NAME] --sigma --eta --T | --tau --albedo --g
-// --bottom air|matched|lambert:A [--bottom-sigma --bottom-eta] [--ordinates N].
+// table: [--material FILE | --preset NAME] --sigma --eta (--T | --tau --albedo --g | --layer SPEC...)
+// --bottom air|matched|lambert:A [--bottom-sigma --bottom-eta] [--ordinates N]. --layer (app/cli/layer_flag.h),
+// repeated, gives a stack top to bottom and replaces the file's layers.
 #pragma once
 
 #include <array>
@@ -30,7 +31,8 @@ enum class AlbedoFlag { Grey, GreyOrRgb };
 // skinlayer's defaults; then every material flag given, over it (flags win over the file). The document keeps the
 // file's name, description and model (--model is the command's to read: model_from_flags).
 // Throws skinlayer::ParameterError (core's check_parameter message: names the parameter and its range) for a value
-// out of range or NaN; UsageError for a value that is not a number, --T together with --tau, --material together
+// out of range or NaN, its message starting "layer <i>: " for a --layer value; UsageError for a value that is not a
+// number, --T, --tau, --albedo or --g together with --layer, --T together with --tau, --material together
 // with --preset, --bottom-sigma or --bottom-eta with a bottom other than air, or a non-integer --ordinates; and
 // MaterialFileError for a file or preset that cannot be read.
 MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFlag albedo = AlbedoFlag::Grey);

@@ -135,11 +135,9 @@ int run_validate_command(std::span<const std::string_view> arguments, std::ostre
     out << header << std::flush;
     results.push_back(validation::run_validation_set(set, options));
     validation::print_set_table(out, results.back());
-    MaterialDocument material;  // the plot remembers the set's material, as every skinlayer PNG does
+    MaterialDocument material = grey_document(set.material);  // the plot remembers the set's material
     material.name = set.name;
     material.description = set.description;
-    material.layer = set.material;
-    material.albedo_rgb = {set.material.albedo, set.material.albedo, set.material.albedo};
     const nlohmann::ordered_json settings = {
         {"command", "validate"}, {"set", set.name}, {"light_theta", set.theta_i_deg}};
     write_png(validation::draw_validation_plot(results.back(), font), (dir / (set.name + ".png")).string(),

@@ -109,14 +109,10 @@ std::vector<LobeSample> plotted(const std::vector<Sample>& samples, double scale
 // The figure's metadata chunk: its first curve's material, and which parameter the other curves vary.
 PngText figure_metadata(const FigureSpec& spec) {
   const FigureCurve& first = spec.curves.front();
-  MaterialDocument material;
+  MaterialDocument material = grey_document(first.params.material());
   material.name = spec.name;
   material.description = spec.title + " (the first curve's material)";
-  material.layer = first.params.material();
-  material.albedo_rgb = spec.kind == FigureKind::ModelSpheres
-                            ? first.albedo_rgb
-                            : std::array<double, 3>{first.params.albedo, first.params.albedo, first.params.albedo};
-  material.layer.albedo = material.albedo_rgb[0];
+  if (spec.kind == FigureKind::ModelSpheres) material.set_layer_albedo(0, first.albedo_rgb);
   material.model = first.model;
   nlohmann::ordered_json values = nlohmann::ordered_json::array();
   for (const FigureCurve& curve : spec.curves) values.push_back(curve.value);

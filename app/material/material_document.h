@@ -7,21 +7,35 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/material.h"
 #include "core/subsurface_model.h"
 
 namespace skinlayer {
 
+using AlbedoRgb = std::array<double, 3>;
+
 struct MaterialDocument {
   std::string name;         // empty: none
   std::string description;  // empty: none
-  Material layer;           // layer.albedo is albedo_rgb[0]
-  std::array<double, 3> albedo_rgb = {1.0, 1.0, 1.0};
+  Material layer;           // layer.albedo is albedo_rgb[0]; layer.below[i].albedo is below_rgb[i][0]
+  AlbedoRgb albedo_rgb = {1.0, 1.0, 1.0};
+  std::vector<AlbedoRgb> below_rgb;      // a stack's layers 2..n, one per layer.below
   std::optional<SubsurfaceModel> model;  // unset: the command's default (stam)
 
-  bool grey() const { return albedo_rgb[0] == albedo_rgb[1] && albedo_rgb[1] == albedo_rgb[2]; }
+  // Every layer's albedo is the same in the three channels.
+  bool grey() const;
+  // The material of one channel (0 red, 1 green, 2 blue): every layer's albedo that channel's.
+  Material channel(int c) const;
+  // Sets layer i's (0-based, top to bottom) albedo in the three channels, and layer.albedo or layer.below[i - 1].
+  void set_layer_albedo(std::size_t i, const AlbedoRgb& rgb);
+  // Layer i's albedo in the three channels (a stacked layer without below_rgb: its grey albedo).
+  AlbedoRgb layer_albedo(std::size_t i) const;
 };
+
+// The document of a one-channel material: every layer's albedo the same in the three channels.
+MaterialDocument grey_document(const Material& material);
 
 // A material file (or preset, or picture) that cannot be read. The message is one line that names the file and,
 // as the case may be, line:column of a syntax error or the key at fault with what would be valid. The command line

@@ -94,41 +94,68 @@ class DocumentReader {
   std::string source_;
 };
 
-Json albedo_json(const MaterialDocument& document) {
-  if (document.grey()) return document.albedo_rgb[0];
-  return Json::array({document.albedo_rgb[0], document.albedo_rgb[1], document.albedo_rgb[2]});
+Json albedo_json(const AlbedoRgb& rgb) {
+  if (rgb[0] == rgb[1] && rgb[1] == rgb[2]) return rgb[0];
+  return Json::array({rgb[0], rgb[1], rgb[2]});
 }
 
-void read_layer(const DocumentReader& reader, const Json& layer, const std::string& path, MaterialDocument& document) {
+// Layer `index` (0-based, top to bottom) of the "layers" list: the first one's values go to document.layer, every
+// other one is appended to document.layer.below.
+void read_layer(const DocumentReader& reader, const Json& layer, std::size_t index, MaterialDocument& document) {
+  const std::string path = "layers[" + std::to_string(index) + "]";
   reader.object(layer, path);
-  reader.only_keys(layer, path, {"T", "tau", "albedo", "g"});
+  if (index == 0) {
+    reader.only_keys(layer, path, {"T", "tau", "albedo", "g"});
+  } else {
+    reader.only_keys(layer, path, {"T", "tau", "albedo", "g", "interface"});
+  }
+  double tau = 0.0;
+  AlbedoRgb rgb{};
   const bool has_t = layer.contains("T"), has_tau = layer.contains("tau");
   if (has_t && has_tau) reader.fail(path, "gives both \"T\" and \"tau\"; give one (T = exp(-tau))");
   if (!has_t && !has_tau) {
     reader.fail(path + ".T", "is missing (transparency T in [0, 1], or \"tau\": optical depth, a number or \"inf\")");
   }
   if (has_t) {
-    document.layer.tau = optical_depth_from_transparency(reader.parameter(layer["T"], path + ".T", "T"));
+    tau = optical_depth_from_transparency(reader.parameter(layer["T"], path + ".T", "T"));
   } else if (layer["tau"].is_string() && layer["tau"].get<std::string>() == "inf") {
-    document.layer.tau = INFINITY;
+    tau = INFINITY;
   } else {
     if (layer["tau"].is_string())
       reader.fail(path + ".tau", "must be a number or \"inf\", not \"" + layer["tau"].get<std::string>() + "\"");
-    document.layer.tau = reader.parameter(layer["tau"], path + ".tau", "tau");
+    tau = reader.parameter(layer["tau"], path + ".tau", "tau");
   }
   const Json& albedo = reader.required(layer, path, "albedo", "single-scattering albedo: a number or [r, g, b]");
   if (albedo.is_array()) {
     if (albedo.size() != 3)
       reader.fail(path + ".albedo", "must hold 3 numbers [r, g, b], not " + std::to_string(albedo.size()));
     for (std::size_t c = 0; c < 3; ++c) {
-      document.albedo_rgb[c] = reader.parameter(albedo[c], path + ".albedo[" + std::to_string(c) + "]", "albedo");
+      rgb[c] = reader.parameter(albedo[c], path + ".albedo[" + std::to_string(c) + "]", "albedo");
     }
   } else {
     const double grey = reader.parameter(albedo, path + ".albedo", "albedo");
-    document.albedo_rgb = {grey, grey, grey};
+    rgb = {grey, grey, grey};
   }
-  document.layer.albedo = document.albedo_rgb[0];
-  document.layer.g = reader.required_parameter(layer, path, "g", "g");
+  const double g = reader.required_parameter(layer, path, "g", "g");
+  if (index == 0) {
+    document.layer.tau = tau;
+    document.layer.g = g;
+  } else {
+    StackedLayer stacked{tau, rgb[0], g, std::nullopt};
+    if (layer.contains("interface")) {
+      const std::string at = path + ".interface";
+      const Json& interface = reader.object(layer["interface"], at);
+      reader.only_keys(interface, at, {"sigma", "eta"});
+      LayerInterface parsed;
+      parsed.sigma = reader.required_parameter(interface, at, "sigma", "sigma");
+      const Json& eta = reader.required(interface, at, "eta", "n_this / n_above, a number in [0.4, 2.5]");
+      if (!eta.is_number()) reader.fail(at + ".eta", "must be a number in [0.4, 2.5], not " + type_name(eta));
+      parsed.eta = eta.get<double>();
+      stacked.interface = parsed;
+    }
+    document.layer.below.push_back(stacked);
+  }
+  document.set_layer_albedo(index, rgb);
 }
 
 void read_bottom(const DocumentReader& reader, const Json& bottom, MaterialDocument& document) {
@@ -164,15 +191,24 @@ Json material_json(const MaterialDocument& document) {
   if (!document.description.empty()) json["description"] = document.description;
   const Material& m = document.layer;
   json["top"] = {{"sigma", m.sigma}, {"eta", m.eta}};
-  Json layer = Json::object();
-  if (const std::optional<double> transparency = exact_transparency(m.tau)) {
-    layer["T"] = *transparency;
-  } else {
-    layer["tau"] = m.tau;
+  Json layers = Json::array();
+  const std::vector<StackedLayer> stack = stack_layers(m);
+  for (std::size_t i = 0; i < stack.size(); ++i) {
+    Json layer = Json::object();
+    if (const std::optional<double> transparency = exact_transparency(stack[i].tau)) {
+      layer["T"] = *transparency;
+    } else if (std::isinf(stack[i].tau)) {
+      layer["tau"] = "inf";
+    } else {
+      layer["tau"] = stack[i].tau;
+    }
+    layer["albedo"] = albedo_json(document.layer_albedo(i));
+    layer["g"] = stack[i].g;
+    if (stack[i].interface)
+      layer["interface"] = {{"sigma", stack[i].interface->sigma}, {"eta", stack[i].interface->eta}};
+    layers.push_back(layer);
   }
-  layer["albedo"] = albedo_json(document);
-  layer["g"] = m.g;
-  json["layers"] = Json::array({layer});
+  json["layers"] = layers;
   switch (m.bottom.kind) {
     case BottomKind::Air:
       json["bottom"] = {{"type", "air"}, {"sigma", m.bottom_sigma()}, {"eta", m.bottom_eta()}};
@@ -247,11 +283,8 @@ MaterialDocument material_from_json(const Json& json, std::string_view source) {
   const Json& layers =
       reader.required(json, "", "layers", "a list of layers, each {\"T\" or \"tau\", \"albedo\", \"g\"}");
   if (!layers.is_array()) reader.fail("layers", "must be a list of layers, not " + type_name(layers));
-  if (layers.size() != 1) {
-    reader.fail("layers", "holds " + std::to_string(layers.size()) +
-                              " layers; this build solves exactly one (stacked layers are not yet supported)");
-  }
-  read_layer(reader, layers[0], "layers[0]", document);
+  if (layers.empty()) reader.fail("layers", "holds 0 layers; a material has at least one");
+  for (std::size_t i = 0; i < layers.size(); ++i) read_layer(reader, layers[i], i, document);
 
   read_bottom(reader, reader.required(json, "", "bottom", "{\"type\": \"air\" | \"matched\" | \"lambert\", ...}"),
               document);

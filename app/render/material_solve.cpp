@@ -35,14 +35,17 @@ DirectionalAlbedo model_albedo(const LayerTables& tables, const DirectionalAlbed
 MaterialDocument material_document(const ColorMaterial& material) {
   MaterialDocument document;
   document.layer = material.layer;
-  document.layer.albedo = material.albedo_rgb[0];
-  document.albedo_rgb = material.albedo_rgb;
+  document.set_layer_albedo(0, material.albedo_rgb);
+  for (std::size_t i = 0; i < material.layer.below.size(); ++i) {
+    document.set_layer_albedo(i + 1, i < material.below_rgb.size() ? material.below_rgb[i] : AlbedoRgb{1.0, 1.0, 1.0});
+  }
   document.model = material.model;
   return document;
 }
 
 ColorMaterial color_material(const MaterialDocument& document) {
-  return ColorMaterial{document.layer, document.albedo_rgb, document.model.value_or(SubsurfaceModel::Stam)};
+  return ColorMaterial{document.layer, document.albedo_rgb, document.below_rgb,
+                       document.model.value_or(SubsurfaceModel::Stam)};
 }
 
 ColorTables solve_color(const ColorMaterial& material, double theta_i, const SolveOptions& options) {
@@ -50,26 +53,33 @@ ColorTables solve_color(const ColorMaterial& material, double theta_i, const Sol
   ColorTables result;
   result.material = material;
   result.albedo_theta_i = theta_i;
-  // One solve for the distinct albedo values; the channels index into it.
-  std::vector<double> distinct;
+  // One solve for the distinct channels (each its layers' albedos); the channels index into it.
+  const MaterialDocument document = material_document(material);
+  std::vector<Material> distinct;
   std::array<std::size_t, 3> index{};
   for (int c = 0; c < 3; ++c) {
-    const auto found = std::find(distinct.begin(), distinct.end(), material.albedo_rgb[c]);
+    const Material channel = document.channel(c);
+    const auto same_albedos = [&](const Material& m) {
+      if (m.albedo != channel.albedo) return false;
+      for (std::size_t i = 0; i < m.below.size(); ++i) {
+        if (m.below[i].albedo != channel.below[i].albedo) return false;
+      }
+      return true;
+    };
+    const auto found = std::find_if(distinct.begin(), distinct.end(), same_albedos);
     index[c] = static_cast<std::size_t>(found - distinct.begin());
-    if (found == distinct.end()) distinct.push_back(material.albedo_rgb[c]);
+    if (found == distinct.end()) distinct.push_back(channel);
   }
   std::vector<LayerTables> tables;
   std::vector<DirectionalAlbedo> albedo;
   const std::vector<std::vector<DirectionalAlbedo>> layer_albedo =
-      directional_albedo(material.layer, std::vector<double>{theta_i}, distinct, options);
+      directional_albedo(distinct, std::vector<double>{theta_i}, options);
   if (material.model == SubsurfaceModel::Stam) {
-    tables = solve(material.layer, distinct, options);
+    tables = solve(distinct, options);
     for (const std::vector<DirectionalAlbedo>& rows : layer_albedo) albedo.push_back(rows.front());
   } else {
     for (std::size_t d = 0; d < distinct.size(); ++d) {
-      Material layer = material.layer;
-      layer.albedo = distinct[d];
-      tables.push_back(solve_model(layer, material.model, options));
+      tables.push_back(solve_model(distinct[d], material.model, options));
       albedo.push_back(model_albedo(tables.back(), layer_albedo[d].front()));
     }
   }

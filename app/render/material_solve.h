@@ -14,9 +14,10 @@
 namespace skinlayer {
 
 struct ColorMaterial {
-  Material layer;  // layer.albedo is ignored; albedo_rgb is used instead
+  Material layer;  // layer.albedo and layer.below[i].albedo are ignored; albedo_rgb and below_rgb are used instead
   std::array<double, 3> albedo_rgb = {1.0, 1.0, 1.0};
-  SubsurfaceModel model = SubsurfaceModel::Stam;  // the comparison models share the surface term
+  std::vector<std::array<double, 3>> below_rgb;   // a stack's layers 2..n, one per layer.below
+  SubsurfaceModel model = SubsurfaceModel::Stam;  // the comparison models share the surface term (one layer only)
 };
 
 // The material as a file holds it (app/material), and back; a ColorMaterial has no name or description.
@@ -31,10 +32,10 @@ struct ColorTables {
   double solve_seconds = 0.0;
 };
 
-// Validates the material (every channel) and solves each distinct albedo value once; also the directional albedo
-// at theta_i (radians): the layer's from the solver, or for a comparison model its tables integrated over the
-// hemisphere (with the same surface reflectance). Throws ParameterError for invalid parameters.
-// `options` pass the caller's cache and parallel-for through to core (SolveOptions).
+// Validates the material (every channel) and solves each distinct channel (its layers' albedos) once; also the
+// directional albedo at theta_i (radians): the layer's from the solver, or for a comparison model its tables integrated
+// over the hemisphere (with the same surface reflectance). Throws ParameterError for invalid parameters. `options` pass
+// the caller's cache and parallel-for through to core (SolveOptions).
 ColorTables solve_color(const ColorMaterial& material, double theta_i = 0.0, const SolveOptions& options = {});
 
 // The surface term plus the subsurface BRDF of one channel, and the BTDF, in 1/sr (graphics convention, radians).

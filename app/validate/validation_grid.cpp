@@ -1,5 +1,6 @@
 #include "app/validate/validation_grid.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -125,6 +126,39 @@ std::vector<ValidationSet> validation_grid() {
       grid.push_back(set(name, description, m, 30.0));
     }
   }
+  // Stacks (issue 12): two and three layers of very different g and Omega, a rough interface between layers, and
+  // a thin layer over a semi-infinite one.
+  Material two = paper;
+  two.tau = 0.5;
+  two.albedo = 0.9;
+  two.g = 0.9;
+  two.below = {{2.0, 0.99, 0.0, std::nullopt}};
+  grid.push_back(set("stack-2", "two layers: τ 0.5, Ω 0.9, g 0.9 over τ 2, Ω 0.99, g 0", two, 30.0));
+  Material three = paper;
+  three.tau = 0.3;
+  three.albedo = 0.95;
+  three.g = 0.8;
+  three.below = {{0.5, 0.6, -0.3, std::nullopt}, {1.0, 0.99, 0.5, std::nullopt}};
+  three.bottom.kind = BottomKind::Matched;
+  grid.push_back(
+      set("stack-3", "three layers (g 0.8, -0.3, 0.5; Ω 0.95, 0.6, 0.99) over a matched half-space", three, 45.0));
+  Material inner = paper;
+  inner.sigma = 0.3;
+  inner.tau = 0.4;
+  inner.albedo = 0.95;
+  inner.g = 0.5;
+  inner.below = {{1.5, 0.9, 0.8, LayerInterface{0.4, 1.15}}};
+  grid.push_back(
+      set("stack-interface", "two layers with a rough interface between them (σ 0.4, η 1.15), air below", inner, 45.0));
+  Material coat = paper;
+  coat.sigma = 0.2;
+  coat.eta = 1.5;
+  coat.tau = optical_depth_from_transparency(0.9);
+  coat.albedo = 0.99;
+  coat.g = 0.8;
+  coat.below = {{INFINITY, 0.9, 0.3, std::nullopt}};
+  grid.push_back(
+      set("stack-thin-over-deep", "a thin layer (T 0.9, g 0.8) over a semi-infinite one (Ω 0.9, g 0.3)", coat, 30.0));
   for (std::size_t k = 0; k < grid.size(); ++k) grid[k].grid_index = k;
   return grid;
 }

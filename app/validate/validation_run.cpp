@@ -47,7 +47,7 @@ const char* plane_label(BinPlane plane) {
 }
 
 bool transmits(const Material& material) {
-  return !std::isinf(material.tau) && material.bottom.kind != BottomKind::Lambert;
+  return !std::isinf(material.total_tau()) && material.bottom.kind != BottomKind::Lambert;
 }
 
 std::string bin_name(const ValidationBin& bin) {

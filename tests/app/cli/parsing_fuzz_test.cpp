@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <exception>
 #include <limits>
+#include <map>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -659,8 +660,10 @@ ExpectedFlags expected_flags(const std::vector<std::string>& arguments, const st
       expected.error_names = "--" + name;  // no value
       return expected;
     }
+    const bool repeatable =
+        std::find(std::begin(kRepeatableFlags), std::end(kRepeatableFlags), name) != std::end(kRepeatableFlags);
     for (const auto& [given, unused] : expected.values) {
-      if (given == name) {
+      if (given == name && !repeatable) {
         expected.error_names = "--" + name;  // twice
         return expected;
       }
@@ -700,9 +703,16 @@ std::optional<ParsedFlags> check_parse(const std::vector<std::string>& arguments
     std::vector<std::string_view> names = known;
     names.insert(names.end(), switches.begin(), switches.end());
     for (const std::string_view name : names) {
-      std::optional<std::string> want;
+      std::optional<std::string> want;  // the first value given (value() of a repeatable flag)
+      std::vector<std::string_view> all;
       for (const auto& [given, value] : expected.values) {
-        if (given == name) want = value;
+        if (given != name) continue;
+        if (!want) want = value;
+        all.push_back(value);
+      }
+      if (flags.values(name) != all) {
+        ADD_FAILURE() << "flag " << name << ": values() differ from " << escaped(arguments);
+        failed = true;
       }
       const std::optional<std::string_view> got = flags.value(name);
       if (got.has_value() != want.has_value() || (got && *got != *want) || flags.has(name) != want.has_value()) {
@@ -971,8 +981,11 @@ TEST(ParsingFuzz, MaterialAndModelFlagsRandomArguments) {
   Random random(0x5eed0007);
   const std::vector<std::string> extremes = extreme_numbers();
   // The parameter flags and --model; --material and --preset read files and presets, fuzzed by
-  // MaterialJsonRandomDocuments below.
-  std::vector<std::string_view> known(material_flag_names().begin(), material_flag_names().end());
+  // MaterialJsonRandomDocuments below, and --layer has its own (LayerSpecsRandomArguments).
+  std::vector<std::string_view> known;
+  for (const std::string_view name : material_flag_names()) {
+    if (name != "layer") known.push_back(name);
+  }
   known.push_back(kModelFlag);
   std::vector<std::string> names(known.begin(), known.end());
   names.insert(names.end(), {"sigmaa", "Sigma", "", "output", "help"});
@@ -1015,6 +1028,115 @@ TEST(ParsingFuzz, MaterialAndModelFlagsRandomArguments) {
   }
   // Enough argument vectors got through to a material for its fields to have been checked.
   EXPECT_GT(materials, 1000);
+}
+
+// --layer specs (app/cli/layer_flag.h): random stacks of random specs against an oracle written from the contract.
+// A stack either builds, with every layer's fields as its spec says (defaults where a key is absent), or is refused
+// with one message that starts with the place of the first faulty layer ("layer 2: ").
+TEST(ParsingFuzz, LayerSpecsRandomArguments) {
+  Random random(0x5eed0011);
+  const std::vector<std::string> keys = {"T", "tau", "albedo", "g", "sigma", "eta", "t", "omega", ""};
+  const std::vector<std::string> numbers = {"0",   "1",   "0.5", "0.2",         "0.95",  "-0.95", "2.5",
+                                            "0.4", "inf", "nan", "1e309",       "-0",    "0.05",  "3",
+                                            "x",   "",    "1.2", "0.9:0.8:0.7", "1e-400"};
+  const std::vector<std::string_view> known = {"layer", "sigma", "eta", "bottom"};
+  int built = 0, refused = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    const std::size_t count = 1 + below(random, 4);
+    std::vector<std::vector<std::pair<std::string, std::string>>> specs(count);
+    std::vector<std::string> arguments;
+    for (auto& spec : specs) {
+      // Mostly well-formed: a depth key, then a few others.
+      if (chance(random, 0.9)) spec.emplace_back(chance(random, 0.5) ? "T" : "tau", pick(random, numbers));
+      const std::size_t extra = below(random, 4);
+      for (std::size_t k = 0; k < extra; ++k) spec.emplace_back(pick(random, keys), pick(random, numbers));
+      std::string text;
+      for (const auto& [key, value] : spec) text += (text.empty() ? "" : ",") + key + "=" + value;
+      arguments.push_back("--layer");
+      arguments.push_back(text.empty() ? "T=0.5" : text);
+      if (text.empty()) spec = {{"T", "0.5"}};
+    }
+    const std::vector<std::string_view> views(arguments.begin(), arguments.end());
+    // --layer values never start with "--", so parsing always succeeds.
+    const ParsedFlags flags = ParsedFlags::parse(views, known, "skinlayer fuzz");
+
+    // The oracle: the first faulty layer, or the expected layers.
+    std::optional<std::size_t> faulty;
+    std::vector<StackedLayer> expected;
+    for (std::size_t i = 0; i < count && !faulty; ++i) {
+      const auto& spec = specs[i];
+      std::map<std::string, std::string> values;
+      bool bad = false;
+      for (const auto& [key, value] : spec) {
+        const bool valid_key =
+            key == "T" || key == "tau" || key == "albedo" || key == "g" || key == "sigma" || key == "eta";
+        bad |= !valid_key || values.count(key) > 0;
+        values[key] = value;
+      }
+      bad |= values.count("T") == values.count("tau");  // exactly one
+      bad |= (values.count("sigma") != values.count("eta")) || (i == 0 && values.count("sigma") > 0);
+      const auto in_range = [&](const std::string& key, const ParameterInfo& info, double& out) {
+        if (!values.count(key)) return;
+        const std::optional<double> v = parse_number(values[key]);
+        if (!v || !(*v >= info.min && *v <= info.max)) {
+          bad = true;
+          return;
+        }
+        out = *v;
+      };
+      StackedLayer layer{0.0, parameter_info("albedo").default_value, parameter_info("g").default_value, {}};
+      double t = 0.0;
+      in_range("T", parameter_info("T"), t);
+      if (values.count("T") && !bad) layer.tau = optical_depth_from_transparency(t);
+      in_range("tau", parameter_info("tau"), layer.tau);
+      in_range("albedo", parameter_info("albedo"), layer.albedo);
+      in_range("g", parameter_info("g"), layer.g);
+      if (values.count("sigma")) {
+        LayerInterface interface;
+        in_range("sigma", parameter_info("sigma"), interface.sigma);
+        in_range("eta", interface_eta_info(), interface.eta);
+        layer.interface = interface;
+      }
+      if (bad) faulty = i;
+      expected.push_back(layer);
+    }
+    if (!faulty) {
+      for (std::size_t i = 0; i + 1 < count; ++i) {
+        if (std::isinf(expected[i].tau)) {
+          faulty = i;
+          break;
+        }
+      }
+    }
+    try {
+      const Material m = material_from_flags(flags);
+      if (faulty) {
+        ADD_FAILURE() << "built, but layer " << *faulty + 1 << " is faulty: " << escaped(arguments);
+        continue;
+      }
+      ++built;
+      const std::vector<StackedLayer> layers = stack_layers(m);
+      ASSERT_EQ(layers.size(), count) << escaped(arguments);
+      for (std::size_t i = 0; i < count; ++i) {
+        EXPECT_EQ(layers[i].tau, expected[i].tau) << i << " " << escaped(arguments);
+        EXPECT_EQ(layers[i].albedo, expected[i].albedo) << i << " " << escaped(arguments);
+        EXPECT_EQ(layers[i].g, expected[i].g) << i << " " << escaped(arguments);
+        EXPECT_EQ(layers[i].interface, expected[i].interface) << i << " " << escaped(arguments);
+      }
+    } catch (const std::exception& error) {
+      const std::string message = error.what();
+      ++refused;
+      if (!faulty) {
+        ADD_FAILURE() << "refused a valid stack (" << message << "): " << escaped(arguments);
+      } else {
+        EXPECT_TRUE(message.starts_with("layer " + std::to_string(*faulty + 1) + ": "))
+            << message << " for " << escaped(arguments);
+        EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      }
+    }
+  }
+  EXPECT_GT(built, 500);
+  EXPECT_GT(refused, 1000);
 }
 
 }  // namespace

@@ -28,11 +28,19 @@ void expect_same(const MaterialDocument& a, const MaterialDocument& b) {
   EXPECT_EQ(a.layer.bottom.lambert_albedo, b.layer.bottom.lambert_albedo);
   EXPECT_EQ(a.layer.ordinates, b.layer.ordinates);
   EXPECT_EQ(a.albedo_rgb, b.albedo_rgb);
+  EXPECT_EQ(a.layer.below, b.layer.below);
+  EXPECT_EQ(a.below_rgb, b.below_rgb);
   EXPECT_EQ(a.model, b.model);
 }
 
 std::vector<MaterialDocument> assorted_documents() {
-  std::vector<MaterialDocument> documents(7);
+  std::vector<MaterialDocument> documents(9);
+  // Stacks: RGB per layer, an interface between layers, a semi-infinite last layer, a depth no T reads back.
+  documents[7].layer.below = {{0.1, 1.0, 0.3, LayerInterface{0.25, 0.8}}, {INFINITY, 1.0, -0.2, std::nullopt}};
+  documents[7].set_layer_albedo(1, {0.9, 0.8, 0.7});
+  documents[7].set_layer_albedo(2, {0.5, 0.5, 0.5});
+  documents[8].layer.below = {{optical_depth_from_transparency(0.3), 0.7, 0.9, LayerInterface{1.0, 1.0}}};
+  documents[8].set_layer_albedo(1, {0.7, 0.7, 0.7});
   documents[1].name = "skin «test»";
   documents[1].description = "UTF-8 survives: σ, η, Ω";
   documents[1].albedo_rgb = {0.95, 0.7, 0.55};
@@ -62,6 +70,11 @@ TEST(MaterialJson, WhatIsWrittenReadsBackBitForBit) {
   EXPECT_NE(material_json_text(documents[2]).find("\"T\": 0.0"), std::string::npos);
   EXPECT_NE(material_json_text(documents[3]).find("\"tau\": 0.1,"), std::string::npos);
   EXPECT_NE(material_json_text(documents[1]).find("[\n"), std::string::npos) << "an RGB albedo is a list";
+  const nlohmann::ordered_json stack = material_json(documents[7]);
+  ASSERT_EQ(stack["layers"].size(), 3u);
+  EXPECT_FALSE(stack["layers"][0].contains("interface"));
+  EXPECT_EQ(stack["layers"][1]["interface"]["eta"], 0.8);
+  EXPECT_EQ(stack["layers"][2]["T"], 0.0);
 }
 
 TEST(MaterialJson, EveryValueIsExplicitAndTheBottomStatesItsInterface) {
@@ -136,6 +149,20 @@ TEST(MaterialJson, EachKindOfErrorIsOneLineNamingTheFileAndTheKey) {
       {valid_with("\"version\": 1,", "\"version\": 1, \"ordinates\": 10.5,"), {"\"ordinates\"", "whole number"}},
       {valid_with("\"version\": 1,", "\"version\": 1, \"model\": \"phong\","), {"\"model\"", "phong", "stam"}},
       {"[1, 2, 3]", {"bad.json", "not a skinlayer material file"}},
+      // Stacks: an interface above the first layer, a semi-infinite layer above another, an interface out of range.
+      {valid_with("\"g\": 0.8}]", "\"g\": 0.8, \"interface\": {\"sigma\": 0.3, \"eta\": 1.1}}]"),
+       {"unknown key \"layers[0].interface\""}},
+      {valid_with("[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}]",
+                  "[{\"T\": 0, \"albedo\": 1, \"g\": 0.8}, {\"T\": 0.5, \"albedo\": 1, \"g\": 0}]"),
+       {"bad.json", "layer 1", "only for the last layer"}},
+      {valid_with("[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}]",
+                  "[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}, {\"T\": 0.5, \"albedo\": 1, \"g\": 0, "
+                  "\"interface\": {\"sigma\": 0.3, \"eta\": 3}}]"),
+       {"bad.json", "layer 2", "eta = 3", "[0.4, 2.5]"}},
+      {valid_with("[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}]",
+                  "[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}, {\"T\": 0.5, \"albedo\": 1, \"g\": 0, "
+                  "\"interface\": {\"sigma\": 0.3}}]"),
+       {"\"layers[1].interface.eta\"", "missing"}},
   };
   for (const BadFile& bad : cases) {
     try {

@@ -22,6 +22,12 @@ TEST(Presets, IncludeTheLooksTheIssueAsksFor) {
                              "skin-medium", "skin-dark", "leaf", "printer-paper", "wax", "jade", "paint-red-base"}) {
     EXPECT_TRUE(names.count(wanted)) << wanted;
   }
+  // Stacks (issue 12): a two-layer skin and a clear coat over a pigmented base.
+  EXPECT_EQ(preset_material("skin-two-layer").layer.layer_count(), 2);
+  const MaterialDocument coat = preset_material("clear-coat-red");
+  EXPECT_EQ(coat.layer.layer_count(), 2);
+  EXPECT_TRUE(coat.layer.has_internal_interfaces());
+  EXPECT_FALSE(coat.grey());
 }
 
 TEST(Presets, EachLoadsUnderItsNameWithADescriptionAndSolves) {
@@ -33,11 +39,10 @@ TEST(Presets, EachLoadsUnderItsNameWithADescriptionAndSolves) {
     EXPECT_EQ(document.name, preset.name) << "the file's \"name\" must be its file name";
     EXPECT_FALSE(preset.description.empty()) << preset.name;
     EXPECT_EQ(preset.description.find('\n'), std::string::npos) << preset.name;
-    // Every distinct albedo solves; at 30 degrees it creates no energy and reflects some.
-    std::vector<double> albedos(document.albedo_rgb.begin(), document.albedo_rgb.end());
-    albedos.erase(std::unique(albedos.begin(), albedos.end()), albedos.end());
+    // Every channel solves; at 30 degrees it creates no energy and reflects some.
+    const std::vector<Material> channels = {document.channel(0), document.channel(1), document.channel(2)};
     const std::vector<double> angle = {degrees_to_radians(30.0)};
-    const std::vector<std::vector<DirectionalAlbedo>> fractions = directional_albedo(document.layer, angle, albedos);
+    const std::vector<std::vector<DirectionalAlbedo>> fractions = directional_albedo(channels, angle);
     for (const std::vector<DirectionalAlbedo>& channel : fractions) {
       const DirectionalAlbedo& a = channel.front();
       EXPECT_GT(a.reflectance(), 0.0) << preset.name;

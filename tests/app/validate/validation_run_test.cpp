@@ -109,6 +109,11 @@ TEST(ValidationGrid, CoversEveryValueTheCheckNames) {
   }
   EXPECT_TRUE(has([](const Material& m) { return std::isinf(m.tau); }));
   EXPECT_TRUE(has([](const Material& m) { return m.transparency() >= 0.9; }));
+  // Stacks (issue 12): two and three layers, an internal rough interface, a thin layer over a semi-infinite one.
+  for (int layers : {2, 3}) EXPECT_TRUE(has([layers](const Material& m) { return m.layer_count() == layers; }));
+  EXPECT_TRUE(has([](const Material& m) { return m.has_internal_interfaces(); }));
+  EXPECT_TRUE(has(
+      [](const Material& m) { return !m.below.empty() && std::isinf(m.below.back().tau) && m.transparency() >= 0.9; }));
   for (std::size_t k = 0; k < grid.size(); ++k) {
     EXPECT_EQ(grid[k].grid_index, k);
     EXPECT_GT(grid[k].quick_paths, 0u);

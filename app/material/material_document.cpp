@@ -1,0 +1,49 @@
+#include "app/material/material_document.h"
+
+#include <algorithm>
+
+namespace skinlayer {
+
+bool MaterialDocument::grey() const {
+  const auto is_grey = [](const AlbedoRgb& rgb) { return rgb[0] == rgb[1] && rgb[1] == rgb[2]; };
+  return is_grey(albedo_rgb) && std::ranges::all_of(below_rgb, is_grey);
+}
+
+Material MaterialDocument::channel(int c) const {
+  Material m = layer;
+  m.albedo = albedo_rgb[static_cast<std::size_t>(c)];
+  for (std::size_t i = 0; i < m.below.size() && i < below_rgb.size(); ++i) {
+    m.below[i].albedo = below_rgb[i][static_cast<std::size_t>(c)];
+  }
+  return m;
+}
+
+void MaterialDocument::set_layer_albedo(std::size_t i, const AlbedoRgb& rgb) {
+  if (i == 0) {
+    albedo_rgb = rgb;
+    layer.albedo = rgb[0];
+    return;
+  }
+  if (below_rgb.size() < i) below_rgb.resize(i, AlbedoRgb{1.0, 1.0, 1.0});
+  below_rgb[i - 1] = rgb;
+  layer.below[i - 1].albedo = rgb[0];
+}
+
+AlbedoRgb MaterialDocument::layer_albedo(std::size_t i) const {
+  if (i == 0) return albedo_rgb;
+  if (i <= below_rgb.size()) return below_rgb[i - 1];
+  const double grey = layer.below[i - 1].albedo;
+  return {grey, grey, grey};
+}
+
+MaterialDocument grey_document(const Material& material) {
+  MaterialDocument document;
+  document.layer = material;
+  const std::vector<StackedLayer> layers = stack_layers(material);
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    document.set_layer_albedo(i, {layers[i].albedo, layers[i].albedo, layers[i].albedo});
+  }
+  return document;
+}
+
+}  // namespace skinlayer
