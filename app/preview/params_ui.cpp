@@ -6,8 +6,11 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "app/preview/layer_stack.h"
 #include "core/conventions.h"
 #include "core/material.h"
 #include "core/solver.h"
@@ -188,6 +191,125 @@ bool ordinates_controls(Material& layer, bool unicode) {
   return changed;
 }
 
+// T and tau are one parameter: the slider edits T, the tau box takes an optical depth (inf = semi-infinite).
+bool depth_controls(double& tau_value, bool unicode) {
+  bool changed = false;
+  double transparency = std::exp(-tau_value);
+  if (slider_row(spec_from_table("T", unicode), transparency)) {
+    tau_value = optical_depth_from_transparency(transparency);
+    changed = true;
+  }
+  const ParameterInfo& info = parameter_info("tau");
+  ImGui::PushID("tau");
+  label_with_tooltip(SliderSpec{std::string(unicode ? info.symbol : info.flag),
+                                std::string(info.description) + " (the same parameter as T = exp(-tau))", info.min,
+                                info.max, info.default_value, "%.6g"});
+  ImGui::SameLine(label_column());
+  ImGui::SetNextItemWidth(-1.0f);
+  double tau = tau_value;
+  if (ImGui::InputDouble("##typed", &tau, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue) && !std::isnan(tau)) {
+    tau_value = std::max(tau, 0.0);
+    changed = true;
+  }
+  if (ImGui::IsItemClicked(ImGuiMouseButton_Right)) {
+    tau_value = info.default_value;
+    changed = true;
+  }
+  ImGui::PopID();
+  return changed;
+}
+
+// One layer's medium: depth, albedo (RGB) and g.
+bool medium_controls(EditableLayer& layer, bool unicode) {
+  bool changed = depth_controls(layer.layer.tau, unicode);
+  changed |= albedo_controls(layer.albedo, unicode);
+  changed |= slider_row(spec_from_table("g", unicode), layer.layer.g);
+  return changed;
+}
+
+// The rough interface above a stacked layer: a checkbox, then its sigma and eta (n_this / n_above).
+bool interface_controls(EditableLayer& layer, bool unicode) {
+  bool rough = layer.layer.interface.has_value();
+  bool changed = false;
+  if (ImGui::Checkbox("rough interface above", &rough)) {
+    layer.layer.interface = rough ? std::optional<LayerInterface>(LayerInterface{0.3, 1.2}) : std::nullopt;
+    changed = true;
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "A rough dielectric interface between this layer and the one above (Beckmann sigma,\n"
+        "relative index eta = n_this / n_above); without it the two have the same index.");
+  }
+  if (layer.layer.interface) {
+    SliderSpec sigma = spec_from_table("sigma", unicode);
+    sigma.meaning = "Beckmann RMS slope of the interface above this layer";
+    sigma.default_value = 0.3;
+    const ParameterInfo& eta_info = interface_eta_info();
+    const SliderSpec eta{std::string(unicode ? eta_info.symbol : eta_info.flag),
+                         std::string(eta_info.description),
+                         eta_info.min,
+                         eta_info.max,
+                         1.2,
+                         "%.3f"};
+    changed |= slider_row(sigma, layer.layer.interface->sigma);
+    changed |= slider_row(eta, layer.layer.interface->eta);
+  }
+  return changed;
+}
+
+// The layers panel: one layer shows its rows as always; a stack shows each layer under a header with its move and
+// remove buttons (app/preview/layer_stack.h keeps every edit a valid stack).
+bool layers_controls(ColorMaterial& material, bool unicode) {
+  std::vector<EditableLayer> layers = editable_layers(material);
+  bool edited = false;
+  if (layers.size() == 1) {
+    edited = medium_controls(layers.front(), unicode);
+  } else {
+    for (std::size_t i = 0; i < layers.size(); ++i) {
+      ImGui::PushID(static_cast<int>(i));
+      ImGui::Separator();
+      ImGui::AlignTextToFramePadding();
+      ImGui::Text("layer %zu%s", i + 1, i == 0 ? " (top)" : i + 1 == layers.size() ? " (bottom)" : "");
+      ImGui::SameLine();
+      bool structural = false;
+      const auto button = [&](const char* label, bool enabled, const char* tip, const auto& action) {
+        ImGui::SameLine();
+        ImGui::BeginDisabled(!enabled);
+        if (ImGui::SmallButton(label)) {
+          action();
+          structural = true;
+        }
+        ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", tip);
+      };
+      button("up", can_move(material, i, -1), "move this layer up (its interface above moves with it)",
+             [&] { move_layer(material, i, -1); });
+      button("down", can_move(material, i, +1), "move this layer down (only the last may be semi-infinite)",
+             [&] { move_layer(material, i, +1); });
+      button("remove", true, "remove this layer", [&] { remove_layer(material, i); });
+      if (structural) {
+        ImGui::PopID();
+        return true;  // the list changed: the rows are drawn from it next frame
+      }
+      if (i > 0) edited |= interface_controls(layers[i], unicode);
+      edited |= medium_controls(layers[i], unicode);
+      ImGui::PopID();
+    }
+    ImGui::Separator();
+  }
+  if (edited) set_layers(material, layers);
+  if (ImGui::Button("add layer")) {
+    add_layer(material);
+    return true;
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Add a layer under the last one (a stack: an epidermis over a dermis, a clear coat over a\n"
+        "base). The comparison models describe one layer; a stack shows the layer model.");
+  }
+  return edited;
+}
+
 }  // namespace
 
 bool material_controls(ColorMaterial& material, bool unicode) {
@@ -195,39 +317,10 @@ bool material_controls(ColorMaterial& material, bool unicode) {
   bool changed = false;
   changed |= slider_row(spec_from_table("sigma", unicode), layer.sigma);
   changed |= slider_row(spec_from_table("eta", unicode), layer.eta);
-
-  // T and τb are one parameter: the slider edits T, the τb box takes an optical depth (inf = semi-infinite).
-  double transparency = layer.transparency();
-  if (slider_row(spec_from_table("T", unicode), transparency)) {
-    layer.tau = optical_depth_from_transparency(transparency);
-    changed = true;
-  }
-  {
-    const ParameterInfo& info = parameter_info("tau");
-    ImGui::PushID("tau");
-    label_with_tooltip(SliderSpec{std::string(unicode ? info.symbol : info.flag),
-                                  std::string(info.description) + " (the same parameter as T = exp(-tau))", info.min,
-                                  info.max, info.default_value, "%.6g"});
-    ImGui::SameLine(label_column());
-    ImGui::SetNextItemWidth(-1.0f);
-    double tau = layer.tau;
-    if (ImGui::InputDouble("##typed", &tau, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue) &&
-        !std::isnan(tau)) {
-      layer.tau = std::max(tau, 0.0);
-      changed = true;
-    }
-    if (ImGui::IsItemClicked(ImGuiMouseButton_Right)) {
-      layer.tau = info.default_value;
-      changed = true;
-    }
-    ImGui::PopID();
-  }
-
-  changed |= albedo_controls(material.albedo_rgb, unicode);
-  changed |= slider_row(spec_from_table("g", unicode), layer.g);
+  changed |= layers_controls(material, unicode);
   changed |= bottom_controls(layer, unicode);
   changed |= ordinates_controls(layer, unicode);
-  changed |= model_controls(material.model);
+  if (material.layer.below.empty()) changed |= model_controls(material.model);
   return changed;
 }
 

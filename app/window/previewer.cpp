@@ -15,6 +15,7 @@
 #include "app/material/picture_metadata.h"
 #include "app/material/presets.h"
 #include "app/preview/edit_history.h"
+#include "app/preview/layer_stack.h"
 #include "app/preview/material_session.h"
 #include "app/preview/preview_state.h"
 #include "app/preview/recent_files.h"
@@ -348,6 +349,20 @@ class Previewer {
       window_.request_close();  // as Ctrl+Q or the window's close button
     } else if (verb == "title") {
       out_ << "title: " << window_title(files_.session(), state_.material, false) << "\n" << std::flush;
+    } else if (verb == "layer") {
+      // The layers panel's buttons: "layer add", "layer remove I", "layer up I", "layer down I" (I 1-based).
+      const std::size_t gap = argument.find(' ');
+      const std::string what = argument.substr(0, gap);
+      const std::size_t index = gap == std::string::npos ? 0 : std::stoul(argument.substr(gap + 1)) - 1;
+      if (what == "add") {
+        add_layer(state_.material);
+      } else if (what == "remove") {
+        remove_layer(state_.material, index);
+      } else if (what == "up" || what == "down") {
+        move_layer(state_.material, index, what == "up" ? -1 : +1);
+      } else {
+        throw std::runtime_error("test action: unknown layer action '" + what + "'");
+      }
     } else if (verb == "set") {
       const std::size_t gap = argument.find(' ');
       const std::string name = argument.substr(0, gap);

@@ -165,6 +165,33 @@ TEST(WindowSmoke, UndoRedoDropAndSaveThroughTheWindowsTestHook) {
   std::filesystem::remove_all(dir);
 }
 
+// The layers panel (issue 12) through the same hook: add a layer, reorder, undo; the captured picture remembers the
+// stack that was on screen.
+TEST(WindowSmoke, TheLayersPanelAddsReordersAndUndoesLayers) {
+  if (!find_in_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::filesystem::path dir = temporary_png("skinlayer-window-layers").replace_extension("");
+  std::filesystem::create_directories(dir);
+  // Add a layer (a copy of the default's, T 0.2), make the top one thinner, then move it down: T 0.2 over T 0.5.
+  Scripted moved = run_scripted("layer add;set T 0.5;layer down 1", dir / "config");
+  ASSERT_EQ(moved.run.exit_code, 0) << moved.run.err;
+  const std::size_t first = moved.material.find("\"T\": 0.2");
+  const std::size_t second = moved.material.find("\"T\": 0.5");
+  EXPECT_NE(first, std::string::npos) << moved.material;
+  EXPECT_NE(second, std::string::npos) << moved.material;
+  EXPECT_LT(first, second) << "the moved layer is second: " << moved.material;
+  // Undo takes the stack back to one layer, step by step.
+  Scripted undone = run_scripted("layer add;set T 0.5;undo;undo", dir / "config");
+  ASSERT_EQ(undone.run.exit_code, 0) << undone.run.err;
+  EXPECT_EQ(undone.material.find("\"interface\""), std::string::npos);
+  EXPECT_EQ(undone.material.find("\"T\": 0.2"), undone.material.rfind("\"T\": 0.2"))
+      << "one layer: " << undone.material;
+  // A preset stack shows and is remembered with its interface.
+  Scripted coat = run_scripted("preset clear-coat-red", dir / "config");
+  ASSERT_EQ(coat.run.exit_code, 0) << coat.run.err;
+  EXPECT_NE(coat.material.find("\"interface\""), std::string::npos) << coat.material;
+  std::filesystem::remove_all(dir);
+}
+
 // Quitting with unsaved changes asks first: the window is still there (it prints its title) until the changes are
 // discarded, and then it closes by itself.
 TEST(WindowSmoke, QuittingWithUnsavedChangesAsksFirst) {
