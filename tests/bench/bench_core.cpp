@@ -5,6 +5,7 @@
 //               Carlo time to the solver's accuracy, and the tables' memory; tests/bench/benchmark_report.h)
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -37,6 +38,37 @@ void BM_SolveDefault(benchmark::State& state) {
   state.counters["modes"] = solve(material).modes();
 }
 BENCHMARK(BM_SolveDefault)->Unit(benchmark::kMillisecond);
+
+// A stack of n layers like the paper's default (sigma 0.5, eta 1.4, air below; total T 0.2, so n = 1 is the
+// default material), the depth shared equally, g 0.8, 0.7, 0.6 and RGB albedos (0.95, 0.7, 0.55), (0.99, 0.8,
+// 0.6), (0.9, 0.9, 0.9) top to bottom: a full RGB solve from cold, on both cores (issue 12: two layers within 2.5x
+// of one).
+std::vector<Material> default_like_stack(int layers) {
+  const std::vector<std::array<double, 3>> rgb = {{0.95, 0.7, 0.55}, {0.99, 0.8, 0.6}, {0.9, 0.9, 0.9}};
+  const double tau = Material{}.tau / layers;
+  std::vector<Material> channels(3);
+  for (int c = 0; c < 3; ++c) {
+    Material& m = channels[static_cast<std::size_t>(c)];
+    m.tau = tau;
+    m.albedo = rgb[0][static_cast<std::size_t>(c)];
+    for (int i = 1; i < layers; ++i) {
+      m.below.push_back({tau, rgb[static_cast<std::size_t>(i)][static_cast<std::size_t>(c)], 0.8 - 0.1 * i, {}});
+    }
+  }
+  return channels;
+}
+void BM_SolveStack(benchmark::State& state) {
+  const std::vector<Material> channels = default_like_stack(static_cast<int>(state.range(0)));
+  SolveOptions options;
+  options.parallel_for = parallel_for_threads;
+  for (auto _ : state) {
+    std::vector<LayerTables> tables = solve(channels, options);
+    benchmark::DoNotOptimize(tables);
+  }
+  state.counters["ordinates"] = choose_resolution(channels.front()).ordinates;
+  state.counters["modes"] = solve(channels.front()).modes();
+}
+BENCHMARK(BM_SolveStack)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // One evaluation of the unscattered BTDF (core/unscattered_light.h) at the default material: two rough interfaces,
 // the 32 x 32 slope quadrature, near the straight-through direction. The cost of every tables.btdf() call there.

@@ -107,6 +107,50 @@ BENCHMARK_CAPTURE(BM_SliderToFrame, sigma, [](ColorMaterial& m, int step) { m.la
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// The same for a two-layer skin (issue 12: under 50 ms): an epidermis (T 0.6, g 0.8) over a semi-infinite dermis
+// (g 0.8), RGB albedos per layer, stepping the epidermis's depth or the dermis's albedo.
+ColorMaterial two_layer_skin() {
+  ColorMaterial m;
+  m.layer.sigma = 0.35;
+  m.layer.tau = optical_depth_from_transparency(0.6);
+  m.albedo_rgb = {0.98, 0.94, 0.86};
+  m.layer.below = {{INFINITY, 0.995, 0.8, std::nullopt}};
+  m.layer.bottom.kind = BottomKind::Matched;
+  m.below_rgb = {{0.995, 0.9, 0.84}};
+  return m;
+}
+template <typename Change>
+void BM_StackSliderToFrame(benchmark::State& state, Change change) {
+  PreviewFrame frame;
+  const int size = PreviewFrame::kSize;
+  SolveCache cache;
+  SolveOptions options;
+  options.cache = &cache;
+  options.parallel_for = parallel_for_threads;
+  ColorMaterial material = two_layer_skin();
+  (void)solve_color(material, 0.785, options);
+  int step = 0;
+  Scene shown;
+  for (auto _ : state) {
+    change(material, ++step);
+    const ColorTables tables = solve_color(material, 0.785, options);
+    frame.renderer.upload(make_table_textures(tables));
+    shown = make_scene(tables, ViewKind::Both, 0.785, 3.14159, 1.0, false, &shown);
+    draw_scene(frame.renderer, shown, size, size);
+    glFinish();
+  }
+}
+BENCHMARK_CAPTURE(BM_StackSliderToFrame, T1,
+                  [](ColorMaterial& m, int step) {
+                    m.layer.tau = optical_depth_from_transparency(step % 2 ? 0.5 : 0.6);
+                  })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(BM_StackSliderToFrame, albedo2,
+                  [](ColorMaterial& m, int step) { m.below_rgb[0][1] = step % 2 ? 0.9 : 0.85; })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
 // The CPU resampling of solved tables into the GPU layout.
 void BM_TableTextures(benchmark::State& state) {
   const ColorTables tables = solve_color(ColorMaterial{}, 0.785);

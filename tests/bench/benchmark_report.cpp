@@ -172,6 +172,15 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
     md << formatted(" %s %.2f ms%s", parameter, r.ms(std::string("BM_ResolveColor/") + parameter + "/real_time"),
                     std::string_view(parameter) == "g" ? ".\n" : ",");
   }
+  md << "\n## Stacks of layers\n\n"
+     << "A full RGB solve from cold on both cores of the default material cut into n layers of equal depth (total T "
+        "0.2; g 0.8, 0.7, 0.6 and a different RGB albedo per layer; `BM_SolveStack`, target of issue 12: two layers "
+        "within 2.5× of one):";
+  for (int layers : {1, 2, 3}) {
+    const double ms = r.ms("BM_SolveStack/" + std::to_string(layers) + "/real_time");
+    md << formatted(" %d layer%s %.1f ms (%.2f×)%s", layers, layers == 1 ? "" : "s", ms,
+                    ms / r.ms("BM_SolveStack/1/real_time"), layers == 3 ? ".\n" : ",");
+  }
   md << "\n## RGB re-solves at the costliest corners\n\n"
      << "Three albedos on both cores with the cache, as the previewer's worker solves them, after a σ step (so the "
         "interface operators are built anew). Preview: `SolveOptions::preview`, the worker's first answer where the "
