@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "app/cli/layer_flag.h"
 #include "app/cli/numbers.h"
 #include "app/figures/model_spheres.h"
 #include "app/figures/polar_plot.h"
@@ -66,6 +66,19 @@ Lobe sample_lobe(const FigureCurve& curve, FigureKind kind, SolveCache& cache) {
   return lobe;
 }
 
+// A stack's --layer values, top to bottom, ' '-separated, ';' for ',' (figure_builder.h); empty for one layer.
+std::string layers_field(const LayerParams& params) {
+  if (params.below.empty()) return "";
+  const Material material = params.material();
+  std::string field;
+  for (const StackedLayer& layer : stack_layers(material)) {
+    std::string spec = cli::format_layer_spec(layer, {layer.albedo, layer.albedo, layer.albedo});
+    std::replace(spec.begin(), spec.end(), ',', ';');
+    field.append(field.empty() ? "" : " ").append(spec);
+  }
+  return field;
+}
+
 // Commas would split a CSV field; labels never need them.
 std::string csv_field(std::string text) {
   std::replace(text.begin(), text.end(), ',', ';');
@@ -78,12 +91,12 @@ void write_csv(const std::vector<Lobe>& lobes, const FigureSpec& spec, const std
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path.string());
   out << "curve,parameter,value,theta_i,theta_o,phi,side,quantity,f" << (spec.rescale_to_peak ? ",plotted" : "")
-      << ",model,sigma,eta,T,albedo,g\n";
+      << ",model,sigma,eta,T,albedo,g,layers\n";
   for (const Lobe& lobe : lobes) {
     const std::string material = std::string(subsurface_model_name(lobe.model)) + "," +
                                  format_shortest(lobe.params.sigma) + "," + format_shortest(lobe.params.eta) + "," +
-                                 format_shortest(lobe.params.transparency) + "," +
-                                 format_shortest(lobe.params.albedo) + "," + format_shortest(lobe.params.g);
+                                 format_shortest(lobe.params.transparency) + "," + format_shortest(lobe.params.albedo) +
+                                 "," + format_shortest(lobe.params.g) + "," + layers_field(lobe.params);
     const bool surface = spec.kind == FigureKind::SurfaceLobes;
     for (const char side : {'R', 'T'}) {
       const char* quantity = side == 'R' ? (surface ? "brdf_surface" : "brdf_subsurface")
@@ -127,11 +140,12 @@ PngText figure_metadata(const FigureSpec& spec) {
 }  // namespace
 
 const LayerTables& SolveCache::tables(const LayerParams& params, SubsurfaceModel model) {
-  const auto key = std::make_tuple(params.sigma, params.eta, params.transparency, params.albedo, params.g,
-                                   static_cast<int>(model));
-  auto found = solved_.find(key);
-  if (found == solved_.end()) found = solved_.emplace(key, solve_model(params.material(), model)).first;
-  return found->second;
+  const Material material = params.material();
+  for (const Entry& entry : solved_) {
+    if (entry.material == material && entry.model == model) return entry.tables;
+  }
+  solved_.push_back({material, model, solve_model(material, model)});
+  return solved_.back().tables;
 }
 
 FigureSize build_figure(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, SolveCache& cache,

@@ -4,8 +4,7 @@
 #pragma once
 
 #include <filesystem>
-#include <map>
-#include <tuple>
+#include <vector>
 
 #include "app/figures/figure_set.h"
 #include "app/figures/font.h"
@@ -18,7 +17,12 @@ class SolveCache {
   const LayerTables& tables(const LayerParams& params, SubsurfaceModel model);
 
  private:
-  std::map<std::tuple<double, double, double, double, double, int>, LayerTables> solved_;
+  struct Entry {
+    Material material;
+    SubsurfaceModel model;
+    LayerTables tables;
+  };
+  std::vector<Entry> solved_;  // a few dozen at most: found by comparing the materials
 };
 
 // Writes dir/NAME.csv and dir/NAME.png (a `size` x `size` polar plot, or the sphere strip for ModelSpheres).
@@ -26,7 +30,9 @@ class SolveCache {
 // angles in degrees as skinlayer eval reads them, side R or T, f in 1/sr before any rescaling (plotted: after), and
 // the material and model so `skinlayer eval --model M --sigma .. --eta .. --T .. --albedo .. --g ..` reproduces f in
 // eval's column named by quantity (brdf_subsurface, btdf or brdf_surface); quantity interface_btdf (the surface
-// figures' T side: core's microfacet_btdf into the layer) has no eval column.
+// figures' T side: core's microfacet_btdf into the layer) has no eval column. A stack's rows also fill the last
+// column, layers: its --layer values top to bottom, separated by spaces, with ';' for ',' inside each (T, albedo
+// and g then repeat the first layer's); it is empty for one layer.
 // Returns the PNG's size. Throws std::runtime_error if a file cannot be written.
 struct FigureSize {
   int width = 0;

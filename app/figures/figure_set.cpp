@@ -1,6 +1,7 @@
 #include "app/figures/figure_set.h"
 
 #include <charconv>
+#include <cmath>
 #include <initializer_list>
 
 namespace skinlayer::figures {
@@ -18,8 +19,7 @@ std::vector<FigureCurve> vary(const std::string& symbol, std::initializer_list<d
                               Setter set, const std::string& unit = "") {
   std::vector<FigureCurve> curves;
   for (double value : values) {
-    FigureCurve curve;
-    curve.params = base;
+    FigureCurve curve{"", "", base};  // constructed, not assigned: GCC 12 warns falsely (-Wnonnull) on the latter
     set(curve, value);
     curve.value = shortest(value);
     curve.label = symbol + " = " + curve.value + unit;
@@ -53,6 +53,7 @@ Material LayerParams::material() const {
   m.tau = optical_depth_from_transparency(transparency);
   m.albedo = albedo;
   m.g = g;
+  m.below = below;
   return m;
 }
 
@@ -135,6 +136,31 @@ std::vector<FigureSpec> figure_set() {
   shapes.rescale_to_peak = true;
   set.push_back(shapes);
 
+  // Stacks (issue 12): a two-layer skin against each of its layers alone.
+  LayerParams epidermis = paper;
+  epidermis.sigma = 0.35;
+  epidermis.transparency = 0.5;
+  epidermis.albedo = 0.9;
+  epidermis.g = 0.8;
+  const StackedLayer dermis_layer{INFINITY, 0.99, 0.3, std::nullopt};
+  LayerParams two_layers = epidermis;
+  two_layers.below = {dermis_layer};
+  LayerParams dermis = epidermis;
+  dermis.transparency = 0.0;
+  dermis.albedo = dermis_layer.albedo;
+  dermis.g = dermis_layer.g;
+  FigureSpec stack = subsurface(
+      "stack-skin", "A two-layer skin against each layer alone", "σ 0.35 · η 1.4 · θi 45°", "layers",
+      {FigureCurve{"epidermis over dermis", "stack", two_layers},
+       FigureCurve{"epidermis alone: T 0.5, Ω 0.9, g 0.8", "epidermis", epidermis},
+       FigureCurve{"dermis alone: semi-infinite, Ω 0.99, g 0.3", "dermis", dermis}},
+      "A thin, forward-scattering, absorbing epidermis (T 0.5, Ω 0.9, g 0.8) over a semi-infinite, nearly white, "
+      "less forward dermis (Ω 0.99, g 0.3), against each alone under the same top. The stack's subsurface "
+      "reflectance at 45° (0.37) lies between the epidermis's (0.09: it transmits most light to the air below it) "
+      "and the dermis's (0.51: the epidermis absorbs on the way in and out), and its lobe keeps the dermis's broad "
+      "shape, without the epidermis's forward-grazing peak. The stack and the dermis transmit nothing.");
+  set.push_back(stack);
+
   FigureSpec spheres;
   spheres.name = "model-spheres";
   spheres.title = "Lambert | Hanrahan-Krueger | Stam";
@@ -145,8 +171,7 @@ std::vector<FigureSpec> figure_set() {
   skin.sigma = 0.35;
   skin.transparency = 0.05;
   for (SubsurfaceModel model : {SubsurfaceModel::Lambert, SubsurfaceModel::HanrahanKrueger, SubsurfaceModel::Stam}) {
-    FigureCurve curve;
-    curve.params = skin;
+    FigureCurve curve{"", "", skin};
     curve.model = model;
     curve.value = std::string(subsurface_model_name(model));
     curve.label = model == SubsurfaceModel::Lambert           ? "Lambert"

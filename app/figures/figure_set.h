@@ -20,6 +20,7 @@ struct LayerParams {
   double transparency = 0.2;  // T
   double albedo = 1.0;        // Omega
   double g = 0.8;
+  std::vector<StackedLayer> below;  // a stack's layers 2..n (the fields above are the first layer's)
 
   Material material() const;  // bottom air, automatic ordinates
 };

@@ -69,6 +69,26 @@ std::vector<AlbedoCase> albedo_cases() {
   semi_infinite.albedo = 0.9;
   semi_infinite.g = 0.0;
   cases.push_back({"semi-infinite, Omega .9, g 0, 45 deg", semi_infinite, 45.0});
+
+  // Stacks (issue 12): an open top's beam through two layers over a rough bottom, and a rough interface between
+  // layers of different g and albedo over a Lambertian base.
+  Material open_stack;
+  open_stack.eta = 1.0;
+  open_stack.tau = 0.4;
+  open_stack.albedo = 0.95;
+  open_stack.g = 0.7;
+  open_stack.below = {{0.8, 0.8, -0.2, std::nullopt}};
+  open_stack.bottom.sigma = 0.3;
+  open_stack.bottom.eta = 1.3;
+  cases.push_back({"stack: open top, two layers, rough bottom, 20 deg", open_stack, 20.0});
+  Material inner;
+  inner.sigma = 0.3;
+  inner.tau = 0.5;
+  inner.albedo = 0.9;
+  inner.g = 0.8;
+  inner.below = {{1.0, 0.99, 0.2, LayerInterface{0.4, 0.8}}};
+  inner.bottom = parse_bottom("lambert:0.5");
+  cases.push_back({"stack: internal interface (eta 0.8) over lambert:0.5, 50 deg", inner, 50.0});
   return cases;
 }
 

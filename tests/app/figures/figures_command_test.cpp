@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::size_t kFigureCount = 10;
+constexpr std::size_t kFigureCount = 11;
 constexpr std::size_t kRowsPerFile = 20;
 constexpr double kRelativeTolerance = 1e-9;
 
@@ -156,7 +156,7 @@ TEST_F(FiguresCommand, CsvValuesEqualEvalAtThosePoints) {
   for (const StatedPng& figure : stated_) {
     const Csv csv = read_csv(dir_ / (figure.name + ".csv"));
     for (const char* name : {"curve", "parameter", "value", "theta_i", "theta_o", "phi", "side", "quantity", "f",
-                             "model", "sigma", "eta", "T", "albedo", "g"}) {
+                             "model", "sigma", "eta", "T", "albedo", "g", "layers"}) {
       ASSERT_TRUE(csv.column.contains(name)) << figure.name << ".csv has no column " << name;
     }
     ASSERT_FALSE(csv.rows.empty()) << figure.name;
@@ -170,19 +170,17 @@ TEST_F(FiguresCommand, CsvValuesEqualEvalAtThosePoints) {
       const std::vector<std::string>& row = csv.rows[k];
       ASSERT_EQ(row.size(), csv.column.size()) << figure.name << " row " << k;
       if (field(row, "quantity") == "interface_btdf") continue;  // core's microfacet_btdf: no eval column
-      const std::vector<std::string> flags = {"eval",
-                                              "--model",
-                                              field(row, "model"),
-                                              "--sigma",
-                                              field(row, "sigma"),
-                                              "--eta",
-                                              field(row, "eta"),
-                                              "--T",
-                                              field(row, "T"),
-                                              "--albedo",
-                                              field(row, "albedo"),
-                                              "--g",
-                                              field(row, "g")};
+      std::vector<std::string> flags = {"eval",  "--model",        field(row, "model"), "--sigma", field(row, "sigma"),
+                                        "--eta", field(row, "eta")};
+      const std::string layers = field(row, "layers");
+      if (layers.empty()) {
+        flags.insert(flags.end(), {"--T", field(row, "T"), "--albedo", field(row, "albedo"), "--g", field(row, "g")});
+      } else {  // a stack: its --layer values, ' '-separated, ';' for ','
+        for (std::string spec : split(layers, ' ')) {
+          std::replace(spec.begin(), spec.end(), ';', ',');
+          flags.insert(flags.end(), {"--layer", spec});
+        }
+      }
       groups[flags].push_back(&row);
     }
     ASSERT_FALSE(groups.empty()) << figure.name;
