@@ -106,6 +106,17 @@ void validate(const Material& material) {
                            ": tau = inf (T = 0) is allowed only for the last layer of a stack");
     }
   }
+  // Air below the last layer by default: its relative index n_last / n_air must be a valid bottom-eta.
+  if (layers > 1 && material.bottom.kind == BottomKind::Air && !material.bottom.eta) {
+    const ParameterInfo& info = parameter_info("bottom-eta");
+    const double eta = material.bottom_eta();
+    if (!(eta >= info.min && eta <= info.max)) {
+      throw ParameterError("bottom-eta = " + format_number(eta) +
+                           " (n_last/n_air, air below: the top's eta times the interfaces') is out of range; valid "
+                           "range is " +
+                           range_text(info) + "; give --bottom-eta or change an interface's eta");
+    }
+  }
 }
 
 double Material::total_tau() const {

@@ -23,4 +23,21 @@ void SolveCache::insert(const Key& key, std::shared_ptr<const void> value, std::
   }
 }
 
+std::shared_ptr<const PhaseKernels> cached_phase_kernels(SolveCache* cache, double g, const QuadratureRule& quadrature,
+                                                         int modes, int azimuths, std::span<const double> mu_in,
+                                                         std::span<const double> mu_out, bool beam, bool exterior) {
+  const PhaseKernelKey key{g,
+                           static_cast<int>(quadrature.size()),
+                           modes,
+                           azimuths,
+                           beam ? std::vector<double>(mu_in.begin(), mu_in.end()) : std::vector<double>{},
+                           exterior ? std::vector<double>(mu_out.begin(), mu_out.end()) : std::vector<double>{},
+                           beam,
+                           exterior};
+  const auto build = [&] {
+    return phase_kernels(key.g, quadrature, key.modes, key.azimuths, key.mu_in, key.mu_out, key.beam, key.exterior);
+  };
+  return cache ? cache->phase_kernels(key, build) : std::make_shared<const PhaseKernels>(build());
+}
+
 }  // namespace skinlayer

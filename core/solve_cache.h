@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <list>
 #include <memory>
+#include <span>
 #include <variant>
 #include <vector>
 
@@ -109,5 +110,13 @@ class SolveCache {
   int hits_ = 0;
   int misses_ = 0;
 };
+
+// The phase-function projections of g at this resolution, from the cache where it has them (cache null: built for
+// this call). The key names the outside directions only where the projections use them (beam: the open top's beam
+// from mu_in; exterior: exits scattered to directly along mu_out), so that a solve without them finds the node
+// matrices of another one.
+std::shared_ptr<const PhaseKernels> cached_phase_kernels(SolveCache* cache, double g, const QuadratureRule& quadrature,
+                                                         int modes, int azimuths, std::span<const double> mu_in,
+                                                         std::span<const double> mu_out, bool beam, bool exterior);
 
 }  // namespace skinlayer

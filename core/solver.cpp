@@ -107,22 +107,10 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
   beam_flux_ =
       Eigen::Map<const Eigen::VectorXd>(mu_in_.data(), static_cast<Eigen::Index>(mu_in_.size())).cwiseInverse();
 
-  // The key names the outside directions only where the projections use them (an open top's beam; exits scattered
-  // to directly), so that a solve without them finds the node matrices of another one.
   const bool beam = geometry_.top_open;
   const bool exterior = want_exit_ && (geometry_.top_open || geometry_.base == LayerBase::Open);
-  PhaseKernelKey key{material.g,
-                     resolution.ordinates,
-                     resolution.max_modes,
-                     resolution.phase_azimuths,
-                     beam ? mu_in_ : std::vector<double>{},
-                     exterior ? mu_out_ : std::vector<double>{},
-                     beam,
-                     exterior};
-  const auto build = [&] {
-    return phase_kernels(key.g, quadrature_, key.modes, key.azimuths, key.mu_in, key.mu_out, key.beam, key.exterior);
-  };
-  phase_kernels_ = cache ? cache->phase_kernels(key, build) : std::make_shared<const PhaseKernels>(build());
+  phase_kernels_ = cached_phase_kernels(cache, material.g, quadrature_, resolution.max_modes, resolution.phase_azimuths,
+                                        mu_in_, mu_out_, beam, exterior);
 }
 
 // Lambertian base, f = A/pi, mode 0 only: R(o, j) = c_0 (A/pi) mu_j a_j = 2 A mu_j a_j.
@@ -539,8 +527,24 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
   // (core/bottom_bounce.h): the tables' node image of it is replaced by the finer one, mode by mode. Not in a
   // preview, which is a quick look by definition.
   const auto refine_bottom_bounce = [&] {
-    if (unscattered.path() != UnscatteredPath::TopThenBottom || options.preview) return;
-    const InterfaceKernels& coarse = *kernels;
+    // The bounce off the path's second interface under the top (an interface between layers, or the bottom): the
+    // image of a single layer with that interface as its bottom and the depth between them (core/bottom_bounce.h).
+    // Under an open top, where the path starts at an interface between layers, it stays as solved.
+    if (unscattered.path() != UnscatteredPath::TopThenBottom || options.preview || material.eta == 1.0) return;
+    const bool internal = material.has_internal_interfaces();
+    Material bounce = material;  // one layer, or a stack whose path ends at the bottom: the material's own kernels
+    if (internal) {
+      bounce = Material{};
+      bounce.sigma = unscattered.top().sigma;
+      bounce.eta = unscattered.top().eta;
+      bounce.tau = unscattered.tau();
+      bounce.bottom.sigma = unscattered.bottom().sigma;
+      bounce.bottom.eta = 1.0 / unscattered.bottom().eta;
+    }
+    const auto coarse_kernels = internal ? kernels_for(bounce, resolution, grid, grid, options.cache,
+                                                       options.parallel_for, KernelSet::BottomBounce)
+                                         : kernels;
+    const InterfaceKernels& coarse = *coarse_kernels;
     Resolution finer = resolution;
     finer.ordinates = bottom_bounce_ordinates(resolution.ordinates, coarse.geometry.top);
     if (finer.ordinates <= resolution.ordinates) return;
@@ -551,7 +555,7 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
     if (!bottom_bounce_matters(coarse_mode0, mode0)) return;
     check_cancelled();
     const auto fine =
-        kernels_for(material, finer, grid, grid, options.cache, options.parallel_for, KernelSet::BottomBounce);
+        kernels_for(bounce, finer, grid, grid, options.cache, options.parallel_for, KernelSet::BottomBounce);
     const Eigen::VectorXd fine_attenuation = slab_attenuation(fine->quadrature.nodes, unscattered.tau());
     int modes = 0;
     for (const Coefficients& c : solved) modes = std::max(modes, c.modes);
@@ -637,15 +641,25 @@ double brdf_surface(const Material& material, double theta_i, double theta_o, do
 
 namespace {
 
+// The resolution of the directional albedos: hemispherical fractions need only the azimuthal mean, mode 0.
+Resolution flux_resolution(const Material& material, const SolveOptions& options) {
+  SolveOptions mode_zero = options;
+  mode_zero.max_modes = 1;
+  return choose_resolution(material, mode_zero);
+}
+
+std::vector<double> cosines_of(std::span<const double> theta) {
+  std::vector<double> mu(theta.size());
+  for (std::size_t k = 0; k < theta.size(); ++k) mu[k] = std::cos(theta[k]);
+  return mu;
+}
+
 std::vector<std::vector<DirectionalAlbedo>> layer_directional_albedo(const Material& material,
                                                                      std::span<const double> theta_i,
                                                                      std::span<const double> albedos,
                                                                      const SolveOptions& options) {
-  SolveOptions mode_zero = options;
-  mode_zero.max_modes = 1;  // hemispherical fractions need only the azimuthal mean
-  const Resolution resolution = choose_resolution(material, mode_zero);
-  std::vector<double> mu0(theta_i.size());
-  for (std::size_t k = 0; k < theta_i.size(); ++k) mu0[k] = std::cos(theta_i[k]);
+  const Resolution resolution = flux_resolution(material, options);
+  const std::vector<double> mu0 = cosines_of(theta_i);
   const LayerSolver solver(material, resolution,
                            kernels_for(material, resolution, mu0, {}, options.cache, options.parallel_for),
                            UnscatteredPath::None, options.cache);
@@ -716,11 +730,8 @@ std::vector<std::vector<DirectionalAlbedo>> stack_directional_albedo(std::span<c
                                                                      std::span<const double> theta_i,
                                                                      const SolveOptions& options) {
   const Material& material = channels.front();
-  SolveOptions mode_zero = options;
-  mode_zero.max_modes = 1;  // hemispherical fractions need only the azimuthal mean
-  const Resolution resolution = choose_resolution(material, mode_zero);
-  std::vector<double> mu0(theta_i.size());
-  for (std::size_t k = 0; k < theta_i.size(); ++k) mu0[k] = std::cos(theta_i[k]);
+  const Resolution resolution = flux_resolution(material, options);
+  const std::vector<double> mu0 = cosines_of(theta_i);
   const StackSolver solver(material, resolution,
                            kernels_for(material, resolution, mu0, {}, options.cache, options.parallel_for),
                            UnscatteredPath::None, options.cache, options.parallel_for);

@@ -37,8 +37,8 @@ StackSolver::StackSolver(const Material& material, const Resolution& resolution,
   const std::size_t count = layers_.size();
 
   // The beam: unit amplitude at the open top, attenuated through each slab, gone at the first rough interface.
-  const Eigen::VectorXd mu0 = cosines(mu_in);
-  Eigen::VectorXd amplitude = geometry.top_open ? Eigen::VectorXd::Ones(mu0.size()) : Eigen::VectorXd();
+  Eigen::VectorXd amplitude =
+      geometry.top_open ? Eigen::VectorXd::Ones(static_cast<Eigen::Index>(mu_in.size())) : Eigen::VectorXd();
   for (std::size_t i = 0; i < count; ++i) {
     const StackedLayer& layer = layers_[i];
     const bool rough_above = layer.interface && layer.interface->eta != 1.0;
@@ -72,23 +72,35 @@ StackSolver::StackSolver(const Material& material, const Resolution& resolution,
   faces_.pop_back();  // n - 1 faces
   if (std::isinf(layers_.back().tau)) amplitude.resize(0);
   beam_at_bottom_ = amplitude;
-  stack_attenuation_ = slab_attenuation(q.nodes, material.total_tau());
+
+  // The exact path's rough interfaces (as UnscatteredLight(material) finds them) and the depth between them.
+  if (exact_path_ != UnscatteredPath::None) {
+    std::vector<std::pair<int, double>> crossings;  // position, depth above
+    if (!geometry.top_open) crossings.emplace_back(kTop, 0.0);
+    double depth = layers_.front().tau;
+    for (std::size_t i = 1; i < count; ++i) {
+      if (faces_[i - 1] != nullptr) crossings.emplace_back(static_cast<int>(i - 1), depth);
+      depth += layers_[i].tau;
+    }
+    if (geometry.base == LayerBase::Rough) crossings.emplace_back(kBottom, depth);
+    exact_first_ = crossings.front().first;
+    if (crossings.size() == 2) {
+      exact_second_ = crossings[1].first;
+      exact_between_ = slab_attenuation(q.nodes, crossings[1].second - crossings[0].second);
+    }
+  }
 
   for (std::size_t i = 0; i < count; ++i) {
-    const bool beam = beam_amplitude_[i].size() != 0;
-    PhaseKernelKey key{layers_[i].g,
-                       resolution.ordinates,
-                       resolution.max_modes,
-                       resolution.phase_azimuths,
-                       beam ? mu_in : std::vector<double>{},
-                       exterior_ ? mu_out : std::vector<double>{},
-                       beam,
-                       exterior_};
-    const auto build = [&] {
-      return phase_kernels(key.g, q, key.modes, key.azimuths, key.mu_in, key.mu_out, key.beam, key.exterior);
-    };
-    phase_.push_back(cache ? cache->phase_kernels(key, build) : std::make_shared<const PhaseKernels>(build()));
+    phase_.push_back(cached_phase_kernels(cache, layers_[i].g, q, resolution.max_modes, resolution.phase_azimuths,
+                                          mu_in, mu_out, beam_amplitude_[i].size() != 0, exterior_));
   }
+}
+
+Eigen::MatrixXd StackSolver::exact_image_at_second(int m) const {
+  if (exact_first_ == kTop) return exact_between_.asDiagonal() * kernels_->t_source[m];
+  const std::size_t face = static_cast<std::size_t>(exact_first_);
+  const Eigen::VectorXd arriving = beam_amplitude_[face].cwiseProduct(beam_attenuation_[face]);
+  return exact_between_.asDiagonal() * faces_[face]->beam_transmit[m] * arriving.asDiagonal();
 }
 
 ExitScattering StackSolver::exit_rows(int m, std::size_t slab, double albedo, bool upward) const {
@@ -203,7 +215,9 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
       const InternalInterfaceKernels& face = *faces_[i - 1];
       below = face.reflect_above_rows[m] * field.slabs[i - 1].down_bottom +
               face.transmit_up_rows[m] * field.slabs[i].up_top;
-      if (beam_amplitude_[i - 1].size() != 0) {
+      // The beam's reflection off this interface: UnscatteredLight::brdf when it is the exact path's.
+      const bool exact = exact_path_ == UnscatteredPath::BottomOnly && exact_first_ == static_cast<int>(i - 1);
+      if (beam_amplitude_[i - 1].size() != 0 && !exact) {
         below += face.beam_reflect_rows[m] * beam_amplitude_[i - 1].cwiseProduct(beam_attenuation_[i - 1]).asDiagonal();
       }
     }
@@ -213,12 +227,10 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
   if (infinite || geometry.base == LayerBase::Lambert) {
     result.transmission = Eigen::MatrixXd::Zero(count_out, count_in);
   } else if (geometry.base == LayerBase::Rough) {
-    // As for one layer: the light that crossed every interface unscattered is on the nodes as the first-pass part
-    // of the bottom's downward field (e^{-tau_total/mu_j} t12 here, with no interface between the layers); it is
-    // UnscatteredLight::btdf when evaluated exactly.
-    if (exact_path_ == UnscatteredPath::TopThenBottom) {
-      result.transmission = kernels_->t_bottom_exit[m] *
-                            (field.slabs.back().down_bottom - stack_attenuation_.asDiagonal() * kernels_->t_source[m]);
+    // As for one layer: the light that crossed the interfaces unscattered is on the nodes as the first-pass part
+    // of the bottom's downward field; it is UnscatteredLight::btdf when evaluated exactly.
+    if (exact_path_ == UnscatteredPath::TopThenBottom && exact_second_ == kBottom) {
+      result.transmission = kernels_->t_bottom_exit[m] * (field.slabs.back().down_bottom - exact_image_at_second(m));
     } else {
       result.transmission = kernels_->t_bottom_exit[m] * field.slabs.back().down_bottom;
     }
@@ -244,9 +256,16 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
         continue;
       }
       const InternalInterfaceKernels& face = *faces_[i];
-      above = face.reflect_below_rows[m] * field.slabs[i + 1].up_top +
-              face.transmit_down_rows[m] * field.slabs[i].down_bottom;
-      if (beam_amplitude_[i].size() != 0) {
+      // The first pass of the exact path through this interface, or the beam straight through it, is
+      // UnscatteredLight::btdf when evaluated exactly.
+      const int position = static_cast<int>(i);
+      Eigen::MatrixXd arriving = field.slabs[i].down_bottom;
+      if (exact_path_ == UnscatteredPath::TopThenBottom && exact_second_ == position) {
+        arriving -= exact_image_at_second(m);
+      }
+      above = face.reflect_below_rows[m] * field.slabs[i + 1].up_top + face.transmit_down_rows[m] * arriving;
+      const bool exact = exact_path_ == UnscatteredPath::BottomOnly && exact_first_ == position;
+      if (beam_amplitude_[i].size() != 0 && !exact) {
         above += face.beam_transmit_rows[m] * beam_amplitude_[i].cwiseProduct(beam_attenuation_[i]).asDiagonal();
       }
     }

@@ -6,11 +6,11 @@
 // integrating the source function through each slab in turn (core/boundary_solve.h's intensity interpolation),
 // face by face.
 //
-// The unscattered light: where no interface lies between the layers, the stack's unscattered paths are those of
-// one slab of the total optical depth, and the caller evaluates them exactly (UnscatteredLight of that slab) and
-// passes their path here to be left out of the exits, as for one layer. Across an internal interface the
-// unscattered light stays on the ordinates and the tables (it crosses three or more rough interfaces, a
-// convolution of their lobes, wider than each).
+// The unscattered light: the caller evaluates it exactly where it crosses at most two rough interfaces
+// (UnscatteredLight of the material: without interfaces between the layers, that of one slab of the total depth)
+// and passes its path here, and the same path's node image is left out of the exits, as for one layer: the first
+// interface's transmitted source (t12, or an internal interface's beam column under an open top) attenuated over
+// the nodes to the second and out through it. Crossing three or more, it stays on the ordinates and the tables.
 #pragma once
 
 #include <memory>
@@ -56,6 +56,8 @@ class StackSolver {
   const Eigen::VectorXd& beam_amplitude(std::size_t slab) const { return beam_amplitude_[slab]; }
   bool internal_face(std::size_t face) const { return faces_[face] != nullptr; }
   ExitScattering exit_rows(int m, std::size_t slab, double albedo, bool upward) const;
+  // The exact two-interface path's node image arriving at its second interface (down, N x K), mode m.
+  Eigen::MatrixXd exact_image_at_second(int m) const;
 
   std::shared_ptr<const InterfaceKernels> kernels_;
   std::vector<StackedLayer> layers_;
@@ -64,8 +66,11 @@ class StackSolver {
   std::vector<std::shared_ptr<const InternalInterfaceKernels>> faces_;  // null where the face is index-matched
   std::vector<Eigen::VectorXd> beam_amplitude_;                         // per slab (see beam_amplitude)
   std::vector<Eigen::VectorXd> beam_attenuation_;                       // e^{-tau_i/mu0} per slab
-  Eigen::VectorXd beam_at_bottom_;     // the beam's amplitude at the last slab's bottom (empty: none)
-  Eigen::VectorXd stack_attenuation_;  // e^{-tau_total/mu_j} per node
+  Eigen::VectorXd beam_at_bottom_;  // the beam's amplitude at the last slab's bottom (empty: none)
+  // Where the exact path's interfaces are: kTop, a face index, or kBottom (kNone: no such interface).
+  static constexpr int kNone = -3, kTop = -1, kBottom = -2;
+  int exact_first_ = kNone, exact_second_ = kNone;
+  Eigen::VectorXd exact_between_;  // e^{-tau/mu_j} per node over the depth between them
   UnscatteredPath exact_path_;
   bool want_exit_;
   bool exterior_;  // exits are integrated through the slabs (an open top or an open base)

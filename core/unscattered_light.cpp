@@ -143,8 +143,11 @@ UnscatteredLight::UnscatteredLight(const Material& material)
   const bool top_open = material.eta == 1.0;
   top_ = {material.eta, material.sigma};
   bottom_ = {1.0 / material.bottom_eta(), material.bottom_sigma()};
-  // Across an interface between stacked layers the unscattered light stays in the tables (core/stack_solver.h).
-  if (std::isinf(tau_) || material.has_internal_interfaces()) return;
+  if (std::isinf(tau_)) return;
+  if (material.has_internal_interfaces()) {
+    set_stack_path(material);
+    return;
+  }
   switch (material.bottom.kind) {
     case BottomKind::Lambert:
       return;
@@ -159,6 +162,42 @@ UnscatteredLight::UnscatteredLight(const Material& material)
       }
       return;
   }
+}
+
+void UnscatteredLight::set_stack_path(const Material& material) {
+  // The rough interfaces the unscattered light crosses, top to bottom, each with the optical depth above it.
+  struct Crossing {
+    RoughDielectric interface;
+    double depth_above;
+  };
+  std::vector<Crossing> crossings;
+  if (material.eta != 1.0) crossings.push_back({top_, 0.0});
+  double depth = material.tau;
+  for (const StackedLayer& layer : material.below) {
+    if (layer.interface && layer.interface->eta != 1.0) {
+      crossings.push_back({{layer.interface->eta, layer.interface->sigma}, depth});
+    }
+    depth += layer.tau;
+  }
+  if (material.bottom.kind == BottomKind::Lambert) return;
+  if (material.bottom.kind == BottomKind::Air && material.bottom_eta() != 1.0) crossings.push_back({bottom_, depth});
+  if (crossings.size() == 1) {  // under an open top: the interface between layers (the bottom is not rough)
+    path_ = UnscatteredPath::BottomOnly;
+    bottom_ = crossings[0].interface;
+    tau_ = crossings[0].depth_above;
+    tau_after_ = depth - crossings[0].depth_above;
+  } else if (crossings.size() == 2) {
+    path_ = UnscatteredPath::TopThenBottom;
+    top_ = crossings[0].interface;
+    bottom_ = crossings[1].interface;
+    tau_before_ = crossings[0].depth_above;
+    tau_ = crossings[1].depth_above - crossings[0].depth_above;
+    tau_after_ = depth - crossings[1].depth_above;
+  }
+}
+
+double UnscatteredLight::outer_attenuation(const Vec3& wi, const Vec3& wo) const {
+  return attenuation(tau_before_, wi.z()) * attenuation(tau_after_, -wo.z());
 }
 
 double UnscatteredLight::straight_through_angle(double theta_i) const {
@@ -186,8 +225,14 @@ std::optional<DepthTerm> one_interface_term(UnscatteredPath path, const RoughDie
 std::vector<DepthTerm> UnscatteredLight::btdf_terms(double theta_i, double theta_o, double phi) const {
   if (path_ == UnscatteredPath::None) return {};
   const auto [wi, wo] = transmission_directions(theta_i, theta_o, phi);
-  if (path_ == UnscatteredPath::TopThenBottom) return two_interface_btdf_terms(top_, bottom_, wi, wo);
-  return {*one_interface_term(path_, top_, bottom_, wi, wo)};
+  std::vector<DepthTerm> terms = path_ == UnscatteredPath::TopThenBottom
+                                     ? two_interface_btdf_terms(top_, bottom_, wi, wo)
+                                     : std::vector<DepthTerm>{*one_interface_term(path_, top_, bottom_, wi, wo)};
+  const double outer = outer_attenuation(wi, wo);
+  if (outer != 1.0) {
+    for (DepthTerm& term : terms) term.coefficient *= outer;
+  }
+  return terms;
 }
 
 // As sum_depth_terms(btdf_terms()), without a vector for the one-interface paths' single term.
@@ -196,7 +241,7 @@ double UnscatteredLight::btdf(double theta_i, double theta_o, double phi) const 
   if (path_ == UnscatteredPath::TopThenBottom) return sum_depth_terms(btdf_terms(theta_i, theta_o, phi), tau_);
   const auto [wi, wo] = transmission_directions(theta_i, theta_o, phi);
   const DepthTerm term = *one_interface_term(path_, top_, bottom_, wi, wo);
-  return term.coefficient * attenuation(tau_, term.mu);
+  return term.coefficient * attenuation(tau_, term.mu) * outer_attenuation(wi, wo);
 }
 
 UnscatteredLight UnscatteredLight::at_depth(double tau) const {

@@ -52,8 +52,13 @@ double sum_depth_terms(std::span<const DepthTerm> terms, double tau);
 class UnscatteredLight {
  public:
   UnscatteredLight() = default;
-  // A stack without interfaces between its layers has the unscattered light of one slab of its total depth; with
-  // one, none (it stays in the tables; core/stack_solver.h).
+  // A stack without interfaces between its layers has the unscattered light of one slab of its total depth. With
+  // interfaces between layers, the paths above apply to the first one or two rough interfaces the light crosses
+  // (the top, those between layers, the bottom), with the depths between them as tau() and those outside them as
+  // fixed factors: e^{-tau_before / mu_i} above the first (under an open top the light is not refracted above it) and
+  // e^{-tau_after / |omega_o.z|} below the last (over a matched bottom); BottomOnly's reflection is then the first
+  // interface's. Three or more rough crossings (a rough top, an interface between layers and a rough bottom) are
+  // a convolution of their lobes, wider than each: None, and the light stays in the tables (core/stack_solver.h).
   explicit UnscatteredLight(const Material& material);
 
   UnscatteredPath path() const { return path_; }
@@ -62,7 +67,8 @@ class UnscatteredLight {
   double btdf(double theta_i, double theta_o, double phi) const;
   double brdf(double theta_i, double theta_o, double phi) const;
   // The BTDF's terms in the optical depth: btdf() = sum_depth_terms(btdf_terms(), tau()), for callers that re-weigh
-  // the same directions at another depth (the lobe plot, as T changes). Empty where the BTDF is 0.
+  // the same directions at another depth (the lobe plot, as T changes); the depths outside the path's interfaces
+  // are in the coefficients. Empty where the BTDF is 0.
   std::vector<DepthTerm> btdf_terms(double theta_i, double theta_o, double phi) const;
   // The same material at another optical depth (tau in [0, inf)); nothing else changes.
   UnscatteredLight at_depth(double tau) const;
@@ -70,6 +76,8 @@ class UnscatteredLight {
   const RoughDielectric& top() const { return top_; }
   const RoughDielectric& bottom() const { return bottom_; }  // frame +z up into the layer: eta = n_below / n_layer
   double tau() const { return tau_; }
+  double tau_before() const { return tau_before_; }  // a stack's depth above the path's first interface
+  double tau_after() const { return tau_after_; }    // and below its last
 
   // The exit angle (radians, from the lower normal, forward) of light at theta_i crossing the layer's flat
   // interfaces: sin(theta_o) = sin(theta_i) / (n_below / n_above), n_below / n_above = eta over a matched bottom and
@@ -80,9 +88,14 @@ class UnscatteredLight {
 
  private:
   UnscatteredPath path_ = UnscatteredPath::None;
+  void set_stack_path(const Material& material);
+  double outer_attenuation(const Vec3& wi, const Vec3& wo) const;  // e^{-tau_before/mu_i} e^{-tau_after/|wo.z|}
+
   RoughDielectric top_{};
   RoughDielectric bottom_{};
   double tau_ = 0.0;
+  double tau_before_ = 0.0;   // above the path's first interface, crossed along the incident direction
+  double tau_after_ = 0.0;    // below its last, crossed along the exit direction
   double index_below_ = 1.0;  // n_below / n_above
 };
 
