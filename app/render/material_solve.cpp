@@ -58,15 +58,8 @@ ColorTables solve_color(const ColorMaterial& material, double theta_i, const Sol
   std::vector<Material> distinct;
   std::array<std::size_t, 3> index{};
   for (int c = 0; c < 3; ++c) {
-    const Material channel = document.channel(c);
-    const auto same_albedos = [&](const Material& m) {
-      if (m.albedo != channel.albedo) return false;
-      for (std::size_t i = 0; i < m.below.size(); ++i) {
-        if (m.below[i].albedo != channel.below[i].albedo) return false;
-      }
-      return true;
-    };
-    const auto found = std::find_if(distinct.begin(), distinct.end(), same_albedos);
+    const Material channel = document.channel(c);  // the channels differ in their albedos only
+    const auto found = std::find(distinct.begin(), distinct.end(), channel);
     index[c] = static_cast<std::size_t>(found - distinct.begin());
     if (found == distinct.end()) distinct.push_back(channel);
   }

@@ -1108,10 +1108,15 @@ TEST(ParsingFuzz, LayerSpecsRandomArguments) {
         }
       }
     }
+    // Air below the last layer (the default bottom): n_last / n_air = 1.4 (the default top) times the interfaces'
+    // eta must be a valid bottom-eta.
+    double index = Material{}.eta;
+    for (std::size_t i = 1; i < count; ++i) index *= expected[i].interface ? expected[i].interface->eta : 1.0;
+    const bool bad_bottom = !faulty && count > 1 && !(index >= 1.0 && index <= 2.5);
     try {
       const Material m = material_from_flags(flags);
-      if (faulty) {
-        ADD_FAILURE() << "built, but layer " << *faulty + 1 << " is faulty: " << escaped(arguments);
+      if (faulty || bad_bottom) {
+        ADD_FAILURE() << "built a faulty stack: " << escaped(arguments);
         continue;
       }
       ++built;
@@ -1126,7 +1131,9 @@ TEST(ParsingFuzz, LayerSpecsRandomArguments) {
     } catch (const std::exception& error) {
       const std::string message = error.what();
       ++refused;
-      if (!faulty) {
+      if (bad_bottom) {
+        EXPECT_TRUE(message.starts_with("bottom-eta = ")) << message << " for " << escaped(arguments);
+      } else if (!faulty) {
         ADD_FAILURE() << "refused a valid stack (" << message << "): " << escaped(arguments);
       } else {
         EXPECT_TRUE(message.starts_with("layer " + std::to_string(*faulty + 1) + ": "))
