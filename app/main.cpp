@@ -8,6 +8,7 @@
 #include "app/cli/error_report.h"
 #include "app/cli/errors.h"
 #include "app/cli/eval_command.h"
+#include "app/cli/export_command.h"
 #include "app/cli/figures_command.h"
 #include "app/cli/help_command.h"
 #include "app/cli/material_command.h"
@@ -31,6 +32,7 @@ int dispatch(std::span<const std::string_view> arguments, int argc, char** argv)
   if (command == "presets") return run_presets_command(rest, std::cout);
   if (command == "figures") return run_figures_command(rest, std::cout);
   if (command == "validate") return run_validate_command(rest, std::cout);
+  if (command == "export") return run_export_command(rest, std::cout, std::cerr);
   if (command == "help" || command == "--help" || command == "-h") return run_help_command(rest, std::cout);
   if (command == "--version") {
     std::cout << "skinlayer " << SKINLAYER_VERSION << '\n';

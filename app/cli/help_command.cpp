@@ -3,6 +3,7 @@
 #include "app/cli/albedo_command.h"
 #include "app/cli/errors.h"
 #include "app/cli/eval_command.h"
+#include "app/cli/export_command.h"
 #include "app/cli/figures_command.h"
 #include "app/cli/material_command.h"
 #include "app/cli/quoted.h"
@@ -27,6 +28,8 @@ std::string overview_usage() {
          "      the named presets (--preset NAME): the paper's settings, skin, leaf, paper, wax, jade, paint.\n"
          "  skinlayer figures -o DIR [--size PX]\n"
          "      the results figures (lobe plots and model spheres): a PNG and a CSV each, and index.html.\n"
+         "  skinlayer export --format merl [material flags] -o FILE\n"
+         "      the solved material as a MERL BRDF table, for BRDF viewers and fitting tools.\n"
          "  skinlayer validate [--quick] [-o DIR]\n"
          "      the solver against an independent Monte Carlo walk over a grid of layers: tables and a report.\n"
          "  skinlayer help [COMMAND], skinlayer COMMAND --help\n"
@@ -61,9 +64,11 @@ int run_help_command(std::span<const std::string_view> arguments, std::ostream& 
     out << figures_usage();
   } else if (command == "validate") {
     out << validate_usage();
+  } else if (command == "export") {
+    out << export_usage();
   } else {
     throw UsageError("unknown command " + quoted(command) +
-                     "; the commands are eval, albedo, render, material, presets, figures and validate");
+                     "; the commands are eval, albedo, render, material, presets, figures, export and validate");
   }
   return kExitSuccess;
 }

@@ -1,0 +1,96 @@
+#include "app/cli/export_command.h"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/cli/errors.h"
+#include "app/cli/flag_parser.h"
+#include "app/cli/material_flags.h"
+#include "app/cli/model_flag.h"
+#include "app/cli/quoted.h"
+#include "app/export/merl_brdf.h"
+#include "app/material/atomic_file.h"
+#include "app/process/parallel_for.h"
+#include "app/render/material_solve.h"
+
+namespace skinlayer::cli {
+namespace {
+
+// The angles of skinlayer's convention (core/conventions.h) for two directions pointing away from the surface:
+// theta from the normal, phi the outgoing azimuth minus the incident one (180 = the mirror direction).
+struct Angles {
+  double theta_i, theta_o, phi;
+};
+Angles angles_of(const Vec3& incident, const Vec3& outgoing) {
+  return {std::acos(std::min(1.0, incident.z())), std::acos(std::min(1.0, outgoing.z())),
+          std::atan2(outgoing.y(), outgoing.x()) - std::atan2(incident.y(), incident.x())};
+}
+
+}  // namespace
+
+std::string export_usage() {
+  return "Usage: skinlayer export --format merl [material flags] [--albedo A | r,g,b] [--model M] -o FILE\n"
+         "\n"
+         "Writes the solved material in a tabulated format that other programs read.\n"
+         "  --format merl        the MERL BRDF .binary (90 x 90 x 180 half/difference bins, float64, RGB):\n"
+         "                       reflection only (surface + subsurface), for BRDF viewers and fitting tools;\n"
+         "                       34,992,012 bytes. Bins below the horizon hold -1, as the format's readers expect.\n"
+         "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel (default 1)\n"
+         "  --model M            subsurface model: stam (default), lambert or hk\n"
+         "  -o, --output FILE    the file to write (required; written whole or not at all)\n"
+         "Progress goes to stderr.\n"
+         "\n" +
+         material_flags_usage();
+}
+
+int run_export_command(std::span<const std::string_view> arguments, std::ostream& out, std::ostream& progress) {
+  if (wants_help(arguments)) {
+    out << export_usage();
+    return kExitSuccess;
+  }
+  const std::vector<std::string_view> known = material_flags_and({kModelFlag, "format", "output"});
+  const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer export");
+  const std::optional<std::string_view> format = flags.value("format");
+  if (!format) throw UsageError("export needs --format merl (the format to write)");
+  if (*format != "merl") throw UsageError("format = " + quoted(*format) + " is not one of: merl");
+  const std::optional<std::string_view> output = flags.value("output");
+  if (!output || output->empty()) throw UsageError("export needs -o FILE (the file to write)");
+  // A missing folder is found before the seconds of work, not after.
+  const std::filesystem::path folder = std::filesystem::path(std::string(*output)).parent_path();
+  if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+    throw std::runtime_error("cannot write " + std::string(*output) + ": no folder " + folder.string());
+  }
+  const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  ColorMaterial material = color_material(document);
+  material.model = model_from_flags(flags, document.model);
+
+  const auto start = std::chrono::steady_clock::now();
+  SolveOptions options;
+  options.parallel_for = parallel_for_threads;
+  const ColorTables tables = solve_color(material, 0.0, options);
+  const bool grey = document.grey();
+  const RgbBrdf brdf = [&](const Vec3& incident, const Vec3& outgoing) {
+    const Angles a = angles_of(incident, outgoing);
+    const double red = brdf_total(tables, 0, a.theta_i, a.theta_o, a.phi);
+    if (grey) return std::array<double, 3>{red, red, red};
+    return std::array<double, 3>{red, brdf_total(tables, 1, a.theta_i, a.theta_o, a.phi),
+                                 brdf_total(tables, 2, a.theta_i, a.theta_o, a.phi)};
+  };
+  const std::string bytes = encode_merl(
+      brdf,
+      [&](int done, int total) {
+        progress << "export: " << done << " of " << total << " theta_h rows\n" << std::flush;
+      },
+      parallel_for_threads);
+  write_file_atomically(std::string(*output), bytes);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out << "wrote " << *output << " (MERL, " << bytes.size() << " bytes, " << std::round(seconds * 10.0) / 10.0
+      << " s)\n";
+  return kExitSuccess;
+}
+
+}  // namespace skinlayer::cli
