@@ -12,26 +12,12 @@
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
 #include "app/cli/quoted.h"
-#include "app/export/merl_brdf.h"
+#include "app/export/color_export.h"
 #include "app/material/atomic_file.h"
 #include "app/process/parallel_for.h"
 #include "app/render/material_solve.h"
 
 namespace skinlayer::cli {
-namespace {
-
-// The angles of skinlayer's convention (core/conventions.h) for two directions pointing away from the surface:
-// theta from the normal, phi the outgoing azimuth minus the incident one (180 = the mirror direction).
-struct Angles {
-  double theta_i, theta_o, phi;
-};
-Angles angles_of(const Vec3& incident, const Vec3& outgoing) {
-  return {std::acos(std::min(1.0, incident.z())), std::acos(std::min(1.0, outgoing.z())),
-          std::atan2(outgoing.y(), outgoing.x()) - std::atan2(incident.y(), incident.x())};
-}
-
-}  // namespace
-
 std::string export_usage() {
   return "Usage: skinlayer export --format merl [material flags] [--albedo A | r,g,b] [--model M] -o FILE\n"
          "\n"
@@ -72,16 +58,8 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   SolveOptions options;
   options.parallel_for = parallel_for_threads;
   const ColorTables tables = solve_color(material, 0.0, options);
-  const bool grey = document.grey();
-  const RgbBrdf brdf = [&](const Vec3& incident, const Vec3& outgoing) {
-    const Angles a = angles_of(incident, outgoing);
-    const double red = brdf_total(tables, 0, a.theta_i, a.theta_o, a.phi);
-    if (grey) return std::array<double, 3>{red, red, red};
-    return std::array<double, 3>{red, brdf_total(tables, 1, a.theta_i, a.theta_o, a.phi),
-                                 brdf_total(tables, 2, a.theta_i, a.theta_o, a.phi)};
-  };
-  const std::string bytes = encode_merl(
-      brdf,
+  const std::string bytes = merl_file(
+      tables,
       [&](int done, int total) {
         progress << "export: " << done << " of " << total << " theta_h rows\n" << std::flush;
       },

@@ -53,8 +53,9 @@ void energy_readout(const SolveResult& shown, bool unicode) {
   ImGui::EndTable();
 }
 
-// Target and path on one line, then the Save button with the last export's outcome beside it.
-bool screenshot_controls(ExportOptions& options, const std::string& last_export) {
+// Target and path on one line, then the Save and Export buttons with the last export's outcome (or the running
+// export's progress) beside them.
+bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool& export_merl) {
   constexpr std::array<const char*, 3> kTargets = {"window", "sphere", "plots"};
   int target = static_cast<int>(options.target);
   ImGui::SetNextItemWidth(ImGui::CalcTextSize("window").x * 2.2f);
@@ -65,10 +66,19 @@ bool screenshot_controls(ExportOptions& options, const std::string& last_export)
   ImGui::SetNextItemWidth(-1.0f);
   ImGui::InputTextWithHint("##path", "path.png (empty: timestamped name)", &options.path);
   const bool save = ImGui::Button("Save PNG (S)");
-  if (!last_export.empty()) {
-    ImGui::SameLine();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!status.export_progress.empty() || status.shown == nullptr);
+  export_merl = ImGui::Button("Export MERL");
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip(
+        "The shown material's reflection (surface + subsurface, RGB) as a MERL BRDF table, 35 MB,\n"
+        "for BRDF viewers and fitting tools; to the path above with .binary (empty: timestamped).");
+  }
+  const std::string& line = status.export_progress.empty() ? status.last_export : status.export_progress;
+  if (!line.empty()) {
     ImGui::PushTextWrapPos(0.0f);
-    ImGui::TextColored(kDimColor, "%s", last_export.c_str());
+    ImGui::TextColored(kDimColor, "%s", line.c_str());
     ImGui::PopTextWrapPos();
   }
   return save;
@@ -132,7 +142,7 @@ PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelSta
     }
   }
   if (ImGui::CollapsingHeader("Screenshot", ImGuiTreeNodeFlags_DefaultOpen)) {
-    actions.save_screenshot = screenshot_controls(state.export_options, status.last_export);
+    actions.save_screenshot = screenshot_controls(state.export_options, status, actions.export_merl);
   }
   ImGui::End();
   return actions;

@@ -15,12 +15,14 @@ struct PanelStatus {
   const SolveResult* shown = nullptr;  // the result on screen; null before the first one
   bool solving = false;                // newer parameters than the shown ones are in flight
   std::string error;                   // why the newest parameters could not be solved; empty if they could
-  std::string last_export;             // the last screenshot's outcome ("saved …" or the error)
+  std::string last_export;             // the last screenshot's or export's outcome ("saved …" or the error)
+  std::string export_progress;         // the running export's progress; empty when none runs
   bool unicode = false;                // the font has Greek letters and symbols
 };
 
 struct PanelActions {
   bool save_screenshot = false;
+  bool export_merl = false;  // the Export MERL button (app/window/export_job.h)
   bool reset_material = false;
   FileSectionResult file;  // the File section: open, save, presets, recent, undo, redo
 };

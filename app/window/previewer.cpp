@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <deque>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -24,6 +25,7 @@
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
 #include "app/window/control_panel.h"
+#include "app/window/export_job.h"
 #include "app/window/file_panel.h"
 #include "app/window/glfw_window.h"
 #include "app/window/help_overlay.h"
@@ -87,6 +89,11 @@ class Previewer {
   // One frame; returns how long the loop may wait for events before the next one.
   double frame() {
     bool activity = take_result();
+    if (const std::optional<std::string> outcome = export_job_.take_outcome()) {
+      last_export_ = *outcome;
+      out_ << *outcome << "\n" << std::flush;
+      activity = true;
+    }
     const std::array<int, 2> framebuffer = window_.framebuffer_size();
     if (framebuffer[0] < 1 || framebuffer[1] < 1) return kIdleWaitSeconds;  // minimized: nothing to draw
     update_scene();
@@ -99,6 +106,7 @@ class Previewer {
     activity |= view_overlays(overlay, edited.light);
     const PanelActions panel = control_panel(layout.panel, edited, panel_status(), file_section_input());
     bool save = panel.save_screenshot;
+    if (panel.export_merl) start_merl_export();
     bool reset = panel.reset_material;
     bool undo = panel.file.undo, redo = panel.file.redo;
     std::vector<FileCommand> file_commands;
@@ -227,7 +235,8 @@ class Previewer {
   }
 
   PanelStatus panel_status() const {
-    return PanelStatus{shown_ ? &*shown_ : nullptr, solving(), error_, last_export_, imgui_.unicode_labels()};
+    return PanelStatus{shown_ ? &*shown_ : nullptr, solving(), error_, last_export_, export_job_.progress(),
+                       imgui_.unicode_labels()};
   }
 
   // The scene of the shown result under the current light and view; the lobe scale (a CPU pass over the BSDF) is
@@ -271,6 +280,18 @@ class Previewer {
                               kCompareSlots[k]);
       }
     }
+  }
+
+  // The Export MERL button: the shown material (what the window draws) to the screenshot path with .binary, on the
+  // export's own thread (app/window/export_job.h).
+  void start_merl_export(const std::string& requested = "") {
+    if (!shown_ || !shown_->error.empty()) {
+      last_export_ = "nothing exported: no material is shown";
+      return;
+    }
+    std::string path = requested.empty() ? state_.export_options.path : requested;
+    if (!path.empty()) path = std::filesystem::path(path).replace_extension(".binary").string();
+    if (!export_job_.start_merl(shown_->tables(), path)) last_export_ = "an export is already running";
   }
 
   // Saves a region of the back buffer; failures are shown in the panel (and thrown in capture mode).
@@ -349,6 +370,8 @@ class Previewer {
       window_.request_close();  // as Ctrl+Q or the window's close button
     } else if (verb == "title") {
       out_ << "title: " << window_title(files_.session(), state_.material, false) << "\n" << std::flush;
+    } else if (verb == "export-merl") {
+      start_merl_export(argument);
     } else if (verb == "layer") {
       // The layers panel's buttons: "layer add", "layer remove I", "layer up I", "layer down I" (I 1-based).
       const std::size_t gap = argument.find(' ');
@@ -407,7 +430,7 @@ class Previewer {
   // --capture: once the shown result answers the final parameters and a few frames have shown it, save the whole
   // window through the same export path as the S key, and finish.
   void capture_if_ready(std::array<int, 2> framebuffer) {
-    if (!capture_path_ || !test_actions_.empty()) return;
+    if (!capture_path_ || !test_actions_.empty() || export_job_.running()) return;
     const bool final_result = submitted_ && !worker_.settling();
     if (final_result && !error_.empty()) throw std::runtime_error(error_);
     if (!final_result || !shown_ || shown_->preview || !same_request(shown_->request, *submitted_)) return;
@@ -435,6 +458,7 @@ class Previewer {
   EditHistory history_;
   MaterialFiles files_;
   std::deque<std::string> test_actions_;
+  ExportJob export_job_;
   SolveWorker worker_;  // last: destroyed (joined) first, while GLFW, which it wakes, is still initialized
 };
 

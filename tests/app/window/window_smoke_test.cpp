@@ -192,6 +192,23 @@ TEST(WindowSmoke, TheLayersPanelAddsReordersAndUndoesLayers) {
   std::filesystem::remove_all(dir);
 }
 
+// Export MERL (issue 13) through the same hook: the shown material's table, written off the window's thread, whole,
+// before the capture.
+TEST(WindowSmoke, ExportMerlWritesTheShownMaterialsTable) {
+  if (!find_in_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::filesystem::path dir = temporary_png("skinlayer-window-export").replace_extension("");
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path merl = dir / "shown.png";  // the button writes the screenshot path with .binary
+  Scripted exported = run_scripted("set albedo 0.5;export-merl " + merl.string(), dir / "config");
+  ASSERT_EQ(exported.run.exit_code, 0) << exported.run.err;
+  const std::filesystem::path written = dir / "shown.binary";
+  EXPECT_NE(exported.run.out.find("saved " + written.string() + " (MERL, 34992012 bytes)"), std::string::npos)
+      << exported.run.out;
+  ASSERT_TRUE(std::filesystem::exists(written));
+  EXPECT_EQ(std::filesystem::file_size(written), 34992012u);
+  std::filesystem::remove_all(dir);
+}
+
 // Quitting with unsaved changes asks first: the window is still there (it prints its title) until the changes are
 // discarded, and then it closes by itself.
 TEST(WindowSmoke, QuittingWithUnsavedChangesAsksFirst) {

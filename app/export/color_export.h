@@ -1,0 +1,18 @@
+// A solved RGB material (app/render/material_solve.h) in the exchange formats: what `skinlayer export` and the
+// previewer's Export buttons both write.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "app/export/merl_brdf.h"
+#include "app/render/material_solve.h"
+
+namespace skinlayer {
+
+// The MERL file's bytes of the tables' reflection (surface + subsurface, each channel; one evaluation for a grey
+// material). progress and parallel_for as for encode_merl.
+std::string merl_file(const ColorTables& tables, const std::function<void(int, int)>& progress = {},
+                      const std::function<void(int, const std::function<void(int)>&)>& parallel_for = {});
+
+}  // namespace skinlayer
