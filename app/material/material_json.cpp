@@ -65,7 +65,10 @@ class DocumentReader {
 
   // A number checked against its row of core's parameter table.
   double parameter(const Json& value, const std::string& path, std::string_view flag) const {
-    const ParameterInfo& info = parameter_info(flag);
+    return parameter(value, path, parameter_info(flag));
+  }
+
+  double parameter(const Json& value, const std::string& path, const ParameterInfo& info) const {
     if (!value.is_number()) {
       fail(path, "must be a number in " + range_text(info) + " (" + std::string(info.description) + "), not " +
                      type_name(value));
@@ -148,9 +151,10 @@ void read_layer(const DocumentReader& reader, const Json& layer, std::size_t ind
       reader.only_keys(interface, at, {"sigma", "eta"});
       LayerInterface parsed;
       parsed.sigma = reader.required_parameter(interface, at, "sigma", "sigma");
-      const Json& eta = reader.required(interface, at, "eta", "n_this / n_above, a number in [0.4, 2.5]");
-      if (!eta.is_number()) reader.fail(at + ".eta", "must be a number in [0.4, 2.5], not " + type_name(eta));
-      parsed.eta = eta.get<double>();
+      const ParameterInfo& eta = interface_eta_info();
+      parsed.eta = reader.parameter(
+          reader.required(interface, at, "eta", std::string(eta.description) + ", a number in " + range_text(eta)),
+          at + ".eta", eta);
       stacked.interface = parsed;
     }
     document.layer.below.push_back(stacked);

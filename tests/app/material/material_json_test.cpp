@@ -158,7 +158,7 @@ TEST(MaterialJson, EachKindOfErrorIsOneLineNamingTheFileAndTheKey) {
       {valid_with("[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}]",
                   "[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}, {\"T\": 0.5, \"albedo\": 1, \"g\": 0, "
                   "\"interface\": {\"sigma\": 0.3, \"eta\": 3}}]"),
-       {"bad.json", "layer 2", "eta = 3", "[0.4, 2.5]"}},
+       {"\"layers[1].interface.eta\"", "eta = 3", "[0.4, 2.5]"}},
       {valid_with("[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}]",
                   "[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}, {\"T\": 0.5, \"albedo\": 1, \"g\": 0, "
                   "\"interface\": {\"sigma\": 0.3}}]"),
