@@ -31,22 +31,24 @@ InternalInterfaceKernels internal_interface_kernels(const RoughDielectric& inter
   const std::vector<double> down_in = negated(mu_in);
   const std::vector<double> down_out = negated(mu_out);
 
+  // The slope-space albedos per node first: the reflections and the downward transmission are matched to them.
+  run_parallel(parallel_for, 2, [&](int side) {
+    (side == 0 ? k.from_above : k.from_below) = interface_albedos_along(interface, up, side == 0 ? 1.0 : -1.0);
+  });
   std::vector<std::function<void()>> tasks;
   tasks.emplace_back([&] {
-    k.from_above = interface_albedos_along(interface, up, 1.0);
     k.reflect_above = interface_fourier(interface, down, up, projector);
     match_reflection_energy(k.reflect_above, up, weights, reflectances(k.from_above));
     apply_quadrature_weights(k.reflect_above, up, weights);
   });
   tasks.emplace_back([&] {
-    k.from_below = interface_albedos_along(interface, up, -1.0);
     k.reflect_below = interface_fourier(interface, up, down, projector);
     match_reflection_energy(k.reflect_below, up, weights, reflectances(k.from_below));
     apply_quadrature_weights(k.reflect_below, up, weights);
   });
   tasks.emplace_back([&] {
     k.transmit_down = interface_fourier(interface, down, down, projector);
-    match_column_energy(k.transmit_down, up, weights, transmittances(interface_albedos_along(interface, up, 1.0)));
+    match_column_energy(k.transmit_down, up, weights, transmittances(k.from_above));
     k.transmit_up = transmission_by_reciprocity(k.transmit_down, interface.eta);
     apply_quadrature_weights(k.transmit_down, up, weights);
     apply_quadrature_weights(k.transmit_up, up, weights);
