@@ -35,6 +35,13 @@ LayerGeometry classify_layer(const Material& material) {
   return geometry;
 }
 
+Eigen::MatrixXd lambert_reflection(const QuadratureRule& quadrature, double albedo) {
+  const Eigen::Index n = quadrature.size();
+  Eigen::RowVectorXd row(n);
+  for (Eigen::Index j = 0; j < n; ++j) row(j) = 2.0 * albedo * quadrature.nodes[j] * quadrature.weights[j];
+  return row.replicate(n, 1);
+}
+
 std::size_t InterfaceKernels::bytes() const {
   std::size_t total = 0;
   for (const FourierKernel* k : {&r_top, &t_source, &t_exit, &t_source_exterior, &r_top_rows, &r_bottom, &t_bottom_exit,

@@ -5,6 +5,7 @@
 // SolveCache (core/solve_cache.h) keeps them across re-solves that change only those.
 #pragma once
 
+#include <Eigen/Core>
 #include <span>
 #include <vector>
 
@@ -29,6 +30,10 @@ struct LayerGeometry {
   bool operator==(const LayerGeometry&) const = default;
 };
 LayerGeometry classify_layer(const Material& material);
+
+// A Lambertian base of albedo A under the ordinates (f = A/pi, Fourier mode 0 only), as a node operator from the
+// down nodes to the up nodes: R(o, j) = c_0 (A/pi) mu_j a_j = 2 A mu_j a_j.
+Eigen::MatrixXd lambert_reflection(const QuadratureRule& quadrature, double albedo);
 
 // Everything interface-dependent of one solve, in propagation convention (core/conventions.h), before the per-mode
 // parity. Kernels with "rows" map node radiance to outside directions; each is empty where the geometry has no use

@@ -74,8 +74,6 @@ class LayerSolver {
   const InterfaceKernels& kernels() const { return *kernels_; }
 
  private:
-  Eigen::MatrixXd lambert_reflection() const;
-
   std::shared_ptr<const InterfaceKernels> kernels_;
   const LayerGeometry& geometry_;
   const QuadratureRule& quadrature_;
@@ -113,14 +111,6 @@ LayerSolver::LayerSolver(const Material& material, const Resolution& resolution,
                                         mu_in_, mu_out_, beam, exterior);
 }
 
-// Lambertian base, f = A/pi, mode 0 only: R(o, j) = c_0 (A/pi) mu_j a_j = 2 A mu_j a_j.
-Eigen::MatrixXd LayerSolver::lambert_reflection() const {
-  const Eigen::Index n = quadrature_.size();
-  Eigen::RowVectorXd row(n);
-  for (Eigen::Index j = 0; j < n; ++j) row(j) = 2.0 * lambert_ * quadrature_.nodes[j] * quadrature_.weights[j];
-  return row.replicate(n, 1);
-}
-
 LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
   const double solved_albedo = std::min(albedo, kMaxSolvedAlbedo);
   const std::span<const double> nodes = quadrature_.nodes;
@@ -145,7 +135,7 @@ LayerSolver::ModeResult LayerSolver::solve_mode(int m, double albedo) const {
     problem.reflect_bottom = kernels_->r_bottom[m];
     if (geometry_.top_open) problem.source_bottom = kernels_->s_bottom_beam[m] * beam_attenuation_.asDiagonal();
   } else if (lambert_mode) {
-    problem.reflect_bottom = lambert_reflection();
+    problem.reflect_bottom = lambert_reflection(quadrature_, lambert_);
     if (geometry_.top_open) {
       problem.source_bottom = (lambert_ * kInvPi) * beam_attenuation_.transpose().replicate(n, 1);
     }

@@ -159,9 +159,7 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
     last.reflect_bottom = kernels_->r_bottom[m];
     if (beam_at_bottom) last.source_bottom = kernels_->s_bottom_beam[m] * beam_at_bottom_.asDiagonal();
   } else if (lambert_mode) {
-    Eigen::RowVectorXd row(n);
-    for (Eigen::Index j = 0; j < n; ++j) row(j) = 2.0 * lambert * q.nodes[j] * q.weights[j];  // c_0 (A/pi) mu a
-    last.reflect_bottom = row.replicate(n, 1);
+    last.reflect_bottom = lambert_reflection(q, lambert);
     if (beam_at_bottom) last.source_bottom = (lambert * kInvPi) * beam_at_bottom_.transpose().replicate(n, 1);
   }
   std::vector<FaceCoupling> couplings(count - 1);
@@ -301,6 +299,11 @@ std::vector<DirectionalAlbedo> StackSolver::directional_albedo(const ModeResult&
   const Eigen::RowVectorXd top_lost = along(kernels_->top_inside, lost);
   const Eigen::RowVectorXd bottom_out = along(kernels_->bottom_inside, transmitted);
   const Eigen::RowVectorXd bottom_lost = along(kernels_->bottom_inside, lost);
+  // Per interface between layers, the flux lost to shadowing from the down nodes above and the up nodes below.
+  std::vector<std::pair<Eigen::RowVectorXd, Eigen::RowVectorXd>> face_lost(count - 1);
+  for (std::size_t f = 0; f + 1 < count; ++f) {
+    if (internal_face(f)) face_lost[f] = {along(faces_[f]->from_above, lost), along(faces_[f]->from_below, lost)};
+  }
 
   std::vector<DirectionalAlbedo> rows;
   for (std::size_t k = 0; k < kernels_->mu_in.size(); ++k) {
@@ -327,11 +330,10 @@ std::vector<DirectionalAlbedo> StackSolver::directional_albedo(const ModeResult&
     if (std::isinf(layers_.back().tau)) row.transmittance = 0.0;
     for (std::size_t f = 0; f + 1 < count; ++f) {
       if (!internal_face(f)) continue;
-      const InternalInterfaceKernels& face = *faces_[f];
-      row.interface_loss += along(face.from_above, lost).dot(field.slabs[f].down_bottom.col(col)) +
-                            along(face.from_below, lost).dot(field.slabs[f + 1].up_top.col(col));
+      row.interface_loss += face_lost[f].first.dot(field.slabs[f].down_bottom.col(col)) +
+                            face_lost[f].second.dot(field.slabs[f + 1].up_top.col(col));
       if (beam_amplitude_[f].size() != 0) {
-        row.interface_loss += beam_amplitude_[f](col) * beam_attenuation_[f](col) * face.beam_albedo[k].loss();
+        row.interface_loss += beam_amplitude_[f](col) * beam_attenuation_[f](col) * faces_[f]->beam_albedo[k].loss();
       }
     }
     // Each slab absorbs the net flux into its top face less the net flux out of its bottom face, the beam's
