@@ -193,23 +193,19 @@ Material single_channel(const MaterialDocument& document) {
 
 std::string material_to_flags(const Material& material) {
   std::string text = "--sigma " + format_shortest(material.sigma) + " --eta " + format_shortest(material.eta);
-  if (!material.below.empty()) {
+  if (material.below.empty()) {
+    // T with the fewest digits that give back the same tau (0.1, not exp(-(-ln 0.1)) = 0.10000000000000002).
+    const std::optional<double> transparency = exact_transparency(material.tau);
+    const std::string depth =
+        transparency ? " --T " + format_shortest(*transparency) : " --tau " + format_shortest(material.tau);
+    text += depth;
+    text += " --albedo " + format_shortest(material.albedo) + " --g " + format_shortest(material.g);
+  } else {
     for (const StackedLayer& layer : stack_layers(material)) {
       text += " --layer " + format_layer_spec(layer, {layer.albedo, layer.albedo, layer.albedo});
     }
-    text += " --bottom " + format_bottom(material.bottom);
-    if (material.bottom.sigma) text += " --bottom-sigma " + format_shortest(*material.bottom.sigma);
-    if (material.bottom.eta) text += " --bottom-eta " + format_shortest(*material.bottom.eta);
-    if (material.ordinates) text += " --ordinates " + std::to_string(*material.ordinates);
-    return text;
   }
-  // T with the fewest digits that give back the same tau (0.1, not exp(-(-ln 0.1)) = 0.10000000000000002).
-  const std::optional<double> transparency = exact_transparency(material.tau);
-  const std::string depth =
-      transparency ? " --T " + format_shortest(*transparency) : " --tau " + format_shortest(material.tau);
-  text += depth;
-  text += " --albedo " + format_shortest(material.albedo) + " --g " + format_shortest(material.g) + " --bottom " +
-          format_bottom(material.bottom);
+  text += " --bottom " + format_bottom(material.bottom);
   if (material.bottom.sigma) text += " --bottom-sigma " + format_shortest(*material.bottom.sigma);
   if (material.bottom.eta) text += " --bottom-eta " + format_shortest(*material.bottom.eta);
   if (material.ordinates) text += " --ordinates " + std::to_string(*material.ordinates);
