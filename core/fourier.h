@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -40,6 +41,22 @@ class CosineProjector {
  private:
   Eigen::MatrixXd weights_;  // modes x samples
   std::vector<double> cos_, sin_;
+};
+
+// Cosine coefficients (the convention above: K^0 the mean, K^m for m >= 1) of an even, 2pi-periodic function known
+// by its values on [0, pi], sampled at 2M + 1 equally spaced azimuths for M = 16, 32, 64, ... (each level keeps the
+// previous samples) until the upper half of the M modes sums, in absolute value, to at most `tolerance` times the
+// largest |sample|, or M reaches max_modes. Returns the M coefficients of the last level.
+class AdaptiveCosineSeries {
+ public:
+  AdaptiveCosineSeries(int max_modes, double tolerance);
+
+  int max_modes() const { return projectors_.back().modes(); }
+  std::vector<double> operator()(const std::function<double(double phi)>& function) const;
+
+ private:
+  std::vector<CosineProjector> projectors_;  // M = 16, 32, ... with 2M + 1 samples each
+  double tolerance_;
 };
 
 // A direction of propagation with cosine mu (signed, mu > 0 travels up) and azimuth phi.
