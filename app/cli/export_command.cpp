@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
+#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/export/color_export.h"
 #include "app/material/atomic_file.h"
@@ -19,9 +21,19 @@
 
 namespace skinlayer::cli {
 std::string export_usage() {
-  return "Usage: skinlayer export --format merl [material flags] [--albedo A | r,g,b] [--model M] -o FILE\n"
+  return "Usage: skinlayer export --format bsdf|merl [material flags] [--albedo A | r,g,b] [--model M] -o FILE\n"
+         "                        [--nodes N]\n"
          "\n"
          "Writes the solved material in a tabulated format that other programs read.\n"
+         "  --format bsdf        the tabulated Fourier BSDF (\"SCATFUN\" v1) that layerlab writes and pbrt-v3's\n"
+         "                       \"fourier\" material reads: light from above and from below, reflection and\n"
+         "                       transmission, grey or RGB (Y, R, B); the material file's JSON rides along, so\n"
+         "                       --material FILE.bsdf reads it back. pbrt-v4 and Mitsuba 3 do not read it.\n"
+         "  --nodes N            bsdf: polar nodes per hemisphere, a whole number in [" +
+         std::to_string(kMinScatfunNodes) + ", " + std::to_string(kMaxScatfunNodes) + "] (default " +
+         std::to_string(kDefaultScatfunNodes) +
+         "); lobes narrower\n"
+         "                       than the node spacing, 90/(N-1) degrees, need more\n"
          "  --format merl        the MERL BRDF .binary (90 x 90 x 180 half/difference bins, float64, RGB):\n"
          "                       reflection only (surface + subsurface), for BRDF viewers and fitting tools;\n"
          "                       34,992,012 bytes. Bins below the horizon hold -1, as the format's readers expect.\n"
@@ -33,16 +45,34 @@ std::string export_usage() {
          material_flags_usage();
 }
 
+namespace {
+
+int parse_nodes(std::optional<std::string_view> text) {
+  if (!text) return kDefaultScatfunNodes;
+  const std::optional<double> value = parse_number(*text);
+  if (!value || *value != std::floor(*value) || *value < kMinScatfunNodes || *value > kMaxScatfunNodes) {
+    throw UsageError("nodes = " + quoted(*text) + " must be a whole number in [" + std::to_string(kMinScatfunNodes) +
+                     ", " + std::to_string(kMaxScatfunNodes) + "] (polar nodes per hemisphere)");
+  }
+  return static_cast<int>(*value);
+}
+
+}  // namespace
+
 int run_export_command(std::span<const std::string_view> arguments, std::ostream& out, std::ostream& progress) {
   if (wants_help(arguments)) {
     out << export_usage();
     return kExitSuccess;
   }
-  const std::vector<std::string_view> known = material_flags_and({kModelFlag, "format", "output"});
+  const std::vector<std::string_view> known = material_flags_and({kModelFlag, "format", "output", "nodes"});
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer export");
   const std::optional<std::string_view> format = flags.value("format");
-  if (!format) throw UsageError("export needs --format merl (the format to write)");
-  if (*format != "merl") throw UsageError("format = " + quoted(*format) + " is not one of: merl");
+  if (!format) throw UsageError("export needs --format bsdf or --format merl (the format to write)");
+  if (*format != "merl" && *format != "bsdf")
+    throw UsageError("format = " + quoted(*format) + " is not one of: bsdf, merl");
+  const bool bsdf = *format == "bsdf";
+  if (!bsdf && flags.has("nodes")) throw UsageError("--nodes is for --format bsdf (a MERL file's bins are fixed)");
+  const int nodes = bsdf ? parse_nodes(flags.value("nodes")) : 0;
   const std::optional<std::string_view> output = flags.value("output");
   if (!output || output->empty()) throw UsageError("export needs -o FILE (the file to write)");
   // A missing folder is found before the seconds of work, not after.
@@ -58,16 +88,23 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   SolveOptions options;
   options.parallel_for = parallel_for_threads;
   const ColorTables tables = solve_color(material, 0.0, options);
-  const std::string bytes = merl_file(
-      tables,
-      [&](int done, int total) {
-        progress << "export: " << done << " of " << total << " theta_h rows\n" << std::flush;
-      },
-      parallel_for_threads);
+  // One progress line per tenth of the rows (the rows finish on several threads).
+  std::mutex progress_lock;
+  int reported = 0;
+  const auto report = [&](int done, int total, std::string_view rows) {
+    const std::lock_guard lock(progress_lock);
+    if (done * 10 / total <= reported && done != total) return;
+    reported = done * 10 / total;
+    progress << "export: " << done << " of " << total << " " << rows << "\n" << std::flush;
+  };
+  const std::string bytes =
+      bsdf ? scatfun_file(tables, nodes, options, [&](int done, int total) { report(done, total, "polar rows"); })
+           : merl_file(
+                 tables, [&](int done, int total) { report(done, total, "theta_h rows"); }, parallel_for_threads);
   write_file_atomically(std::string(*output), bytes);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  out << "wrote " << *output << " (MERL, " << bytes.size() << " bytes, " << std::round(seconds * 10.0) / 10.0
-      << " s)\n";
+  out << "wrote " << *output << " (" << (bsdf ? "SCATFUN" : "MERL") << ", " << bytes.size() << " bytes, "
+      << std::round(seconds * 10.0) / 10.0 << " s)\n";
   return kExitSuccess;
 }
 

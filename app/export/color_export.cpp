@@ -21,4 +21,13 @@ std::string merl_file(const ColorTables& tables, const std::function<void(int, i
   return encode_merl(brdf, progress, parallel_for);
 }
 
+std::string scatfun_file(const ColorTables& tables, int nodes, const SolveOptions& options,
+                         const std::function<void(int, int)>& progress) {
+  std::optional<ColorTables> below;
+  if (const std::optional<ColorMaterial> flipped = upside_down(tables.material)) {
+    below = solve_color(*flipped, 0.0, options);
+  }
+  return encode_scatfun(scatfun_table(tables, below ? &*below : nullptr, nodes, progress, options.parallel_for));
+}
+
 }  // namespace skinlayer

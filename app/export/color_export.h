@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "app/export/fourier_bsdf_export.h"
 #include "app/export/merl_brdf.h"
 #include "app/render/material_solve.h"
 
@@ -14,5 +15,11 @@ namespace skinlayer {
 // material). progress and parallel_for as for encode_merl.
 std::string merl_file(const ColorTables& tables, const std::function<void(int, int)>& progress = {},
                       const std::function<void(int, const std::function<void(int)>&)>& parallel_for = {});
+
+// The SCATFUN file's bytes (fourier_bsdf_export.h) of the solved material: it solves the material upside down for
+// light from below (through `options`, as solve_color), then tabulates both on `nodes` polar nodes per hemisphere.
+// progress(done, total) counts polar rows.
+std::string scatfun_file(const ColorTables& tables, int nodes, const SolveOptions& options = {},
+                         const std::function<void(int, int)>& progress = {});
 
 }  // namespace skinlayer

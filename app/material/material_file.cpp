@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "app/export/scatfun_file.h"
 #include "app/material/atomic_file.h"
 #include "app/material/material_json.h"
 #include "app/material/picture_metadata.h"
@@ -18,6 +19,12 @@ MaterialDocument read_material_file(const std::string& path) {
   const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   if (file.bad()) throw MaterialFileError("cannot read " + path + ": " + std::strerror(errno));
   if (is_png(bytes)) return material_from_picture(bytes, path);
+  if (is_scatfun(bytes)) {
+    const std::optional<std::string_view> metadata = scatfun_metadata(bytes);
+    if (!metadata) throw MaterialFileError(path + " is a damaged SCATFUN file (shorter than its header says)");
+    if (metadata->empty()) throw MaterialFileError(path + " is a SCATFUN file without a material (no metadata)");
+    return read_material_json(*metadata, path);
+  }
   return read_material_json(bytes, path);
 }
 
