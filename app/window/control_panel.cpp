@@ -55,7 +55,7 @@ void energy_readout(const SolveResult& shown, bool unicode) {
 
 // Target and path on one line, then the Save and Export buttons with the last export's outcome (or the running
 // export's progress) beside them.
-bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool& export_merl) {
+bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool& export_bsdf, bool& export_merl) {
   constexpr std::array<const char*, 3> kTargets = {"window", "sphere", "plots"};
   int target = static_cast<int>(options.target);
   ImGui::SetNextItemWidth(ImGui::CalcTextSize("window").x * 2.2f);
@@ -67,7 +67,18 @@ bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool
   ImGui::InputTextWithHint("##path", "path.png (empty: timestamped name)", &options.path);
   const bool save = ImGui::Button("Save PNG (S)");
   ImGui::SameLine();
-  ImGui::BeginDisabled(!status.export_progress.empty() || status.shown == nullptr);
+  const bool busy = !status.export_progress.empty() || status.shown == nullptr;
+  ImGui::BeginDisabled(busy);
+  export_bsdf = ImGui::Button("Export BSDF");
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+    ImGui::SetTooltip(
+        "The shown material's whole BSDF (light from above and below, reflection and transmission, RGB)\n"
+        "as a tabulated Fourier BSDF for pbrt-v3's \"fourier\" material and layerlab, 1-3 MB;\n"
+        "to the path above with .bsdf (empty: timestamped).");
+  }
+  ImGui::SameLine();
+  ImGui::BeginDisabled(busy);
   export_merl = ImGui::Button("Export MERL");
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
@@ -142,7 +153,8 @@ PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelSta
     }
   }
   if (ImGui::CollapsingHeader("Screenshot", ImGuiTreeNodeFlags_DefaultOpen)) {
-    actions.save_screenshot = screenshot_controls(state.export_options, status, actions.export_merl);
+    actions.save_screenshot =
+        screenshot_controls(state.export_options, status, actions.export_bsdf, actions.export_merl);
   }
   ImGui::End();
   return actions;

@@ -22,7 +22,8 @@ struct PanelStatus {
 
 struct PanelActions {
   bool save_screenshot = false;
-  bool export_merl = false;  // the Export MERL button (app/window/export_job.h)
+  bool export_bsdf = false;  // the Export BSDF button (app/window/export_job.h)
+  bool export_merl = false;  // the Export MERL button
   bool reset_material = false;
   FileSectionResult file;  // the File section: open, save, presets, recent, undo, redo
 };

@@ -10,18 +10,22 @@
 
 namespace skinlayer {
 
-std::string timestamped_merl_name() {
-  return std::filesystem::path(timestamped_png_name()).replace_extension(".binary").string();
+const char* export_format_name(ExportFormat format) { return format == ExportFormat::Merl ? "MERL" : "SCATFUN"; }
+const char* export_extension(ExportFormat format) { return format == ExportFormat::Merl ? ".binary" : ".bsdf"; }
+
+std::string timestamped_export_name(ExportFormat format) {
+  return std::filesystem::path(timestamped_png_name()).replace_extension(export_extension(format)).string();
 }
 
 ExportJob::~ExportJob() {
   if (thread_.joinable()) thread_.join();
 }
 
-bool ExportJob::start_merl(const ColorTables& tables, std::string path) {
+bool ExportJob::start(ExportFormat format, const ColorTables& tables, std::string path) {
   if (running_.load()) return false;
   if (thread_.joinable()) thread_.join();
-  if (path.empty()) path = timestamped_merl_name();
+  if (path.empty()) path = timestamped_export_name(format);
+  format_ = format;
   {
     const std::lock_guard lock(mutex_);
     path_ = path;
@@ -29,18 +33,20 @@ bool ExportJob::start_merl(const ColorTables& tables, std::string path) {
   rows_done_ = 0;
   rows_total_ = 0;
   running_ = true;
-  thread_ = std::thread([this, tables, path] {
+  thread_ = std::thread([this, format, tables, path] {
     std::string outcome;
     try {
-      const std::string bytes = merl_file(
-          tables,
-          [this](int done, int total) {
-            rows_done_ = done;
-            rows_total_ = total;
-          },
-          parallel_for_threads);
+      const auto progress = [this](int done, int total) {
+        rows_done_ = done;
+        rows_total_ = total;
+      };
+      SolveOptions options;  // the upside-down solve of a Fourier BSDF
+      options.parallel_for = parallel_for_threads;
+      const std::string bytes = format == ExportFormat::Merl
+                                    ? merl_file(tables, progress, parallel_for_threads)
+                                    : scatfun_file(tables, kDefaultScatfunNodes, options, progress);
       write_file_atomically(path, bytes);
-      outcome = "saved " + path + " (MERL, " + std::to_string(bytes.size()) + " bytes)";
+      outcome = "saved " + path + " (" + export_format_name(format) + ", " + std::to_string(bytes.size()) + " bytes)";
     } catch (const std::exception& error) {
       outcome = error.what();
     }
@@ -56,8 +62,11 @@ bool ExportJob::start_merl(const ColorTables& tables, std::string path) {
 std::string ExportJob::progress() const {
   if (!running_.load()) return "";
   const std::lock_guard lock(mutex_);
-  return "exporting " + path_ + " (MERL, " + std::to_string(rows_done_.load()) + " of " +
-         std::to_string(rows_total_.load() == 0 ? 90 : rows_total_.load()) + " rows)";
+  const int total = rows_total_.load();
+  return "exporting " + path_ + " (" + export_format_name(format_) + ", " +
+         (total == 0 ? std::string("solving")
+                     : std::to_string(rows_done_.load()) + " of " + std::to_string(total) + " rows") +
+         ")";
 }
 
 std::optional<std::string> ExportJob::take_outcome() {

@@ -1,6 +1,6 @@
-// The previewer's file exports that take a while (the MERL table: 1-2 s), on a thread of their own so that the
-// window keeps drawing: one at a time, with its progress for the panel and its outcome when it ends. The thread is
-// joined by the destructor (RAII); a job cannot be cancelled, since it only writes its own file.
+// The previewer's file exports that take a while (a MERL table or a Fourier BSDF: 0.5-2 s), on a thread of their own so
+// that the window keeps drawing: one at a time, with its progress for the panel and its outcome when it ends. The
+// thread is joined by the destructor (RAII); a job cannot be cancelled, since it only writes its own file.
 #pragma once
 
 #include <atomic>
@@ -13,6 +13,15 @@
 
 namespace skinlayer {
 
+enum class ExportFormat {
+  Merl,  // the MERL BRDF .binary (app/export/merl_brdf.h)
+  Bsdf,  // the tabulated Fourier BSDF .bsdf, SCATFUN (app/export/fourier_bsdf_export.h), at the default nodes
+};
+
+// The format's name in messages ("MERL", "SCATFUN") and its file extension (".binary", ".bsdf").
+const char* export_format_name(ExportFormat format);
+const char* export_extension(ExportFormat format);
+
 class ExportJob {
  public:
   ExportJob() = default;
@@ -20,12 +29,12 @@ class ExportJob {
   ExportJob& operator=(const ExportJob&) = delete;
   ~ExportJob();
 
-  // Starts writing the MERL table of `tables` to path (a timestamped name in the current folder when empty).
+  // Starts writing `tables` in `format` to path (a timestamped name in the current folder when empty).
   // Returns false, and starts nothing, while another export runs.
-  bool start_merl(const ColorTables& tables, std::string path);
+  bool start(ExportFormat format, const ColorTables& tables, std::string path);
 
   bool running() const { return running_.load(); }
-  // "exporting MERL … (40 of 90 rows)" while running; empty otherwise.
+  // "exporting PATH (MERL, 40 of 90 rows)" while running; empty otherwise.
   std::string progress() const;
   // The outcome of a job that has ended since the last call ("saved PATH (MERL, N bytes)" or the error), once.
   std::optional<std::string> take_outcome();
@@ -35,12 +44,13 @@ class ExportJob {
   std::atomic<bool> running_{false};
   std::atomic<int> rows_done_{0};
   std::atomic<int> rows_total_{0};
+  ExportFormat format_ = ExportFormat::Merl;  // written before the thread starts, read while it runs
   mutable std::mutex mutex_;  // guards path_ and outcome_
   std::string path_;
   std::optional<std::string> outcome_;
 };
 
-// The timestamped name of an export: skinlayer-YYYYMMDD-HHMMSS.binary.
-std::string timestamped_merl_name();
+// The timestamped name of an export: skinlayer-YYYYMMDD-HHMMSS.binary (or .bsdf).
+std::string timestamped_export_name(ExportFormat format);
 
 }  // namespace skinlayer

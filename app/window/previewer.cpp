@@ -106,7 +106,8 @@ class Previewer {
     activity |= view_overlays(overlay, edited.light);
     const PanelActions panel = control_panel(layout.panel, edited, panel_status(), file_section_input());
     bool save = panel.save_screenshot;
-    if (panel.export_merl) start_merl_export();
+    if (panel.export_bsdf) start_export(ExportFormat::Bsdf);
+    if (panel.export_merl) start_export(ExportFormat::Merl);
     bool reset = panel.reset_material;
     bool undo = panel.file.undo, redo = panel.file.redo;
     std::vector<FileCommand> file_commands;
@@ -282,16 +283,16 @@ class Previewer {
     }
   }
 
-  // The Export MERL button: the shown material (what the window draws) to the screenshot path with .binary, on the
-  // export's own thread (app/window/export_job.h).
-  void start_merl_export(const std::string& requested = "") {
+  // The Export BSDF and Export MERL buttons: the shown material (what the window draws) to the screenshot path with
+  // the format's extension, on the export's own thread (app/window/export_job.h).
+  void start_export(ExportFormat format, const std::string& requested = "") {
     if (!shown_ || !shown_->error.empty()) {
       last_export_ = "nothing exported: no material is shown";
       return;
     }
     std::string path = requested.empty() ? state_.export_options.path : requested;
-    if (!path.empty()) path = std::filesystem::path(path).replace_extension(".binary").string();
-    if (!export_job_.start_merl(shown_->tables(), path)) last_export_ = "an export is already running";
+    if (!path.empty()) path = std::filesystem::path(path).replace_extension(export_extension(format)).string();
+    if (!export_job_.start(format, shown_->tables(), path)) last_export_ = "an export is already running";
   }
 
   // Saves a region of the back buffer; failures are shown in the panel (and thrown in capture mode).
@@ -371,7 +372,9 @@ class Previewer {
     } else if (verb == "title") {
       out_ << "title: " << window_title(files_.session(), state_.material, false) << "\n" << std::flush;
     } else if (verb == "export-merl") {
-      start_merl_export(argument);
+      start_export(ExportFormat::Merl, argument);
+    } else if (verb == "export-bsdf") {
+      start_export(ExportFormat::Bsdf, argument);
     } else if (verb == "layer") {
       // The layers panel's buttons: "layer add", "layer remove I", "layer up I", "layer down I" (I 1-based).
       const std::size_t gap = argument.find(' ');

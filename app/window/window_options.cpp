@@ -57,7 +57,8 @@ std::string window_usage() {
          "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in [0, 1]\n"
          "  --test-actions LIST  for tests: ';'-separated actions run once the first solve is shown (set NAME\n"
          "                       VALUE, undo, redo, drop PATH, save PATH, preset NAME, quit, discard, title,\n"
-         "                       layer add, layer remove|up|down I, export-merl PATH)\n"
+         "                       layer add, layer remove|up|down I, export-merl PATH,\n"
+         "                       export-bsdf PATH)\n"
          "\n" +
          cli::material_flags_usage();
 }

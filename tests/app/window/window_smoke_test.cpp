@@ -209,6 +209,26 @@ TEST(WindowSmoke, ExportMerlWritesTheShownMaterialsTable) {
   std::filesystem::remove_all(dir);
 }
 
+// Export BSDF the same way: the shown material's Fourier BSDF, whose metadata is that material (read back by
+// `--material FILE.bsdf`; the file's structure and values are tested in tests/app/export).
+TEST(WindowSmoke, ExportBsdfWritesTheShownMaterial) {
+  if (!find_in_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::filesystem::path dir = temporary_png("skinlayer-window-bsdf").replace_extension("");
+  std::filesystem::create_directories(dir);
+  Scripted exported = run_scripted("set g 0.55;export-bsdf " + (dir / "shown.png").string(), dir / "config");
+  ASSERT_EQ(exported.run.exit_code, 0) << exported.run.err;
+  const std::filesystem::path written = dir / "shown.bsdf";
+  ASSERT_TRUE(std::filesystem::exists(written));
+  EXPECT_NE(exported.run.out.find("saved " + written.string() + " (SCATFUN, " +
+                                  std::to_string(std::filesystem::file_size(written)) + " bytes)"),
+            std::string::npos)
+      << exported.run.out;
+  const ProcessResult shown = run_process({SKINLAYER_EXECUTABLE, "material", "--material", written.string()});
+  ASSERT_EQ(shown.exit_code, 0) << shown.err;
+  EXPECT_NE(shown.out.find("\"g\": 0.55"), std::string::npos) << shown.out;
+  std::filesystem::remove_all(dir);
+}
+
 // Quitting with unsaved changes asks first: the window is still there (it prints its title) until the changes are
 // discarded, and then it closes by itself.
 TEST(WindowSmoke, QuittingWithUnsavedChangesAsksFirst) {
