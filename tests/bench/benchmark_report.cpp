@@ -40,12 +40,18 @@ class CollectingReporter : public benchmark::ConsoleReporter {
       std::string name = run.run_name.str();
       name = name.substr(0, name.find("/repeats:"));
       if (aggregate || !milliseconds_.count(name)) milliseconds_[name] = ms;
+      for (const auto& [key, counter] : run.counters) counters_[name + "#" + key] = counter.value;
     }
     ConsoleReporter::ReportRuns(runs);
   }
   double ms(const std::string& name) const {
     const auto it = milliseconds_.find(name);
     return it == milliseconds_.end() ? std::nan("") : it->second;
+  }
+  // A benchmark's counter (state.counters[key]), NaN when absent.
+  double counter(const std::string& name, const std::string& key) const {
+    const auto it = counters_.find(name + "#" + key);
+    return it == counters_.end() ? std::nan("") : it->second;
   }
 
  private:
@@ -63,6 +69,7 @@ class CollectingReporter : public benchmark::ConsoleReporter {
     return 1.0;
   }
   std::map<std::string, double> milliseconds_;
+  std::map<std::string, double> counters_;  // "name#key"
 };
 
 std::string cpu_model() {
@@ -181,6 +188,11 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
     md << formatted(" %d layer%s %.1f ms (%.2f×)%s", layers, layers == 1 ? "" : "s", ms,
                     ms / r.ms("BM_SolveStack/1/real_time"), layers == 3 ? ".\n" : ",");
   }
+  md << formatted(
+      "\n## Export\n\n`skinlayer export --format bsdf` of the default material with skin-fair's RGB albedo at the "
+      "default 64 nodes per hemisphere, from cold on both cores (solve, upside-down solve, tabulation, encoding; "
+      "`BM_ExportBsdf`, target of issue 13: under 2 s and 20 MB): **%.0f ms**, %.2f MB.\n",
+      r.ms("BM_ExportBsdf/real_time"), r.counter("BM_ExportBsdf/real_time", "bytes") / 1e6);
   md << "\n## RGB re-solves at the costliest corners\n\n"
      << "Three albedos on both cores with the cache, as the previewer's worker solves them, after a σ step (so the "
         "interface operators are built anew). Preview: `SolveOptions::preview`, the worker's first answer where the "

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <sstream>
 #include <string>
@@ -271,6 +272,25 @@ TEST_F(ScatfunExport, BadRequestsAreOneLineAndLeaveNoFile) {
   }
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"eval", "--material", out}, "theta_i,theta_o,phi\n0,0,0\n"), 2,
                                    {out, "SCATFUN"}));
+}
+
+// docs/examples/pbrt-v3: its script, run from a copy of the folder with no pbrt on PATH, writes the file the scene
+// names, and the reader accepts it.
+TEST(ScatfunExample, TheScriptWritesTheFileThePbrtSceneNames) {
+  const fs::path copy = fs::temp_directory_path() / ("skinlayer_pbrt_example_" + std::to_string(::getpid()));
+  fs::remove_all(copy);
+  fs::copy(fs::path(SKINLAYER_EXAMPLES_DIR) / "pbrt-v3", copy);
+  std::ifstream scene_file(copy / "skin-sphere.pbrt");
+  const std::string scene((std::istreambuf_iterator<char>(scene_file)), std::istreambuf_iterator<char>());
+  const std::string named = "\"string bsdffile\" \"skin.bsdf\"";
+  EXPECT_NE(scene.find(named), std::string::npos) << "the scene reads skin.bsdf";
+  const ProcessResult run = run_process({"/usr/bin/env", "PATH=/usr/bin:/bin", "PBRT=/nonexistent/pbrt", "/bin/sh",
+                                         (copy / "render.sh").string(), SKINLAYER_EXECUTABLE});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("pbrt-v3 is not on PATH"), std::string::npos) << run.err;
+  const ScatfunFile file = read_scatfun(copy / "skin.bsdf");
+  EXPECT_EQ(file.n_channels, 3u) << "skin-fair's albedo is RGB";
+  fs::remove_all(copy);
 }
 
 }  // namespace
