@@ -216,8 +216,8 @@ std::string material_flags_usage() {
   std::string text =
       "Material flags (--name value or --name=value; an omitted flag takes its default, or the file's):\n"
       "  --material FILE\n"
-      "      start from a material file (JSON; see `skinlayer material`) or a PNG that skinlayer wrote (its\n"
-      "      material is stored in it); the flags below, given next to it, override its values.\n"
+      "      start from a material file (JSON; see `skinlayer material`), or a PNG or .bsdf that skinlayer\n"
+      "      wrote (its material is stored in it); the flags below, given next to it, override its values.\n"
       "  --preset NAME\n"
       "      start from a named preset (`skinlayer presets` lists them); not together with --material.\n";
   for (const ParameterInfo& info : parameter_table()) {

@@ -8,9 +8,9 @@
 //   mu_r > 0, mu_c > 0: light from above, transmitted to acos(mu_c) below                the material's f_t
 //   mu_r < 0, mu_c > 0: light from below, reflected back down                            the upside-down f_r
 //   mu_r < 0, mu_c < 0: light from below, transmitted out the top                        the upside-down f_t
-// (core/upside_down.h). Rows and columns at the doubled 0 are empty. A series ends at its last coefficient above
-// kScatfunTruncation times the sum of its |a_k| (every channel); coefficients below 1e-7 of the largest stored
-// value are dropped too. A negative Y a_0 (a table's undershoot at grazing) is written as 0.
+// (core/upside_down.h). Rows and columns at the doubled 0 are empty. A series ends at its last coefficient (in any
+// channel) above kScatfunTruncation times the sum of its |a_k| per channel; coefficients below 1e-7 of the largest
+// stored value are dropped too. A negative Y a_0 (a table's undershoot at grazing) is written as 0.
 #pragma once
 
 #include <functional>

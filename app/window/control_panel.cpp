@@ -53,6 +53,15 @@ void energy_readout(const SolveResult& shown, bool unicode) {
   ImGui::EndTable();
 }
 
+// A button that is disabled while `busy`, with its tooltip shown either way. True when pressed.
+bool export_button(const char* label, bool busy, const char* tooltip) {
+  ImGui::BeginDisabled(busy);
+  const bool pressed = ImGui::Button(label);
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", tooltip);
+  return pressed;
+}
+
 // Target and path on one line, then the Save and Export buttons with the last export's outcome (or the running
 // export's progress) beside them.
 bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool& export_bsdf, bool& export_merl) {
@@ -68,24 +77,15 @@ bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool
   const bool save = ImGui::Button("Save PNG (S)");
   ImGui::SameLine();
   const bool busy = !status.export_progress.empty() || status.shown == nullptr;
-  ImGui::BeginDisabled(busy);
-  export_bsdf = ImGui::Button("Export BSDF");
-  ImGui::EndDisabled();
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip(
-        "The shown material's whole BSDF (light from above and below, reflection and transmission, RGB)\n"
-        "as a tabulated Fourier BSDF for pbrt-v3's \"fourier\" material and layerlab, 1-3 MB;\n"
-        "to the path above with .bsdf (empty: timestamped).");
-  }
+  export_bsdf = export_button("Export BSDF", busy,
+                              "The shown material's whole BSDF (light from above and below, reflection and "
+                              "transmission, RGB)\nas a tabulated Fourier BSDF for pbrt-v3's \"fourier\" material and "
+                              "layerlab, 1-3 MB;\nto the path above with .bsdf (empty: timestamped).");
   ImGui::SameLine();
-  ImGui::BeginDisabled(busy);
-  export_merl = ImGui::Button("Export MERL");
-  ImGui::EndDisabled();
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-    ImGui::SetTooltip(
-        "The shown material's reflection (surface + subsurface, RGB) as a MERL BRDF table, 35 MB,\n"
-        "for BRDF viewers and fitting tools; to the path above with .binary (empty: timestamped).");
-  }
+  export_merl = export_button("Export MERL", busy,
+                              "The shown material's reflection (surface + subsurface, RGB) as a MERL BRDF table, 35 "
+                              "MB,\nfor BRDF viewers and fitting tools; to the path above with .binary (empty: "
+                              "timestamped).");
   const std::string& line = status.export_progress.empty() ? status.last_export : status.export_progress;
   if (!line.empty()) {
     ImGui::PushTextWrapPos(0.0f);
