@@ -27,7 +27,7 @@ int dispatch(std::span<const std::string_view> arguments, int argc, char** argv)
   const std::span<const std::string_view> rest = arguments.subspan(1);
   if (command == "eval") return run_eval_command(rest, std::cin, std::cout);
   if (command == "albedo") return run_albedo_command(rest, std::cout);
-  if (command == "render") return run_render_command(rest, std::cout);
+  if (command == "render") return run_render_command(rest, std::cout, std::cerr);
   if (command == "material") return run_material_command(rest, std::cout);
   if (command == "presets") return run_presets_command(rest, std::cout);
   if (command == "figures") return run_figures_command(rest, std::cout);

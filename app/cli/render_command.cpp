@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/environment_flags.h"
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
@@ -12,8 +13,10 @@
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/gl/osmesa_context.h"
+#include "app/material/atomic_file.h"
 #include "app/material/picture_metadata.h"
 #include "app/process/parallel_for.h"
+#include "app/render/hdr_export.h"
 #include "app/render/material_solve.h"
 #include "app/render/png_export.h"
 #include "app/render/render_target.h"
@@ -61,10 +64,11 @@ ViewKind parse_view(std::string_view text) {
 std::string render_usage() {
   return "Usage: skinlayer render [material flags] [--albedo A | r,g,b] [--model M] [--light-theta D] [--light-phi D]\n"
          "                        [--view sphere|polar|both] [--size WxH] [--exposure E] [--scale linear|log]\n"
-         "                        -o FILE.png\n"
+         "                        [--env E [--env-rotate DEG] [--env-ev EV] [--background B] [--samples N]]\n"
+         "                        [--light on|off] [--tonemap T] -o FILE.png|FILE.hdr\n"
          "\n"
          "Renders the previewer's picture offscreen (OSMesa, no display needed) with the same renderer as the\n"
-         "window and writes it as PNG.\n"
+         "window and writes it as PNG, or as linear radiance without a tone map (.hdr, --view sphere).\n"
          "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in [0, 1] (default 1)\n"
          "  --model M            subsurface model: stam (default), lambert or hk (Hanrahan-Krueger)\n"
          "  --light-theta D      light angle from the view direction, degrees in [0, 89.9] (default 45)\n"
@@ -74,14 +78,14 @@ std::string render_usage() {
          "  --size WxH           pixels (default 1024x512 for both, 1200x400 for compare, 512x512 otherwise)\n"
          "  --exposure E         linear exposure before the exponential tone map, in (0, 1000] (default 1)\n"
          "  --scale S            lobe radius linear or log (3 decades) (default linear)\n"
-         "  -o, --output FILE    the PNG to write (required)\n"
-         "\n" +
-         material_flags_usage();
+         "  -o, --output FILE    the picture to write (required): .png, or .hdr for linear radiance\n" +
+         lighting_flags_usage() + "\n" + material_flags_usage();
 }
 
-int run_render_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  const std::vector<std::string_view> known =
+int run_render_command(std::span<const std::string_view> arguments, std::ostream& out, std::ostream& progress) {
+  std::vector<std::string_view> known =
       material_flags_and({kModelFlag, "light-theta", "light-phi", "view", "size", "exposure", "scale", "output"});
+  for (std::string_view name : lighting_flag_names()) known.push_back(name);
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer render");
   const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
   ColorMaterial material = color_material(document);
@@ -98,6 +102,17 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
   const double exposure = number_in(flags, "exposure", 1.0, 1e-6, 1000.0, "");
   const std::string_view scale = flags.value("scale").value_or("linear");
   if (scale != "linear" && scale != "log") throw UsageError("scale = " + quoted(scale) + " is not linear or log");
+  const LightingFlags lighting = lighting_from_flags(flags);
+  const bool hdr = output->ends_with(".hdr");
+  if (hdr && view != ViewKind::Sphere) {
+    throw UsageError("a .hdr picture holds the sphere's linear radiance: give --view sphere");
+  }
+  if (lighting.environment && view == ViewKind::Compare) {
+    throw UsageError("--env with --view compare is not supported: the three spheres would need three estimates");
+  }
+  // The environment is read before the solve, so that a bad file is found at once.
+  const std::optional<EnvironmentMap> environment =
+      lighting.environment ? std::optional<EnvironmentMap>(load_environment(*lighting.environment)) : std::nullopt;
 
   SolveOptions solve_options;  // the RGB channels side by side
   solve_options.parallel_for = parallel_for_threads;
@@ -114,20 +129,55 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
       renderer.upload(make_table_textures(solved), kCompareSlots[k]);
     }
   }
-  const Scene scene = make_scene(tables, view, light_theta, light_phi, exposure, scale == "log");
-  RenderTarget target(width, height, PixelFormat::Rgba8);
+  Scene scene = make_scene(tables, view, light_theta, light_phi, exposure, scale == "log");
+  scene.sphere.tone_map = lighting.tone_map;
+  scene.sphere.linear_output = hdr;
+  if (!lighting.directional_light) scene.sphere.irradiance = 0.0;
+  std::optional<EnvironmentAccumulation> accumulation;
+  if (environment) {
+    renderer.upload_environment(*environment);
+    scene.sphere.environment = lighting.view;
+    const Viewport sphere = scene_viewports(view, width, height).front();
+    accumulation.emplace(sphere.width, sphere.height);
+    constexpr int kPerPass = 8;  // a pass of 512 x 512 at 8 samples: ~0.1-0.2 s under llvmpipe
+    int reported = 0;
+    while (accumulation->samples() < lighting.samples) {
+      renderer.accumulate_environment(*accumulation, lighting.view, scene.surface,
+                                      std::min(kPerPass, lighting.samples - accumulation->samples()));
+      glFinish();
+      const int tenths = 10 * accumulation->samples() / lighting.samples;
+      if (tenths > reported) {
+        reported = tenths;
+        progress << "render: " << accumulation->samples() << " of " << lighting.samples << " samples per pixel\n"
+                 << std::flush;
+      }
+    }
+  }
+  RenderTarget target(width, height, hdr ? PixelFormat::Rgba32F : PixelFormat::Rgba8);
   target.bind();
-  draw_scene(renderer, scene, width, height);
+  draw_scene(renderer, scene, width, height, accumulation ? &*accumulation : nullptr);
   RenderTarget::unbind();
+  if (hdr) {
+    write_file_atomically(std::string(*output), encode_hdr(width, height, target.read_rgba32f()));
+    out << "wrote " << *output << " (" << width << "x" << height << ", linear radiance)\n";
+    return kExitSuccess;
+  }
   MaterialDocument drawn = document;
   drawn.model = material.model;
-  const nlohmann::ordered_json settings = {{"command", "render"},
-                                           {"view", std::string(flags.value("view").value_or("both"))},
-                                           {"size", {width, height}},
-                                           {"light_theta", radians_to_degrees(light_theta)},
-                                           {"light_phi", radians_to_degrees(light_phi)},
-                                           {"exposure", exposure},
-                                           {"scale", std::string(scale)}};
+  nlohmann::ordered_json settings = {{"command", "render"},
+                                     {"view", std::string(flags.value("view").value_or("both"))},
+                                     {"size", {width, height}},
+                                     {"light_theta", radians_to_degrees(light_theta)},
+                                     {"light_phi", radians_to_degrees(light_phi)},
+                                     {"exposure", exposure},
+                                     {"scale", std::string(scale)}};
+  if (lighting.environment) {
+    settings["environment"] = {{"source", *lighting.environment},
+                               {"rotate", radians_to_degrees(lighting.view.rotation)},
+                               {"ev", std::log2(lighting.view.scale)},
+                               {"samples", lighting.samples},
+                               {"light", lighting.directional_light}};
+  }
   write_png(Image{width, height, target.read_rgba8()}, std::string(*output), {picture_metadata(drawn, settings)});
   out << "wrote " << *output << " (" << width << "x" << height << ")\n";
   return kExitSuccess;

@@ -9,7 +9,7 @@
 
 namespace skinlayer::cli {
 
-int run_render_command(std::span<const std::string_view> arguments, std::ostream& out);
+int run_render_command(std::span<const std::string_view> arguments, std::ostream& out, std::ostream& progress);
 std::string render_usage();
 
 }  // namespace skinlayer::cli

@@ -18,6 +18,7 @@ class RenderTarget {
   int width() const { return width_; }
   int height() const { return height_; }
   void bind() const;  // binds it for drawing
+  GLuint color_texture() const { return color_.get(); }
   static void unbind();
 
   std::vector<std::uint8_t> read_rgba8() const;  // width * height * 4, top row first

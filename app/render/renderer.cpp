@@ -11,16 +11,15 @@
 namespace skinlayer {
 namespace {
 
-// Every program: the version line, then the table layout, the GLSL twins of core, the table lookups, the stage.
-gl::Program build(std::string_view fragment) {
+// Every program: the version line, then the table layout, the GLSL twins of core, the table lookups, the sphere's
+// environment and shading where it draws the sphere, the stage.
+gl::Program build(std::string_view fragment, bool sphere) {
   const std::string_view version = shader_source("version.glsl");
   const std::vector<std::string_view> vertex = {version, shader_source("fullscreen.vert")};
-  const std::vector<std::string_view> pieces = {version,
-                                                shader_source("table_layout.h"),
-                                                shader_source("common.glsl"),
-                                                shader_source("tables.glsl"),
-                                                shader_source("unscattered.glsl"),
-                                                shader_source(fragment)};
+  std::vector<std::string_view> pieces = {version, shader_source("table_layout.h"), shader_source("common.glsl"),
+                                          shader_source("tables.glsl"), shader_source("unscattered.glsl")};
+  if (sphere) pieces.insert(pieces.end(), {shader_source("environment.glsl"), shader_source("shading.glsl")});
+  pieces.push_back(shader_source(fragment));
   return gl::link_program(vertex, pieces);
 }
 
@@ -52,6 +51,29 @@ void bind_refilled_2d(GLuint program, const char* name, int unit, GLuint texture
   glUniform1i(location(program, name), unit);
 }
 
+// A float texture of one channel (R32F) or three (RGB32F), nearest-filtered unless `mipmapped` (then trilinear and
+// wrapping in u, for the environment map).
+void upload_float_texture(GLuint texture, int width, int height, int channels, const float* texels,
+                          bool mipmapped = false) {
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, channels == 1 ? GL_R32F : GL_RGB32F, width, height, 0, channels == 1 ? GL_RED : GL_RGB,
+               GL_FLOAT, texels);
+  if (mipmapped) {
+    glGenerateMipmap(GL_TEXTURE_2D);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  } else {
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
 }  // namespace
 
 std::array<double, 2> view_extent(const Viewport& viewport, double margin) {
@@ -59,9 +81,18 @@ std::array<double, 2> view_extent(const Viewport& viewport, double margin) {
   return {margin * viewport.width / shorter, margin * viewport.height / shorter};
 }
 
+void EnvironmentAccumulation::clear() {
+  target_.bind();
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  RenderTarget::unbind();
+  samples_ = 0;
+}
+
 Renderer::Renderer()
-    : sphere_(build("sphere.frag")),
-      lobe_(build("lobe.frag")),
+    : sphere_(build("sphere.frag", true)),
+      lobe_(build("lobe.frag", false)),
+      accumulate_(build("env_accumulate.frag", true)),
       unscattered_plane_(gl::create_texture()),
       lobe_profile_(gl::create_texture()),
       vertex_array_(gl::create_vertex_array()) {
@@ -71,7 +102,53 @@ Renderer::Renderer()
     slots_[slot].transmission = gl::create_texture();
     upload(empty, slot);
   }
+  environment_ = {gl::create_texture(), gl::create_texture(), gl::create_texture(), gl::create_texture()};
+  upload_environment(*builtin_environment("furnace"));
   gl::check_errors("Renderer()");
+}
+
+void Renderer::upload_environment(const EnvironmentMap& map) {
+  const EnvironmentDistribution distribution = environment_distribution(map);
+  upload_float_texture(environment_.radiance.get(), map.width, map.height, 3, map.rgb.data(), true);
+  upload_float_texture(environment_.density.get(), map.width, map.height, 1, distribution.density.data());
+  upload_float_texture(environment_.marginal.get(), map.height + 1, 1, 1, distribution.marginal.data());
+  upload_float_texture(environment_.conditional.get(), map.width + 1, map.height, 1, distribution.conditional.data());
+  gl::check_errors("Renderer::upload_environment");
+}
+
+// The environment's textures on units 4-7 and its uniforms.
+void Renderer::bind_environment(GLuint program, const EnvironmentView& environment) const {
+  const std::array<std::pair<const char*, GLuint>, 4> textures = {
+      std::pair{"u_env", environment_.radiance.get()}, std::pair{"u_env_density", environment_.density.get()},
+      std::pair{"u_env_marginal", environment_.marginal.get()},
+      std::pair{"u_env_conditional", environment_.conditional.get()}};
+  for (std::size_t k = 0; k < textures.size(); ++k) {
+    glActiveTexture(GL_TEXTURE4 + static_cast<GLenum>(k));
+    glBindTexture(GL_TEXTURE_2D, textures[k].second);
+    glUniform1i(location(program, textures[k].first), 4 + static_cast<int>(k));
+  }
+  glActiveTexture(GL_TEXTURE0);
+  glUniform1f(location(program, "u_env_scale"), static_cast<float>(environment.scale));
+  glUniform1f(location(program, "u_env_rotation"), static_cast<float>(environment.rotation));
+}
+
+void Renderer::accumulate_environment(EnvironmentAccumulation& accumulation, const EnvironmentView& environment,
+                                      const SurfaceParams& surface, int samples, int slot) const {
+  const RenderTarget& target = accumulation.target_;
+  target.bind();
+  const GLuint program =
+      begin_view(accumulate_.get(), surface, Viewport{0, 0, target.width(), target.height()}, kSphereMargin, slot);
+  bind_environment(program, environment);
+  glUniform1i(location(program, "u_samples"), samples);
+  glUniform1ui(location(program, "u_seed"), ++accumulation.passes_);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glBindVertexArray(vertex_array_.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDisable(GL_BLEND);
+  RenderTarget::unbind();
+  accumulation.samples_ += samples;
+  gl::check_errors("Renderer::accumulate_environment");
 }
 
 void Renderer::upload(TableTextureData tables, int slot) {
@@ -111,9 +188,25 @@ GLuint Renderer::begin_view(GLuint program, const SurfaceParams& surface, const 
   return program;
 }
 
-void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport,
-                           int slot) const {
+void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport, int slot,
+                           const EnvironmentAccumulation* environment) const {
   const GLuint program = begin_view(sphere_.get(), surface, viewport, kSphereMargin, slot);
+  glUniform1i(location(program, "u_tonemap"), static_cast<int>(view.tone_map));
+  glUniform1i(location(program, "u_environment"), view.environment && environment ? 1 : 0);
+  glUniform1i(location(program, "u_env_background"),
+              view.environment ? static_cast<int>(view.environment->background) : 0);
+  // Every sampler on a unit of its own, used or not (two sampler types on one unit fail the draw).
+  bind_environment(program, view.environment.value_or(EnvironmentView{}));
+  glActiveTexture(GL_TEXTURE8);
+  glBindTexture(GL_TEXTURE_2D, environment ? environment->target().color_texture() : environment_.density.get());
+  if (environment) {
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  }
+  glUniform1i(location(program, "u_accumulation"), 8);
+  glActiveTexture(GL_TEXTURE0);
   glUniform3f(location(program, "u_light"), static_cast<float>(view.light[0]), static_cast<float>(view.light[1]),
               static_cast<float>(view.light[2]));
   glUniform1f(location(program, "u_irradiance"), static_cast<float>(view.irradiance));

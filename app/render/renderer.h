@@ -4,8 +4,11 @@
 #pragma once
 
 #include <array>
+#include <optional>
 
 #include "app/gl/gl_objects.h"
+#include "app/render/environment_map.h"
+#include "app/render/render_target.h"
 #include "app/render/table_textures.h"
 #include "app/render/unscattered_plane.h"
 
@@ -23,11 +26,40 @@ struct SurfaceParams {
   double sigma = 0.5;
 };
 
+enum class ToneMap { Exponential, Aces, None };  // 1 - e^{-x}; ACES (Narkowicz 2015); clamped
+enum class EnvironmentBackground { Hide, Show, Blur };
+
+// How the uploaded environment (Renderer::upload_environment) lights the sphere.
+struct EnvironmentView {
+  double rotation = 0.0;  // radians about +y (the camera's up)
+  double scale = 1.0;     // 2^EV
+  EnvironmentBackground background = EnvironmentBackground::Show;
+};
+
 struct SphereView {
   std::array<double, 3> light = {0.0, 0.0, 1.0};  // unit vector toward the light; camera frame, +z toward viewer
-  double irradiance = 3.141592653589793;          // E on a plane normal to the beam (pi: white Lambert -> cos)
-  double exposure = 1.0;                          // linear multiplier before the exponential tone map
+  double irradiance = 3.141592653589793;          // E on a plane normal to the beam (pi: white Lambert -> cos); 0 off
+  double exposure = 1.0;                          // linear multiplier before the tone map
+  ToneMap tone_map = ToneMap::Exponential;
   bool linear_output = false;                     // write linear radiance (float targets, tests)
+  std::optional<EnvironmentView> environment;     // set: add the environment's estimate and show its background
+};
+
+// The progressive estimate of the sphere's radiance under an environment (shaders/env_accumulate.frag): a float
+// target over the sphere's view holding the sum of estimates (RGB) and their count (A). Its size may be below the
+// view's (the previewer's quick look); the display filters it bilinearly. Clear it whenever anything drawn changes.
+class EnvironmentAccumulation {
+ public:
+  EnvironmentAccumulation(int width, int height) : target_(width, height, PixelFormat::Rgba32F) { clear(); }
+  void clear();
+  int samples() const { return samples_; }
+  const RenderTarget& target() const { return target_; }
+
+ private:
+  friend class Renderer;
+  RenderTarget target_;
+  int samples_ = 0;  // per pixel so far
+  unsigned passes_ = 0;
 };
 
 struct LobeView {
@@ -52,7 +84,17 @@ class Renderer {
   // Keeps the data too: the lobe plot sums its in-plane profile from it (app/render/lobe_profile.h).
   void upload(TableTextureData tables, int slot = 0);
 
-  void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0) const;
+  // The environment that EnvironmentView lights with: its map (mipmapped, for the blurred background) and its
+  // luminance distribution. Throws std::runtime_error for a black one.
+  void upload_environment(const EnvironmentMap& map);
+  // Adds `samples` estimates per pixel (3 directions each) to the accumulation, for the table slot's material; the
+  // accumulation covers a view of the sphere with the given aspect. Leaves the default framebuffer bound.
+  void accumulate_environment(EnvironmentAccumulation& accumulation, const EnvironmentView& environment,
+                              const SurfaceParams& surface, int samples, int slot = 0) const;
+
+  // With view.environment set, `environment` is the accumulation to show (null: none yet).
+  void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0,
+                   const EnvironmentAccumulation* environment = nullptr) const;
   void draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0) const;
 
   static constexpr double kSphereMargin = 1.08;
@@ -70,8 +112,15 @@ class Renderer {
   GLuint begin_view(GLuint program, const SurfaceParams& surface, const Viewport& viewport, double margin,
                     int slot) const;
 
+  void bind_environment(GLuint program, const EnvironmentView& environment) const;
+
   gl::Program sphere_;
   gl::Program lobe_;
+  gl::Program accumulate_;
+  struct EnvironmentTextures {
+    gl::Texture radiance, density, marginal, conditional;
+  };
+  EnvironmentTextures environment_;
   gl::Texture unscattered_plane_;  // the lobe plot's in-plane unscattered BTDF, refilled by every draw_lobes
   gl::Texture lobe_profile_;       // the lobe plot's in-plane subsurface profile, refilled by every draw_lobes
   gl::VertexArray vertex_array_;

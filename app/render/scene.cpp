@@ -84,16 +84,17 @@ std::vector<Viewport> scene_viewports(ViewKind view, int width, int height) {
   return {{0, 0, half, height}, {half, 0, width - half, height}};
 }
 
-void draw_scene(const Renderer& renderer, const Scene& scene, int width, int height) {
+void draw_scene(const Renderer& renderer, const Scene& scene, int width, int height,
+                const EnvironmentAccumulation* environment) {
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
   glClearColor(0.02f, 0.02f, 0.025f, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   const std::vector<Viewport> viewports = scene_viewports(scene.view, width, height);
-  if (scene.view == ViewKind::Sphere) renderer.draw_sphere(scene.sphere, scene.surface, viewports[0]);
+  if (scene.view == ViewKind::Sphere) renderer.draw_sphere(scene.sphere, scene.surface, viewports[0], 0, environment);
   if (scene.view == ViewKind::Polar) renderer.draw_lobes(scene.lobes, scene.surface, viewports[0]);
   if (scene.view == ViewKind::Both) {
-    renderer.draw_sphere(scene.sphere, scene.surface, viewports[0]);
+    renderer.draw_sphere(scene.sphere, scene.surface, viewports[0], 0, environment);
     renderer.draw_lobes(scene.lobes, scene.surface, viewports[1]);
   }
   if (scene.view == ViewKind::Compare) {

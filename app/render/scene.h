@@ -45,7 +45,9 @@ Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, d
 // columns for Compare).
 std::vector<Viewport> scene_viewports(ViewKind view, int width, int height);
 
-// Clears the bound framebuffer and draws every view of the scene.
-void draw_scene(const Renderer& renderer, const Scene& scene, int width, int height);
+// Clears the bound framebuffer and draws every view of the scene; `environment`: the sphere's estimate under
+// scene.sphere.environment (Renderer::accumulate_environment), if any.
+void draw_scene(const Renderer& renderer, const Scene& scene, int width, int height,
+                const EnvironmentAccumulation* environment = nullptr);
 
 }  // namespace skinlayer

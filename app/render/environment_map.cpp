@@ -1,0 +1,169 @@
+#include "app/render/environment_map.h"
+
+#include <stb_image.h>  // libstb.so holds the implementation
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <stdexcept>
+
+namespace skinlayer {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// Rec. 709 luminance of linear RGB.
+double luminance(const float* rgb) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
+
+// A map whose texel values are radiance(direction at the texel centre).
+template <class Radiance>
+EnvironmentMap procedural(int width, int height, const Radiance& radiance) {
+  EnvironmentMap map{width, height, std::vector<float>(static_cast<std::size_t>(width) * height * 3)};
+  for (int j = 0; j < height; ++j) {
+    for (int i = 0; i < width; ++i) {
+      const std::array<double, 3> rgb = radiance(environment_direction((i + 0.5) / width, (j + 0.5) / height));
+      for (int c = 0; c < 3; ++c)
+        map.rgb[(static_cast<std::size_t>(j) * width + i) * 3 + c] = static_cast<float>(rgb[c]);
+    }
+  }
+  return map;
+}
+
+double smoothstep(double edge0, double edge1, double x) {
+  const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// A soft-edged rectangle light: 1 inside |a| < half_a, |b| < half_b (the direction's coordinates on a plane, in
+// units of its distance), falling off over `soft`.
+double soft_rectangle(double a, double b, double half_a, double half_b, double soft) {
+  return (1.0 - smoothstep(half_a, half_a + soft, std::abs(a))) *
+         (1.0 - smoothstep(half_b, half_b + soft, std::abs(b)));
+}
+
+EnvironmentMap studio() {
+  return procedural(512, 256, [](const std::array<double, 3>& d) {
+    const double up = d[1];
+    // A dim gradient: 0.03 at the floor to 0.12 overhead.
+    const double base = 0.03 + 0.09 * smoothstep(-1.0, 1.0, up);
+    double light = 0.0;
+    // The overhead softbox, a 1.2 x 0.8 rectangle one unit above, tilted toward the viewer: radiance 6.
+    if (up > 0.2) light += 6.0 * soft_rectangle(d[0] / up, (d[2] - 0.3 * up) / up, 0.6, 0.4, 0.05);
+    // Two strip lights left and right, tall and narrow, facing the sphere: radiance 4.
+    for (const double side : {-1.0, 1.0}) {
+      const double x = side * d[0];
+      if (x > 0.2) light += 4.0 * soft_rectangle(d[2] / x, d[1] / x, 0.12, 0.9, 0.03);
+    }
+    const double total = base + light;
+    return std::array<double, 3>{total, total, total * 1.02};
+  });
+}
+
+EnvironmentMap sky() {
+  // The sun 35 degrees above the horizon, to the upper left and slightly behind the sphere: a disk 1.5 degrees in
+  // radius (wider than the real sun's 0.27, so that a 1024 x 512 map holds it in some 40 texels).
+  const double elevation = 35.0 * kPi / 180.0, azimuth = -2.2;
+  const std::array<double, 3> sun = {std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                                     std::cos(elevation) * std::cos(azimuth)};
+  return procedural(1024, 512, [sun](const std::array<double, 3>& d) {
+    const double up = d[1];
+    const double cos_sun = d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2];
+    std::array<double, 3> rgb;
+    if (up >= 0.0) {  // the sky: deep blue overhead, pale at the horizon, brighter around the sun
+      const double h = std::pow(1.0 - up, 3.0);
+      const double glow = 0.6 * std::pow(std::max(0.0, cos_sun), 32.0);
+      rgb = {0.18 + 0.5 * h + glow, 0.32 + 0.45 * h + glow * 0.9, 0.7 + 0.25 * h + glow * 0.7};
+    } else {  // the ground: a warm grey, darker straight down
+      const double g = 0.12 + 0.08 * (1.0 + up);
+      rgb = {g * 1.05, g, g * 0.9};
+    }
+    // The sun's disk: radiance 1400 over 2.15e-3 sr, an irradiance of about 3 (a white Lambertian plane under it: 1).
+    if (cos_sun > std::cos(1.5 * kPi / 180.0)) rgb = {1400.0, 1350.0, 1250.0};
+    return rgb;
+  });
+}
+
+}  // namespace
+
+std::array<double, 3> environment_direction(double u, double v) {
+  const double theta = kPi * v, phi = 2.0 * kPi * u;
+  return {std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi)};
+}
+
+std::array<double, 2> environment_coordinates(const std::array<double, 3>& d) {
+  double u = std::atan2(d[0], d[2]) / (2.0 * kPi);
+  if (u < 0.0) u += 1.0;
+  return {u, std::acos(std::clamp(d[1], -1.0, 1.0)) / kPi};
+}
+
+std::optional<EnvironmentMap> builtin_environment(std::string_view name) {
+  if (name == "furnace") return EnvironmentMap{64, 32, std::vector<float>(64 * 32 * 3, 1.0f)};
+  if (name == "studio") return studio();
+  if (name == "sky") return sky();
+  return std::nullopt;
+}
+
+EnvironmentMap read_hdr_environment(const std::string& path) {
+  if (!stbi_is_hdr(path.c_str())) {
+    const char* reason = stbi_failure_reason();
+    throw std::runtime_error("cannot read " + path + " as an environment: not a Radiance .hdr image" +
+                             (reason ? std::string(" (") + reason + ")" : std::string()));
+  }
+  int width = 0, height = 0, channels = 0;
+  const std::unique_ptr<float, void (*)(void*)> pixels(stbi_loadf(path.c_str(), &width, &height, &channels, 3),
+                                                       stbi_image_free);
+  if (!pixels) {
+    const char* reason = stbi_failure_reason();
+    throw std::runtime_error("cannot read " + path + ": " + (reason ? reason : "stb_image failed"));
+  }
+  if (std::abs(width - 2 * height) > 1) {
+    throw std::runtime_error("cannot use " + path + " as an environment: " + std::to_string(width) + "x" +
+                             std::to_string(height) + " is not equirectangular (width must be twice the height)");
+  }
+  EnvironmentMap map{width, height, std::vector<float>(pixels.get(), pixels.get() + std::size_t{3} * width * height)};
+  for (float& value : map.rgb) {
+    if (!std::isfinite(value) || value < 0.0f) value = 0.0f;
+  }
+  return map;
+}
+
+EnvironmentDistribution environment_distribution(const EnvironmentMap& map) {
+  const int w = map.width, h = map.height;
+  EnvironmentDistribution d;
+  d.density.resize(static_cast<std::size_t>(w) * h);
+  d.marginal.assign(h + 1, 0.0f);
+  d.conditional.assign(static_cast<std::size_t>(h) * (w + 1), 0.0f);
+  std::vector<double> row_sum(h, 0.0);
+  double total = 0.0;
+  for (int j = 0; j < h; ++j) {
+    const double sin_theta = std::sin(kPi * (j + 0.5) / h);
+    double running = 0.0;
+    for (int i = 0; i < w; ++i) {
+      const double weight = luminance(&map.rgb[(static_cast<std::size_t>(j) * w + i) * 3]) * sin_theta;
+      d.density[static_cast<std::size_t>(j) * w + i] = static_cast<float>(weight);
+      running += weight;
+      d.conditional[static_cast<std::size_t>(j) * (w + 1) + i + 1] = static_cast<float>(running);
+    }
+    row_sum[j] = running;
+    total += running;
+  }
+  if (!(total > 0.0)) throw std::runtime_error("the environment is black: nothing to light the sphere with");
+  // Density over (u, v): weight / (total * du dv).
+  const double cells = static_cast<double>(w) * h;
+  for (float& value : d.density) value = static_cast<float>(value * cells / total);
+  double running = 0.0;
+  for (int j = 0; j < h; ++j) {
+    for (int i = 1; i <= w; ++i) {
+      float& c = d.conditional[static_cast<std::size_t>(j) * (w + 1) + i];
+      c = row_sum[j] > 0.0 ? static_cast<float>(c / row_sum[j]) : static_cast<float>(static_cast<double>(i) / w);
+    }
+    running += row_sum[j];
+    d.marginal[j + 1] = static_cast<float>(running / total);
+  }
+  d.marginal[h] = 1.0f;
+  return d;
+}
+
+}  // namespace skinlayer
