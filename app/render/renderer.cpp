@@ -140,7 +140,8 @@ void Renderer::accumulate_environment(EnvironmentAccumulation& accumulation, con
       begin_view(accumulate_.get(), surface, Viewport{0, 0, target.width(), target.height()}, kSphereMargin, slot);
   bind_environment(program, environment);
   glUniform1i(location(program, "u_samples"), samples);
-  glUniform1ui(location(program, "u_seed"), ++accumulation.passes_);
+  glUniform1i(location(program, "u_first_sample"), accumulation.samples_);
+  glUniform1ui(location(program, "u_seed"), accumulation.seed_);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   glBindVertexArray(vertex_array_.get());

@@ -50,7 +50,11 @@ struct SphereView {
 // view's (the previewer's quick look); the display filters it bilinearly. Clear it whenever anything drawn changes.
 class EnvironmentAccumulation {
  public:
-  EnvironmentAccumulation(int width, int height) : target_(width, height, PixelFormat::Rgba32F) { clear(); }
+  // `seed` separates the random streams (the per-pixel shifts of the sample sequence) of accumulations.
+  EnvironmentAccumulation(int width, int height, unsigned seed = 0)
+      : target_(width, height, PixelFormat::Rgba32F), seed_(seed) {
+    clear();
+  }
   void clear();
   int samples() const { return samples_; }
   const RenderTarget& target() const { return target_; }
@@ -58,8 +62,8 @@ class EnvironmentAccumulation {
  private:
   friend class Renderer;
   RenderTarget target_;
-  int samples_ = 0;  // per pixel so far
-  unsigned passes_ = 0;
+  int samples_ = 0;  // per pixel so far: the next pass starts at this index of the sequence
+  unsigned seed_ = 0;
 };
 
 struct LobeView {
