@@ -1,6 +1,7 @@
 #include "app/preview/params_ui.h"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <array>
@@ -362,6 +363,67 @@ bool view_controls(ViewOptions& view) {
   ImGui::SetNextItemWidth(-1.0f);
   if (ImGui::Combo("##view", &kind, kViews.data(), static_cast<int>(kViews.size()))) {
     view.view = static_cast<ViewKind>(kind);
+    changed = true;
+  }
+  return changed;
+}
+
+// A labelled combo of the row layout; returns true when the choice changed.
+bool combo_row(const char* label, int& index, const char* const* items, int count) {
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted(label);
+  ImGui::SameLine(label_column());
+  ImGui::SetNextItemWidth(-1.0f);
+  return ImGui::Combo((std::string("##") + label).c_str(), &index, items, count);
+}
+
+bool lighting_controls(LightingState& lighting, int samples) {
+  bool changed = false;
+  constexpr std::array<const char*, 5> kSources = {"none", "furnace", "studio", "sky", "file (.hdr)"};
+  int source = 0;
+  for (int k = 1; k < 4; ++k) {
+    if (lighting.environment == kSources[k]) source = k;
+  }
+  if (source == 0 && !lighting.environment.empty()) source = 4;
+  const int before = source;
+  if (combo_row("env", source, kSources.data(), static_cast<int>(kSources.size())) && source != before) {
+    if (source == 0) lighting.environment.clear();
+    if (source >= 1 && source <= 3) lighting.environment = kSources[source];
+    if (source == 4 && !lighting.typed_path.empty()) lighting.environment = lighting.typed_path;
+    changed = true;
+  }
+  // The .hdr file: a typed path, opened by Load (or by choosing "file" above).
+  ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Load .hdr").x -
+                          3.0f * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().ItemSpacing.x);
+  ImGui::InputTextWithHint("##hdr", "equirectangular .hdr path", &lighting.typed_path);
+  ImGui::SameLine();
+  if (ImGui::Button("Load .hdr") && !lighting.typed_path.empty()) {
+    lighting.environment = lighting.typed_path;
+    changed = true;
+  }
+  if (lighting.environment.empty()) {
+    changed |= ImGui::Checkbox("directional light", &lighting.directional);
+  } else {
+    changed |= slider_row(
+        SliderSpec{"rotate", "the environment turned about the vertical, degrees", -180.0, 180.0, 0.0, "%.0f°"},
+        lighting.rotate_degrees);
+    changed |= slider_row(
+        SliderSpec{"env EV", "the environment's radiance scaled by 2^EV", kMinStops, kMaxStops, 0.0, "%+.1f EV"},
+        lighting.ev);
+    constexpr std::array<const char*, 3> kBackgrounds = {"hidden", "shown", "blurred"};
+    int background = static_cast<int>(lighting.background);
+    if (combo_row("backdrop", background, kBackgrounds.data(), static_cast<int>(kBackgrounds.size()))) {
+      lighting.background = static_cast<EnvironmentBackground>(background);
+      changed = true;
+    }
+    changed |= ImGui::Checkbox("directional light too", &lighting.directional);
+    ImGui::SameLine();
+    ImGui::TextDisabled("%d samples per pixel", samples);
+  }
+  constexpr std::array<const char*, 3> kToneMaps = {"exponential", "ACES", "none (clamp)"};
+  int tone_map = static_cast<int>(lighting.tone_map);
+  if (combo_row("tone map", tone_map, kToneMaps.data(), static_cast<int>(kToneMaps.size()))) {
+    lighting.tone_map = static_cast<ToneMap>(tone_map);
     changed = true;
   }
   return changed;

@@ -18,5 +18,8 @@ namespace skinlayer {
 bool material_controls(ColorMaterial& material, bool unicode);
 bool light_controls(LightState& light, bool unicode);
 bool view_controls(ViewOptions& view);
+// The environment (none, a built-in, or a typed .hdr path loaded by its button), its rotation, EV and background,
+// the directional light's switch and the tone map. `samples`: the estimate's samples per pixel so far (shown).
+bool lighting_controls(LightingState& lighting, int samples);
 
 }  // namespace skinlayer

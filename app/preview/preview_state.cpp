@@ -33,4 +33,8 @@ SolveRequest solve_request(const PreviewState& state) {
 
 double exposure_multiplier(const ViewOptions& view) { return std::exp2(view.exposure_stops); }
 
+EnvironmentView LightingState::view() const {
+  return EnvironmentView{degrees_to_radians(rotate_degrees), std::exp2(ev), background};
+}
+
 }  // namespace skinlayer

@@ -21,6 +21,21 @@ struct LightState {
   double phi_degrees = 180.0;   // azimuth in the picture plane, in [-180, 180]; 180 = light from the left
 };
 
+// How the sphere is lit (app/render/renderer.h): the directional light, an environment, or both.
+struct LightingState {
+  std::string environment;      // empty: none; "furnace", "studio", "sky", or a .hdr path
+  double rotate_degrees = 0.0;  // about the vertical, in [-180, 180]
+  double ev = 0.0;              // radiance x 2^EV, in [kMinStops, kMaxStops]
+  EnvironmentBackground background = EnvironmentBackground::Show;
+  bool directional = true;  // the directional light too
+  ToneMap tone_map = ToneMap::Exponential;
+  std::string typed_path;  // the panel's .hdr path field (what Load would open)
+  bool operator==(const LightingState&) const = default;
+
+  // The renderer's view of the environment.
+  EnvironmentView view() const;
+};
+
 struct ViewOptions {
   ViewKind view = ViewKind::Both;  // which views share the picture area
   bool log_lobes = false;          // lobe radius: linear in the BSDF, or log over LobeView::decades decades
@@ -42,6 +57,7 @@ struct PreviewState {
   LightState light;
   ViewOptions view;
   ExportOptions export_options;
+  LightingState lighting;
   bool show_help = false;  // the F1 overlay
 };
 

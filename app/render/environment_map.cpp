@@ -36,26 +36,37 @@ double smoothstep(double edge0, double edge1, double x) {
   return t * t * (3.0 - 2.0 * t);
 }
 
-// A soft-edged rectangle light: 1 inside |a| < half_a, |b| < half_b (the direction's coordinates on a plane, in
-// units of its distance), falling off over `soft`.
-double soft_rectangle(double a, double b, double half_a, double half_b, double soft) {
-  return (1.0 - smoothstep(half_a, half_a + soft, std::abs(a))) *
-         (1.0 - smoothstep(half_b, half_b + soft, std::abs(b)));
+// A soft-edged rectangle light facing the origin: centred on the unit direction `centre`, `half_width` wide along
+// `across` (perpendicular to it) and `half_height` along their cross product, in units of its distance, its edges
+// falling off over `soft`. 1 inside, 0 outside.
+double rectangle_light(const std::array<double, 3>& d, const std::array<double, 3>& centre,
+                       const std::array<double, 3>& across, double half_width, double half_height, double soft) {
+  const double t = d[0] * centre[0] + d[1] * centre[1] + d[2] * centre[2];
+  if (t <= 0.1) return 0.0;
+  const std::array<double, 3> up = {centre[1] * across[2] - centre[2] * across[1],
+                                    centre[2] * across[0] - centre[0] * across[2],
+                                    centre[0] * across[1] - centre[1] * across[0]};
+  const double a = (d[0] * across[0] + d[1] * across[1] + d[2] * across[2]) / t;
+  const double b = (d[0] * up[0] + d[1] * up[1] + d[2] * up[2]) / t;
+  return (1.0 - smoothstep(half_width, half_width + soft, std::abs(a))) *
+         (1.0 - smoothstep(half_height, half_height + soft, std::abs(b)));
+}
+
+std::array<double, 3> unit(double x, double y, double z) {
+  const double n = std::sqrt(x * x + y * y + z * z);
+  return {x / n, y / n, z / n};
 }
 
 EnvironmentMap studio() {
-  return procedural(512, 256, [](const std::array<double, 3>& d) {
-    const double up = d[1];
-    // A dim gradient: 0.03 at the floor to 0.12 overhead.
-    const double base = 0.03 + 0.09 * smoothstep(-1.0, 1.0, up);
-    double light = 0.0;
-    // The overhead softbox, a 1.2 x 0.8 rectangle one unit above, tilted toward the viewer: radiance 6.
-    if (up > 0.2) light += 6.0 * soft_rectangle(d[0] / up, (d[2] - 0.3 * up) / up, 0.6, 0.4, 0.05);
-    // Two strip lights left and right, tall and narrow, facing the sphere: radiance 4.
-    for (const double side : {-1.0, 1.0}) {
-      const double x = side * d[0];
-      if (x > 0.2) light += 4.0 * soft_rectangle(d[2] / x, d[1] / x, 0.12, 0.9, 0.03);
-    }
+  // The key: a 1.2 x 0.9 softbox above and in front of the sphere (55 degrees up, toward the camera), radiance 5;
+  // two strip lights 0.25 x 1.8 at the sides, a little behind (rim lights), radiance 4; over a dim gradient from
+  // 0.03 at the floor to 0.15 overhead.
+  const std::array<double, 3> key = unit(0.0, 1.4, 1.0), left = unit(-1.0, 0.0, -0.4), right = unit(1.0, 0.0, -0.4);
+  return procedural(512, 256, [&](const std::array<double, 3>& d) {
+    const double base = 0.03 + 0.12 * smoothstep(-1.0, 1.0, d[1]);
+    const double light = 5.0 * rectangle_light(d, key, {1.0, 0.0, 0.0}, 0.6, 0.45, 0.05) +
+                         4.0 * rectangle_light(d, left, unit(0.4, 0.0, -1.0), 0.125, 0.9, 0.03) +
+                         4.0 * rectangle_light(d, right, unit(0.4, 0.0, 1.0), 0.125, 0.9, 0.03);
     const double total = base + light;
     return std::array<double, 3>{total, total, total * 1.02};
   });

@@ -145,6 +145,14 @@ PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelSta
     light_controls(state.light, status.unicode);
     view_controls(state.view);
   }
+  if (ImGui::CollapsingHeader("Lighting", ImGuiTreeNodeFlags_DefaultOpen)) {
+    lighting_controls(state.lighting, status.environment_samples);
+    if (!status.environment_error.empty()) {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextColored(kErrorColor, "%s", status.environment_error.c_str());
+      ImGui::PopTextWrapPos();
+    }
+  }
   if (ImGui::CollapsingHeader("Energy", ImGuiTreeNodeFlags_DefaultOpen)) {
     if (status.shown != nullptr) {
       energy_readout(*status.shown, status.unicode);

@@ -18,6 +18,8 @@ struct PanelStatus {
   std::string last_export;             // the last screenshot's or export's outcome ("saved …" or the error)
   std::string export_progress;         // the running export's progress; empty when none runs
   bool unicode = false;                // the font has Greek letters and symbols
+  int environment_samples = 0;         // the environment estimate's samples per pixel so far
+  std::string environment_error;       // why the chosen environment could not be loaded
 };
 
 struct PanelActions {

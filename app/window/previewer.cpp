@@ -25,6 +25,7 @@
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
 #include "app/window/control_panel.h"
+#include "app/window/environment_preview.h"
 #include "app/window/export_job.h"
 #include "app/window/file_panel.h"
 #include "app/window/glfw_window.h"
@@ -63,6 +64,14 @@ class Previewer {
         worker_(post_empty_event) {
     state_.material = options.material;
     state_.view.view = options.view;
+    const cli::LightingFlags& lighting = options.lighting;
+    state_.lighting.environment = lighting.environment.value_or("");
+    state_.lighting.rotate_degrees = radians_to_degrees(lighting.view.rotation);
+    state_.lighting.ev = std::log2(lighting.view.scale);
+    state_.lighting.background = lighting.view.background;
+    state_.lighting.directional = lighting.directional_light;
+    state_.lighting.tone_map = lighting.tone_map;
+    capture_samples_ = lighting.samples;
   }
 
   int run() {
@@ -101,6 +110,8 @@ class Previewer {
     const std::array<int, 2> size = window_.window_size();
     const PreviewLayout layout = layout_preview(static_cast<float>(size[0]), static_cast<float>(size[1]),
                                                 kPanelWidth * imgui_.scale(), state_.view.view);
+    const std::array<float, 2> scale = {static_cast<float>(framebuffer[0]) / static_cast<float>(std::max(size[0], 1)),
+                                        static_cast<float>(framebuffer[1]) / static_cast<float>(std::max(size[1], 1))};
     PreviewState edited = state_;
     ViewOverlayInput overlay{layout, shown_ ? &plot_tables() : nullptr, scene_.lobes, imgui_.unicode_labels()};
     activity |= view_overlays(overlay, edited.light);
@@ -173,8 +184,7 @@ class Previewer {
     activity |= save || reset || ImGui::IsAnyItemActive() || io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f ||
                 ImGui::IsAnyMouseDown();
 
-    const std::array<float, 2> scale = {static_cast<float>(framebuffer[0]) / static_cast<float>(std::max(size[0], 1)),
-                                        static_cast<float>(framebuffer[1]) / static_cast<float>(std::max(size[1], 1))};
+    const bool refining = refine_environment(layout, scale, framebuffer, activity);
     draw_views(layout, scale, framebuffer);
     const ExportTarget target = state_.export_options.target;
     if (save && target != ExportTarget::Window) {
@@ -192,7 +202,7 @@ class Previewer {
     capture_if_ready(framebuffer);
     window_.swap_buffers();
 
-    eager_frames_ = activity ? kEagerFrames : std::max(eager_frames_ - 1, 0);
+    eager_frames_ = activity || refining ? kEagerFrames : std::max(eager_frames_ - 1, 0);
     if (capture_path_) return kCaptureWaitSeconds;
     return eager_frames_ > 0 ? kEagerWaitSeconds : kIdleWaitSeconds;
   }
@@ -236,8 +246,14 @@ class Previewer {
   }
 
   PanelStatus panel_status() const {
-    return PanelStatus{shown_ ? &*shown_ : nullptr, solving(), error_, last_export_, export_job_.progress(),
-                       imgui_.unicode_labels()};
+    return PanelStatus{shown_ ? &*shown_ : nullptr,
+                       solving(),
+                       error_,
+                       last_export_,
+                       export_job_.progress(),
+                       imgui_.unicode_labels(),
+                       environment_.samples(),
+                       environment_error_};
   }
 
   // The scene of the shown result under the current light and view; the lobe scale (a CPU pass over the BSDF) is
@@ -253,8 +269,37 @@ class Previewer {
     }
     scene_.view = state_.view.view;
     scene_.sphere.light = light_direction(theta, phi);
+    const bool environment =
+        !state_.lighting.environment.empty() && environment_.loaded() == state_.lighting.environment;
+    scene_.sphere.environment = environment ? std::optional<EnvironmentView>(state_.lighting.view()) : std::nullopt;
+    scene_.sphere.irradiance = !environment || state_.lighting.directional ? kPi : 0.0;
+    scene_.sphere.tone_map = state_.lighting.tone_map;
     scene_.sphere.exposure = exposure_multiplier(state_.view);
     scene_.lobes.log_scale = state_.view.log_lobes;
+  }
+
+  // Loads a newly chosen environment and refines the sphere's estimate under it for a slice of this frame: a few
+  // milliseconds while something moves, more when the window is idle. Returns true while it is still refining.
+  bool refine_environment(const PreviewLayout& layout, std::array<float, 2> scale, std::array<int, 2> framebuffer,
+                          bool activity) {
+    const std::string& source = state_.lighting.environment;
+    if (source.empty() || !shown_ || layout.sphere.empty() || scene_.view == ViewKind::Compare) {
+      environment_.reset();
+      return false;
+    }
+    if (source != environment_.loaded() && source != failed_environment_) {
+      environment_error_ = environment_.load(renderer_, source);
+      failed_environment_ = environment_error_.empty() ? "" : source;
+      if (!environment_error_.empty()) out_ << "environment: " << environment_error_ << "\n" << std::flush;
+      update_scene();
+    }
+    if (environment_.loaded() != source) return false;
+    const Viewport sphere = to_viewport(layout.sphere, scale, framebuffer[1]);
+    const EnvironmentView view = state_.lighting.view();
+    const EnvironmentPreview::Key key{shown_->generation, static_cast<int>(shown_->request.material.model),
+                                      view.rotation,      view.scale,
+                                      sphere.width,       sphere.height};
+    return environment_.refine(renderer_, key, view, scene_.surface, activity ? 0.006 : 0.03);
   }
 
   void draw_views(const PreviewLayout& layout, std::array<float, 2> scale, std::array<int, 2> framebuffer) const {
@@ -269,7 +314,7 @@ class Previewer {
     const SolveRequest& shown = shown_->request;
     if (!layout.sphere.empty()) {
       renderer_.draw_sphere(scene_.sphere, scene_.surface, to_viewport(layout.sphere, scale, framebuffer[1]),
-                            static_cast<int>(shown.material.model));
+                            static_cast<int>(shown.material.model), environment_.accumulation());
     }
     if (!layout.plots.empty()) {
       renderer_.draw_lobes(scene_.lobes, scene_.surface, to_viewport(layout.plots, scale, framebuffer[1]),
@@ -389,6 +434,21 @@ class Previewer {
       } else {
         throw std::runtime_error("test action: unknown layer action '" + what + "'");
       }
+    } else if (verb == "lighting") {  // lighting KEY VALUE, KEY one of the lighting flags
+      const std::size_t gap = argument.find(' ');
+      const std::string key = argument.substr(0, gap), value = argument.substr(gap + 1);
+      LightingState& lighting = state_.lighting;
+      if (key == "env") {
+        lighting.environment = value == "none" ? "" : value;
+      } else if (key == "env-rotate") {
+        lighting.rotate_degrees = std::stod(value);
+      } else if (key == "env-ev") {
+        lighting.ev = std::stod(value);
+      } else if (key == "light") {
+        lighting.directional = value == "on";
+      } else {
+        throw std::runtime_error("test action: unknown lighting key " + key);
+      }
     } else if (verb == "set") {
       const std::size_t gap = argument.find(' ');
       const std::string name = argument.substr(0, gap);
@@ -437,6 +497,14 @@ class Previewer {
     const bool final_result = submitted_ && !worker_.settling();
     if (final_result && !error_.empty()) throw std::runtime_error(error_);
     if (!final_result || !shown_ || shown_->preview || !same_request(shown_->request, *submitted_)) return;
+    // Under an environment, the estimate has its --samples (and it belongs to what is shown).
+    if (!state_.lighting.environment.empty()) {
+      if (!environment_error_.empty()) throw std::runtime_error(environment_error_);
+      if (environment_.samples() < std::min(capture_samples_, EnvironmentPreview::kMaxSamples) ||
+          !scene_.sphere.environment) {
+        return;
+      }
+    }
     if (++settled_frames_ < kCaptureSettleFrames) return;
     export_picture(Viewport{0, 0, framebuffer[0], framebuffer[1]}, *capture_path_);
     captured_ = true;
@@ -461,6 +529,10 @@ class Previewer {
   EditHistory history_;
   MaterialFiles files_;
   std::deque<std::string> test_actions_;
+  EnvironmentPreview environment_;
+  std::string environment_error_;   // why the chosen environment could not be loaded
+  std::string failed_environment_;  // that source, not retried until another is chosen
+  int capture_samples_ = 0;         // --capture under an environment waits for this many samples per pixel
   ExportJob export_job_;
   SolveWorker worker_;  // last: destroyed (joined) first, while GLFW, which it wakes, is still initialized
 };

@@ -16,8 +16,10 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
     options.help = true;
     return options;
   }
-  const cli::ParsedFlags flags = cli::ParsedFlags::parse(
-      arguments, cli::material_flags_and({"capture", "view", cli::kModelFlag, "test-actions"}), "skinlayer");
+  std::vector<std::string_view> known = cli::material_flags_and({"capture", "view", cli::kModelFlag, "test-actions"});
+  for (std::string_view name : cli::lighting_flag_names()) known.push_back(name);
+  const cli::ParsedFlags flags = cli::ParsedFlags::parse(arguments, known, "skinlayer");
+  options.lighting = cli::lighting_from_flags(flags);
   const MaterialDocument document = cli::material_document_from_flags(flags, cli::AlbedoFlag::GreyOrRgb);
   options.material = color_material(document);
   if (options.material.layer.ordinates) choose_resolution(options.material.layer);  // checks the material's minimum
@@ -44,13 +46,14 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
 
 std::string window_usage() {
   return "Usage: skinlayer [--capture FILE.png] [--view sphere|polar|both|compare] [--model stam|lambert|hk]\n"
-         "                 [--material FILE | --preset NAME] [--albedo A | r,g,b] [material flags]\n"
+         "                 [--env E ...] [--material FILE | --preset NAME] [--albedo A | r,g,b] [material flags]\n"
          "\n"
          "Opens the previewer: a lit sphere of the material beside polar plots of its BRDF and BTDF, with controls\n"
          "for every parameter (press F1 in the window for the keys). Needs a display; without one, use\n"
          "`skinlayer render -o out.png`, which takes the same material flags.\n"
-         "  --capture FILE.png   render until the material is solved, save a screenshot of the whole window\n"
-         "                       (framebuffer resolution) to FILE.png, print its size and exit\n"
+         "  --capture FILE.png   render until the material is solved (and, under --env, the estimate has its\n"
+         "                       --samples), save a screenshot of the whole window (framebuffer resolution)\n"
+         "                       to FILE.png, print its size and exit\n"
          "  --view V             the views shown first: sphere, polar, both, or compare (three spheres:\n"
          "                       Lambert | Hanrahan-Krueger | the layer model)\n"
          "  --model M            the subsurface model of the sphere and plots: stam, lambert, hk\n"
@@ -58,9 +61,8 @@ std::string window_usage() {
          "  --test-actions LIST  for tests: ';'-separated actions run once the first solve is shown (set NAME\n"
          "                       VALUE, undo, redo, drop PATH, save PATH, preset NAME, quit, discard, title,\n"
          "                       layer add, layer remove|up|down I, export-merl PATH,\n"
-         "                       export-bsdf PATH)\n"
-         "\n" +
-         cli::material_flags_usage();
+         "                       export-bsdf PATH, lighting env|env-rotate|env-ev|light VALUE)\n" +
+         cli::lighting_flags_usage() + "\n" + cli::material_flags_usage();
 }
 
 }  // namespace skinlayer

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/cli/environment_flags.h"
 #include "app/render/material_solve.h"
 #include "app/render/scene.h"
 
@@ -22,6 +23,7 @@ struct WindowOptions {
   std::vector<std::string> test_actions;    // --test-actions "a;b;...": the tests' hook (previewer.h)
   ViewKind view = ViewKind::Both;           // --view sphere|polar|both|compare
   std::optional<std::string> capture_path;  // --capture: save the whole window there once solved, then exit
+  cli::LightingFlags lighting;              // --env, --env-rotate, ... (render's lighting flags)
   bool help = false;                        // --help or -h
 };
 

@@ -118,6 +118,34 @@ void BM_ParameterChangeLatency(benchmark::State& state) {
 }
 BENCHMARK(BM_ParameterChangeLatency)->Arg(0)->Arg(1)->ArgNames({"rgb"})->Unit(benchmark::kMillisecond)->UseRealTime();
 
+// The same step (RGB albedo) to the first frame under the studio environment, as the previewer draws it: the solve,
+// upload, the estimate restarted at a quarter of the 512 x 512 sphere view (app/window/environment_preview.h) with
+// one sample per pixel, and the frame. Issue 14's target: BM_ParameterChangeLatency/rgb:1 + 5 ms.
+void BM_EnvironmentChangeLatency(benchmark::State& state) {
+  PreviewFrame frame;
+  const int size = PreviewFrame::kSize;
+  Renderer& renderer = frame.renderer;
+  renderer.upload_environment(*builtin_environment("studio"));
+  ColorMaterial material;
+  material.albedo_rgb = {0.95, 0.8, 0.7};
+  EnvironmentAccumulation accumulation(size / 4, size / 4);
+  double g = 0.8;
+  for (auto _ : state) {
+    g = g == 0.8 ? 0.79 : 0.8;
+    material.layer.g = g;
+    const ColorTables tables = solve_color(material, 0.785);
+    renderer.upload(make_table_textures(tables));
+    Scene scene = make_scene(tables, ViewKind::Both, 0.785, 3.14159, 1.0, false);
+    scene.sphere.environment = EnvironmentView{};
+    accumulation.clear();
+    renderer.accumulate_environment(accumulation, EnvironmentView{}, scene.surface, 1);
+    frame.target.bind();
+    draw_scene(renderer, scene, size, size, &accumulation);
+    glFinish();
+  }
+}
+BENCHMARK(BM_EnvironmentChangeLatency)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 // The previewer's path for one slider step of each parameter, RGB albedo (0.95, 0.8, 0.7), 512 x 512: the worker's
 // cache warm and its parallel-for over the channels, then textures, upload and a finished frame. The value
 // alternates between two nearby settings; sigma takes a new value each step (its interfaces change: a cache miss).

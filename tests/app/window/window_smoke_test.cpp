@@ -229,6 +229,33 @@ TEST(WindowSmoke, ExportBsdfWritesTheShownMaterial) {
   std::filesystem::remove_all(dir);
 }
 
+// Under an environment (issue 14) the window waits for the estimate's --samples before the capture, and shows the
+// environment behind the sphere: the furnace's radiance 1 through the default exponential tone map, sRGB(1 - e^-1),
+// 208 of 255, in the view's top right corner (the flat background is 0.02, 38 of 255). With --light off and the
+// furnace, the sphere's pixels are its directional reflectance, below 1: darker than that corner.
+TEST(WindowSmoke, CaptureUnderAnEnvironmentShowsItBehindTheSphere) {
+  const std::optional<std::string> xvfb_run = find_in_path("xvfb-run");
+  if (!xvfb_run) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::filesystem::path png = temporary_png("skinlayer-window-furnace");
+  const ProcessResult result =
+      run_process({*xvfb_run, "-a", "-s", "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE, "--capture", png.string(),
+                   "--view", "sphere", "--env", "furnace", "--samples", "64", "--background", "show"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  int width = 0, height = 0, channels = 0;
+  const std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load(png.c_str(), &width, &height, &channels, 4),
+                                                               stbi_image_free);
+  ASSERT_NE(pixels, nullptr);
+  const unsigned char* corner = pixels.get() + 4 * (static_cast<std::size_t>(height / 20) * width + width - 5);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(corner[c], 208, 2) << "channel " << c;
+  // The sphere's centre: the middle of the picture area right of the panel, roughly; its brightest pixel on the
+  // middle row is below the furnace's radiance.
+  const unsigned char* middle_row = pixels.get() + 4 * (static_cast<std::size_t>(height / 2) * width);
+  int darker = 0;
+  for (int x = width / 2; x < width - width / 8; ++x) darker += middle_row[4 * x] < 200 ? 1 : 0;
+  EXPECT_GT(darker, width / 8) << "the sphere's reflectance (< 1) shows darker than the furnace behind it";
+  std::filesystem::remove(png);
+}
+
 // Quitting with unsaved changes asks first: the window is still there (it prints its title) until the changes are
 // discarded, and then it closes by itself.
 TEST(WindowSmoke, QuittingWithUnsavedChangesAsksFirst) {

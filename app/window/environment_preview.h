@@ -1,0 +1,57 @@
+// The previewer's environment lighting: the map the renderer holds, and the progressive estimate of the shown
+// sphere (app/render/renderer.h's EnvironmentAccumulation), restarted whenever what it estimates changes and
+// refined a little every frame while the window is otherwise idle, so that dragging stays fluid at a few samples
+// per pixel and the picture converges when the mouse stops.
+//
+// The estimate is kept at a quarter of the sphere view's side (128 x 128 for a 512 x 512 view; the display filters
+// it up): at full resolution llvmpipe adds 10 samples per pixel per second on this machine, at a quarter 140, and the
+// centre reaches 1% noise in 2 s under the sky (docs/benchmarks.md, BM_EnvironmentConvergence).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "app/render/renderer.h"
+
+namespace skinlayer {
+
+class EnvironmentPreview {
+ public:
+  static constexpr int kResolutionDivisor = 4;
+  static constexpr int kMaxSamples = 16384;
+
+  // Makes `source` (a built-in name or a .hdr path; empty: none) the renderer's environment if it is not already.
+  // Returns the error ("" when it loaded); after an error the previous environment stays.
+  std::string load(Renderer& renderer, const std::string& source);
+  const std::string& loaded() const { return loaded_; }
+
+  // What the estimate depends on besides the environment: the shown result and slot, the environment's rotation
+  // and scale, the sphere view's size in pixels.
+  struct Key {
+    std::uint64_t generation = 0;
+    int slot = 0;
+    double rotation = 0.0;
+    double scale = 1.0;
+    int width = 0;
+    int height = 0;
+    bool operator==(const Key&) const = default;
+  };
+  // Adds passes for about budget_seconds (at least one sample), restarting first if the key changed. Returns true
+  // while the estimate is still refining (the window should draw again soon).
+  bool refine(const Renderer& renderer, const Key& key, const EnvironmentView& view, const SurfaceParams& surface,
+              double budget_seconds);
+  // Drops the estimate (no environment shown).
+  void reset() { accumulation_.reset(); }
+
+  const EnvironmentAccumulation* accumulation() const { return accumulation_ ? &*accumulation_ : nullptr; }
+  int samples() const { return accumulation_ ? accumulation_->samples() : 0; }
+
+ private:
+  std::string loaded_;
+  std::optional<EnvironmentAccumulation> accumulation_;
+  Key key_;
+  int samples_per_pass_ = 1;
+};
+
+}  // namespace skinlayer
