@@ -12,6 +12,7 @@ uniform int u_log_scale;      // 0: radius = f / u_peak; 1: radius = 1 + log10(f
 uniform float u_peak;         // the BSDF value drawn at radius 1  [1/sr]
 uniform float u_decades;      // decades shown by the log scale
 uniform int u_output_linear;  // 1: write the plotted radius of the total lobe in R (tests); 0: colors
+uniform int u_outline;        // 1: only the total lobe's outline, two pixels wide, over what is already drawn
 
 // The subsurface tables in the plane of incidence at u_theta_i, their modes summed (app/render/lobe_profile.h):
 // rows reflection at phi 0 and pi, transmission at phi 0 and pi; columns the tables' theta_o texels.
@@ -53,6 +54,11 @@ void main() {
     return;
   }
   float pixel = length(fwidth(p)) * 0.7071;
+  if (u_outline == 1) {  // the A/B comparison's pinned material over the edited one's filled lobes
+    if (r_total <= 0.0 || abs(r - r_total) > 1.5 * pixel) discard;
+    o_color = vec4(0.95, 0.95, 0.95, 1.0);
+    return;
+  }
   vec3 color = vec3(0.08);
   if (r < r_sub) color = reflection ? vec3(0.85, 0.45, 0.35) : vec3(0.35, 0.55, 0.85);
   else if (r < r_total) color = vec3(0.95, 0.85, 0.4);

@@ -36,6 +36,14 @@ struct LightingState {
   EnvironmentView view() const;
 };
 
+// A/B comparison: a pinned material B shown right of a split line across the sphere, beside the edited A, and as
+// an outline over A's lobes.
+struct ComparisonState {
+  std::optional<ColorMaterial> pinned;  // B; unset: no comparison
+  double split = 0.5;                   // where the line crosses the sphere's view: 0 left edge .. 1 right edge
+  bool operator==(const ComparisonState&) const = default;
+};
+
 struct ViewOptions {
   ViewKind view = ViewKind::Both;  // which views share the picture area
   bool log_lobes = false;          // lobe radius: linear in the BSDF, or log over LobeView::decades decades
@@ -58,6 +66,7 @@ struct PreviewState {
   ViewOptions view;
   ExportOptions export_options;
   LightingState lighting;
+  ComparisonState comparison;
   bool show_help = false;  // the F1 overlay
 };
 

@@ -1,6 +1,7 @@
 #include "app/render/renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -133,13 +134,14 @@ void Renderer::bind_environment(GLuint program, const EnvironmentView& environme
 }
 
 void Renderer::accumulate_environment(EnvironmentAccumulation& accumulation, const EnvironmentView& environment,
-                                      const SurfaceParams& surface, int samples, int slot) const {
+                                      const SurfaceParams& surface, int samples, int slot, bool quick) const {
   const RenderTarget& target = accumulation.target_;
   target.bind();
   const GLuint program =
       begin_view(accumulate_.get(), surface, Viewport{0, 0, target.width(), target.height()}, kSphereMargin, slot);
   bind_environment(program, environment);
   glUniform1i(location(program, "u_samples"), samples);
+  glUniform1i(location(program, "u_quick"), quick ? 1 : 0);
   glUniform1i(location(program, "u_first_sample"), accumulation.samples_);
   glUniform1ui(location(program, "u_seed"), accumulation.seed_);
   glEnable(GL_BLEND);
@@ -219,6 +221,23 @@ void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface,
   gl::check_errors("Renderer::draw_sphere");
 }
 
+void Renderer::draw_split_sphere(const SphereView& view, const std::array<SurfaceParams, 2>& surfaces,
+                                 const std::array<int, 2>& slots,
+                                 const std::array<const EnvironmentAccumulation*, 2>& environments,
+                                 const Viewport& viewport, double split) const {
+  const int line = viewport.x + static_cast<int>(std::lround(std::clamp(split, 0.0, 1.0) * viewport.width));
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(viewport.x, viewport.y, line - viewport.x, viewport.height);
+  draw_sphere(view, surfaces[0], viewport, slots[0], environments[0]);
+  glScissor(line, viewport.y, viewport.x + viewport.width - line, viewport.height);
+  draw_sphere(view, surfaces[1], viewport, slots[1], environments[1]);
+  glScissor(line - 1, viewport.y, 2, viewport.height);
+  glClearColor(0.85f, 0.85f, 0.85f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  gl::check_errors("Renderer::draw_split_sphere");
+}
+
 void Renderer::draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport,
                           int slot) const {
   const GLuint program = begin_view(lobe_.get(), surface, viewport, kLobeMargin, slot);
@@ -227,6 +246,7 @@ void Renderer::draw_lobes(const LobeView& view, const SurfaceParams& surface, co
   glUniform1f(location(program, "u_peak"), static_cast<float>(view.peak));
   glUniform1f(location(program, "u_decades"), static_cast<float>(view.decades));
   glUniform1i(location(program, "u_output_linear"), view.linear_output ? 1 : 0);
+  glUniform1i(location(program, "u_outline"), view.outline ? 1 : 0);
   const UnscatteredPlane& plane = view.unscattered;
   const std::vector<float> none(2, 0.0f);
   const std::vector<float>& samples = plane.btdf.size() >= 2 ? plane.btdf : none;

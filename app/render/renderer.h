@@ -73,6 +73,7 @@ struct LobeView {
   double decades = 3.0;          // log scale: decades between the outer circle and the centre
   bool linear_output = false;    // write (total radius, subsurface radius, pixel radius) in RGB (tests)
   UnscatteredPlane unscattered;  // the shown model's unscattered BTDF in the plane of incidence at theta_i
+  bool outline = false;          // draw only the total lobe's outline, over what is drawn (the A/B comparison)
 };
 
 // Half-size of a view in units of the sphere radius / plot radius: the larger axis shows `margin` radii.
@@ -80,25 +81,36 @@ std::array<double, 2> view_extent(const Viewport& viewport, double margin);
 
 class Renderer {
  public:
-  // Table slots: slot 0 holds the shown material; the side-by-side comparison puts more models in the others.
-  static constexpr int kTableSlots = 3;
+  // Table slots: slot 0 holds the shown material; the side-by-side comparison puts more models in 1 and 2; the
+  // A/B comparison's pinned material is in kPinnedSlot.
+  static constexpr int kTableSlots = 4;
+  static constexpr int kPinnedSlot = 3;
 
   Renderer();
 
   // Keeps the data too: the lobe plot sums its in-plane profile from it (app/render/lobe_profile.h).
   void upload(TableTextureData tables, int slot = 0);
+  const TableTextureData& table_data(int slot) const { return slots_.at(static_cast<std::size_t>(slot)).data; }
 
   // The environment that EnvironmentView lights with: its map (mipmapped, for the blurred background) and its
   // luminance distribution. Throws std::runtime_error for a black one.
   void upload_environment(const EnvironmentMap& map);
   // Adds `samples` estimates per pixel (3 directions each) to the accumulation, for the table slot's material; the
-  // accumulation covers a view of the sphere with the given aspect. Leaves the default framebuffer bound.
+  // accumulation covers a view of the sphere with the given aspect. `quick`: 2 directions each (the environment and
+  // the cosine, without the surface lobe's strategy: half the cost, noisier highlights; still unbiased). Leaves the
+  // default framebuffer bound.
   void accumulate_environment(EnvironmentAccumulation& accumulation, const EnvironmentView& environment,
-                              const SurfaceParams& surface, int samples, int slot = 0) const;
+                              const SurfaceParams& surface, int samples, int slot = 0, bool quick = false) const;
 
   // With view.environment set, `environment` is the accumulation to show (null: none yet).
   void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0,
                    const EnvironmentAccumulation* environment = nullptr) const;
+  // The A/B comparison: slot_a's sphere left of the split (a fraction of the viewport's width) and slot_b's right of
+  // it, under the same view, with a thin light line between them.
+  void draw_split_sphere(const SphereView& view, const std::array<SurfaceParams, 2>& surfaces,
+                         const std::array<int, 2>& slots,
+                         const std::array<const EnvironmentAccumulation*, 2>& environments, const Viewport& viewport,
+                         double split) const;
   void draw_lobes(const LobeView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0) const;
 
   static constexpr double kSphereMargin = 1.08;

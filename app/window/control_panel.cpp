@@ -53,6 +53,26 @@ void energy_readout(const SolveResult& shown, bool unicode) {
   ImGui::EndTable();
 }
 
+// Pin as B (the shown material), or with B pinned: Unpin B and the split line's place.
+void ab_controls(ComparisonState& comparison, const PanelStatus& status, PanelActions& actions) {
+  if (!comparison.pinned) {
+    ImGui::BeginDisabled(status.shown == nullptr);
+    actions.pin = ImGui::Button("Pin as B");
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      ImGui::SetTooltip(
+          "Keep the shown material as B and go on editing A: the sphere shows A left of a split line\n"
+          "(drag it) and B right of it, under the same light; the lobes draw B as an outline.");
+    }
+    return;
+  }
+  actions.unpin = ImGui::Button("Unpin B");
+  ImGui::SameLine();
+  float split = static_cast<float>(comparison.split);
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::SliderFloat("##split", &split, 0.0f, 1.0f, "split %.2f")) comparison.split = split;
+}
+
 // A button that is disabled while `busy`, with its tooltip shown either way. True when pressed.
 bool export_button(const char* label, bool busy, const char* tooltip) {
   ImGui::BeginDisabled(busy);
@@ -110,6 +130,10 @@ void status_line(const PanelStatus& status) {
   } else if (!status.solving) {
     ImGui::TextColored(kDimColor, "no result yet");
   }
+  if (status.environment_samples > 0) {  // the environment's estimate (app/window/environment_preview.h)
+    ImGui::SameLine();
+    ImGui::TextColored(kDimColor, "| %d spp", status.environment_samples);
+  }
 }
 
 }  // namespace
@@ -144,6 +168,7 @@ PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelSta
   if (ImGui::CollapsingHeader("Light and view", ImGuiTreeNodeFlags_DefaultOpen)) {
     light_controls(state.light, status.unicode);
     view_controls(state.view);
+    ab_controls(state.comparison, status, actions);
   }
   if (ImGui::CollapsingHeader("Lighting", ImGuiTreeNodeFlags_DefaultOpen)) {
     lighting_controls(state.lighting, status.environment_samples);

@@ -27,6 +27,8 @@ struct PanelActions {
   bool export_bsdf = false;  // the Export BSDF button (app/window/export_job.h)
   bool export_merl = false;  // the Export MERL button
   bool reset_material = false;
+  bool pin = false;        // Pin as B: the shown material becomes the A/B comparison's B
+  bool unpin = false;      // Unpin B
   FileSectionResult file;  // the File section: open, save, presets, recent, undo, redo
 };
 

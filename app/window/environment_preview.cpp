@@ -33,6 +33,10 @@ bool EnvironmentPreview::refine(const Renderer& renderer, const Key& key, const 
     }
     key_ = key;
     samples_per_pass_ = 1;
+    // The first frame after a change shows one quick sample per pixel and nothing more, so that it comes as fast
+    // as the directional light's frame (docs: BM_EnvironmentChangeLatency).
+    renderer.accumulate_environment(*accumulation_, view, surface, 1, key.slot, true);
+    return true;
   }
   if (accumulation_->samples() >= kMaxSamples) return false;
   const auto start = std::chrono::steady_clock::now();

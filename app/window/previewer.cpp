@@ -13,6 +13,7 @@
 
 #include "app/gl/gl_api.h"
 #include "app/material/material_file.h"
+#include "app/material/material_json.h"
 #include "app/material/picture_metadata.h"
 #include "app/material/presets.h"
 #include "app/preview/edit_history.h"
@@ -114,9 +115,11 @@ class Previewer {
                                         static_cast<float>(framebuffer[1]) / static_cast<float>(std::max(size[1], 1))};
     PreviewState edited = state_;
     ViewOverlayInput overlay{layout, shown_ ? &plot_tables() : nullptr, scene_.lobes, imgui_.unicode_labels()};
-    activity |= view_overlays(overlay, edited.light);
+    activity |= view_overlays(overlay, edited.light, edited.comparison);
     const PanelActions panel = control_panel(layout.panel, edited, panel_status(), file_section_input());
     bool save = panel.save_screenshot;
+    if (panel.pin) pin_shown(edited);
+    if (panel.unpin) unpin(edited);
     if (panel.export_bsdf) start_export(ExportFormat::Bsdf);
     if (panel.export_merl) start_export(ExportFormat::Merl);
     bool reset = panel.reset_material;
@@ -274,8 +277,42 @@ class Previewer {
     scene_.sphere.environment = environment ? std::optional<EnvironmentView>(state_.lighting.view()) : std::nullopt;
     scene_.sphere.irradiance = !environment || state_.lighting.directional ? kPi : 0.0;
     scene_.sphere.tone_map = state_.lighting.tone_map;
+    if (comparing()) {  // B's lobes in A's scale, as an outline
+      if (pinned_theta_ != theta) {
+        pinned_lobes_ = make_scene(*pinned_tables_, ViewKind::Both, theta, phi, 1.0, false).lobes;
+        pinned_theta_ = theta;
+      }
+      pinned_lobes_.peak = scene_.lobes.peak;
+      pinned_lobes_.log_scale = scene_.lobes.log_scale;
+      pinned_lobes_.decades = scene_.lobes.decades;
+      pinned_lobes_.outline = true;
+    }
     scene_.sphere.exposure = exposure_multiplier(state_.view);
     scene_.lobes.log_scale = state_.view.log_lobes;
+  }
+
+  // The A/B comparison: the shown material becomes B, its tables copied to the pinned slot (no solve: they are
+  // what is on screen).
+  void pin_shown(PreviewState& state) {
+    if (!shown_) return;
+    state.comparison.pinned = shown_->request.material;
+    pinned_tables_ = shown_->tables();
+    TableTextureData copy = renderer_.table_data(static_cast<int>(shown_->request.material.model));
+    renderer_.upload(std::move(copy), Renderer::kPinnedSlot);
+    ++pin_generation_;
+    environment_pinned_.reset();
+    pinned_theta_ = -1.0;
+  }
+  void unpin(PreviewState& state) {
+    state.comparison.pinned.reset();
+    pinned_tables_.reset();
+    environment_pinned_.reset();
+  }
+  bool comparing() const {
+    return state_.comparison.pinned && pinned_tables_ && shown_ && scene_.view != ViewKind::Compare;
+  }
+  SurfaceParams pinned_surface() const {
+    return {state_.comparison.pinned->layer.eta, state_.comparison.pinned->layer.sigma};
   }
 
   // Loads a newly chosen environment and refines the sphere's estimate under it for a slice of this frame: a few
@@ -285,11 +322,13 @@ class Previewer {
     const std::string& source = state_.lighting.environment;
     if (source.empty() || !shown_ || layout.sphere.empty() || scene_.view == ViewKind::Compare) {
       environment_.reset();
+      environment_pinned_.reset();
       return false;
     }
     if (source != environment_.loaded() && source != failed_environment_) {
       environment_error_ = environment_.load(renderer_, source);
       failed_environment_ = environment_error_.empty() ? "" : source;
+      environment_pinned_.reset();  // its estimate was of the previous environment
       if (!environment_error_.empty()) out_ << "environment: " << environment_error_ << "\n" << std::flush;
       update_scene();
     }
@@ -313,12 +352,20 @@ class Previewer {
     if (!shown_) return;
     const SolveRequest& shown = shown_->request;
     if (!layout.sphere.empty()) {
-      renderer_.draw_sphere(scene_.sphere, scene_.surface, to_viewport(layout.sphere, scale, framebuffer[1]),
-                            static_cast<int>(shown.material.model), environment_.accumulation());
+      const Viewport sphere = to_viewport(layout.sphere, scale, framebuffer[1]);
+      const int slot = static_cast<int>(shown.material.model);
+      if (comparing()) {
+        renderer_.draw_split_sphere(scene_.sphere, {scene_.surface, pinned_surface()}, {slot, Renderer::kPinnedSlot},
+                                    {environment_.accumulation(), environment_pinned_.accumulation()}, sphere,
+                                    state_.comparison.split);
+      } else {
+        renderer_.draw_sphere(scene_.sphere, scene_.surface, sphere, slot, environment_.accumulation());
+      }
     }
     if (!layout.plots.empty()) {
-      renderer_.draw_lobes(scene_.lobes, scene_.surface, to_viewport(layout.plots, scale, framebuffer[1]),
-                           static_cast<int>(shown.plot_model));
+      const Viewport plots = to_viewport(layout.plots, scale, framebuffer[1]);
+      renderer_.draw_lobes(scene_.lobes, scene_.surface, plots, static_cast<int>(shown.plot_model));
+      if (comparing()) renderer_.draw_lobes(pinned_lobes_, pinned_surface(), plots, Renderer::kPinnedSlot);
     }
     if (scene_.view == ViewKind::Compare && shown_->request.compare) {
       for (std::size_t k = 0; k < kCompareSlots.size(); ++k) {
@@ -434,6 +481,12 @@ class Previewer {
       } else {
         throw std::runtime_error("test action: unknown layer action '" + what + "'");
       }
+    } else if (verb == "pin") {
+      pin_shown(state_);
+    } else if (verb == "unpin") {
+      unpin(state_);
+    } else if (verb == "split") {
+      state_.comparison.split = std::stod(argument);
     } else if (verb == "lighting") {  // lighting KEY VALUE, KEY one of the lighting flags
       const std::size_t gap = argument.find(' ');
       const std::string key = argument.substr(0, gap), value = argument.substr(gap + 1);
@@ -482,12 +535,18 @@ class Previewer {
 
   // How the picture was drawn, for its metadata.
   nlohmann::ordered_json drawing_settings() const {
-    return {{"command", "previewer"},
-            {"view", std::string(view_kind_name(state_.view.view))},
-            {"light_theta", state_.light.theta_degrees},
-            {"light_phi", state_.light.phi_degrees},
-            {"exposure", exposure_multiplier(state_.view)},
-            {"scale", state_.view.log_lobes ? "log" : "linear"}};
+    nlohmann::ordered_json settings = {{"command", "previewer"},
+                                       {"view", std::string(view_kind_name(state_.view.view))},
+                                       {"light_theta", state_.light.theta_degrees},
+                                       {"light_phi", state_.light.phi_degrees},
+                                       {"exposure", exposure_multiplier(state_.view)},
+                                       {"scale", state_.view.log_lobes ? "log" : "linear"}};
+    if (!state_.lighting.environment.empty()) settings["environment"] = state_.lighting.environment;
+    if (comparing()) {  // the A/B comparison's pinned material, as a material file
+      settings["pinned"] = material_json(material_document(*state_.comparison.pinned));
+      settings["split"] = state_.comparison.split;
+    }
+    return settings;
   }
 
   // --capture: once the shown result answers the final parameters and a few frames have shown it, save the whole
@@ -530,6 +589,11 @@ class Previewer {
   MaterialFiles files_;
   std::deque<std::string> test_actions_;
   EnvironmentPreview environment_;
+  EnvironmentPreview environment_pinned_;     // B's estimate in the A/B comparison
+  std::optional<ColorTables> pinned_tables_;  // B's tables (its textures are in Renderer::kPinnedSlot)
+  std::uint64_t pin_generation_ = 0;          // counts pins: B's estimate restarts with each
+  LobeView pinned_lobes_;                     // B's lobes, drawn as an outline in A's scale
+  double pinned_theta_ = -1.0;                // the light angle pinned_lobes_ was made for
   std::string environment_error_;   // why the chosen environment could not be loaded
   std::string failed_environment_;  // that source, not retried until another is chosen
   int capture_samples_ = 0;         // --capture under an environment waits for this many samples per pixel

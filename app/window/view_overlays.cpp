@@ -125,11 +125,27 @@ void probe_under_mouse(ImDrawList& draw, const Rect& plots, const ColorTables& t
   ImGui::EndTooltip();
 }
 
-bool sphere_drag(const Rect& sphere, LightState& light) {
+// A drag that starts within this many pixels of the A/B split line moves the line, not the light.
+constexpr float kSplitGrab = 8.0f;
+
+bool sphere_drag(const Rect& sphere, LightState& light, ComparisonState& comparison) {
   ImGui::SetCursorScreenPos(ImVec2(sphere.x, sphere.y));
   ImGui::InvisibleButton("sphere", ImVec2(sphere.width, sphere.height));
-  if (!ImGui::IsItemActive()) return false;
   const ImVec2 mouse = ImGui::GetIO().MousePos;
+  const float line = sphere.x + static_cast<float>(comparison.split) * sphere.width;
+  const bool near_line = comparison.pinned && std::abs(mouse.x - line) <= kSplitGrab;
+  if (near_line && ImGui::IsItemHovered()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+  // Which drag this is, kept while the button is held (ImGui's storage, as the sliders' reset press).
+  const ImGuiID split_drag = ImGui::GetID("split-drag");
+  ImGuiStorage* storage = ImGui::GetStateStorage();
+  if (ImGui::IsItemActivated()) storage->SetBool(split_drag, near_line);
+  if (!ImGui::IsItemActive()) return false;
+  if (storage->GetBool(split_drag, false) && comparison.pinned) {
+    const double before = comparison.split;
+    comparison.split = std::clamp(static_cast<double>((mouse.x - sphere.x) / sphere.width), 0.0, 1.0);
+    ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
+    return comparison.split != before;
+  }
   const LightAngles angles =
       light_from_sphere_point(sphere, mouse.x, mouse.y, degrees_to_radians(kMaxLightThetaDegrees));
   const LightState before = light;
@@ -147,7 +163,7 @@ void light_marker(ImDrawList& draw, const Rect& sphere, const LightState& light)
 
 }  // namespace
 
-bool view_overlays(const ViewOverlayInput& input, LightState& light) {
+bool view_overlays(const ViewOverlayInput& input, LightState& light, ComparisonState& comparison) {
   const PreviewLayout& layout = input.layout;
   const float left = layout.panel.x + layout.panel.width;
   const ImGuiIO& io = ImGui::GetIO();
@@ -163,8 +179,15 @@ bool view_overlays(const ViewOverlayInput& input, LightState& light) {
   ImDrawList& draw = *ImGui::GetWindowDrawList();
   bool changed = false;
   if (!layout.sphere.empty()) {
-    changed = sphere_drag(layout.sphere, light);
+    changed = sphere_drag(layout.sphere, light, comparison);
     light_marker(draw, layout.sphere, light);
+    if (comparison.pinned) {  // which side is which
+      const Rect& sphere = layout.sphere;
+      const float line = sphere.x + static_cast<float>(comparison.split) * sphere.width;
+      const float y = sphere.y + sphere.height - ImGui::GetTextLineHeight() - 10.0f;
+      draw.AddText(ImVec2(line - ImGui::CalcTextSize("A (edited)").x - 8.0f, y), kLabelColor, "A (edited)");
+      draw.AddText(ImVec2(line + 8.0f, y), kLabelColor, "B (pinned)");
+    }
   }
   if (!layout.compare[0].empty()) {  // Stam's last results slide: the same light on three models
     constexpr std::array<const char*, 3> kNames = {"Lambert", "Hanrahan-Krueger", "new model (Stam 2001)"};

@@ -61,7 +61,8 @@ std::string window_usage() {
          "  --test-actions LIST  for tests: ';'-separated actions run once the first solve is shown (set NAME\n"
          "                       VALUE, undo, redo, drop PATH, save PATH, preset NAME, quit, discard, title,\n"
          "                       layer add, layer remove|up|down I, export-merl PATH,\n"
-         "                       export-bsdf PATH, lighting env|env-rotate|env-ev|light VALUE)\n" +
+         "                       export-bsdf PATH, lighting env|env-rotate|env-ev|light VALUE, pin, unpin,\n"
+         "                       split FRACTION)\n" +
          cli::lighting_flags_usage() + "\n" + cli::material_flags_usage();
 }
 

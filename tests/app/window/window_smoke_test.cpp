@@ -12,6 +12,7 @@
 #include <memory>
 #include <regex>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "tests/app/process_runner.h"
@@ -254,6 +255,50 @@ TEST(WindowSmoke, CaptureUnderAnEnvironmentShowsItBehindTheSphere) {
   for (int x = width / 2; x < width - width / 8; ++x) darker += middle_row[4 * x] < 200 ? 1 : 0;
   EXPECT_GT(darker, width / 8) << "the sphere's reflectance (< 1) shows darker than the furnace behind it";
   std::filesystem::remove(png);
+}
+
+// The A/B comparison (issue 14): "pin" keeps the shown material as B, and the edits that follow change A only; the
+// sphere shows A left of the split line and B right of it, and the screenshot's metadata carries B as a material
+// file. A is made darker (albedo 0.3) than B (the default, 1), and compared with a capture of A alone.
+TEST(WindowSmoke, PinningShowsTheEditedAndThePinnedMaterialSideBySide) {
+  const std::optional<std::string> xvfb_run = find_in_path("xvfb-run");
+  if (!xvfb_run) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const auto capture = [&](const std::filesystem::path& png, std::vector<std::string> extra) {
+    std::vector<std::string> command = {
+        *xvfb_run,    "-a",     "-s",    "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE, "--capture",
+        png.string(), "--view", "sphere"};
+    command.insert(command.end(), extra.begin(), extra.end());
+    const ProcessResult run = run_process(command);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    int width = 0, height = 0, channels = 0;
+    std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load(png.c_str(), &width, &height, &channels, 4),
+                                                           stbi_image_free);
+    return std::tuple{std::move(pixels), width, height};
+  };
+  const std::filesystem::path pinned_png = temporary_png("skinlayer-window-ab");
+  const std::filesystem::path alone_png = temporary_png("skinlayer-window-a");
+  const auto [pinned, width, height] = capture(pinned_png, {"--test-actions", "pin;set albedo 0.3;split 0.3"});
+  const auto [alone, width_alone, height_alone] = capture(alone_png, {"--albedo", "0.3"});
+  ASSERT_NE(pinned, nullptr);
+  ASSERT_NE(alone, nullptr);
+  ASSERT_EQ(width, width_alone);
+  ASSERT_EQ(height, height_alone);
+  // The middle row, on the lit sphere: pixels equal to A alone (left of the line) and pixels brighter (B, right).
+  const std::size_t row = static_cast<std::size_t>(height / 2) * width;
+  int same = 0, brighter = 0;
+  for (int x = width / 3; x < width; ++x) {
+    const int with_pin = pinned.get()[4 * (row + x) + 1], without = alone.get()[4 * (row + x) + 1];
+    if (without < 20) continue;  // the background, or the sphere's unlit side
+    if (std::abs(with_pin - without) <= 1) ++same;
+    if (with_pin > without + 5) ++brighter;
+  }
+  EXPECT_GT(same, 20) << "left of the line: A, as without the pin";
+  EXPECT_GT(brighter, 20) << "right of the line: B (albedo 1) is brighter than A (albedo 0.3)";
+  std::ifstream file(pinned_png, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_NE(bytes.find("\"pinned\""), std::string::npos) << "the screenshot's metadata carries B";
+  std::filesystem::remove(pinned_png);
+  std::filesystem::remove(alone_png);
 }
 
 // Quitting with unsaved changes asks first: the window is still there (it prints its title) until the changes are
