@@ -338,7 +338,14 @@ class Previewer {
     const EnvironmentPreview::Key key{shown_->generation, static_cast<int>(shown_->request.material.model),
                                       view.rotation,      view.scale,
                                       sphere.width,       sphere.height};
-    return environment_.refine(renderer_, key, view, scene_.surface, activity ? 0.006 : 0.03);
+    const double budget = activity ? 0.006 : 0.03;
+    if (!comparing()) return environment_.refine(renderer_, key, view, scene_.surface, budget);
+    // The A/B comparison: B's estimate shares the slice.
+    const EnvironmentPreview::Key pinned{pin_generation_, Renderer::kPinnedSlot, view.rotation,
+                                         view.scale,      sphere.width,          sphere.height};
+    const bool a = environment_.refine(renderer_, key, view, scene_.surface, 0.5 * budget);
+    const bool b = environment_pinned_.refine(renderer_, pinned, view, pinned_surface(), 0.5 * budget);
+    return a || b;
   }
 
   void draw_views(const PreviewLayout& layout, std::array<float, 2> scale, std::array<int, 2> framebuffer) const {
@@ -559,7 +566,8 @@ class Previewer {
     // Under an environment, the estimate has its --samples (and it belongs to what is shown).
     if (!state_.lighting.environment.empty()) {
       if (!environment_error_.empty()) throw std::runtime_error(environment_error_);
-      if (environment_.samples() < std::min(capture_samples_, EnvironmentPreview::kMaxSamples) ||
+      const int wanted = std::min(capture_samples_, EnvironmentPreview::kMaxSamples);
+      if (environment_.samples() < wanted || (comparing() && environment_pinned_.samples() < wanted) ||
           !scene_.sphere.environment) {
         return;
       }

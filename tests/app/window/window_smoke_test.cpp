@@ -278,6 +278,12 @@ TEST(WindowSmoke, PinningShowsTheEditedAndThePinnedMaterialSideBySide) {
   const std::filesystem::path pinned_png = temporary_png("skinlayer-window-ab");
   const std::filesystem::path alone_png = temporary_png("skinlayer-window-a");
   const auto [pinned, width, height] = capture(pinned_png, {"--test-actions", "pin;set albedo 0.3;split 0.3"});
+  // Under an environment both sides get an estimate, and the capture waits for both.
+  const std::filesystem::path lit_png = temporary_png("skinlayer-window-ab-env");
+  const auto [lit, lit_width, lit_height] =
+      capture(lit_png, {"--env", "furnace", "--samples", "32", "--test-actions", "pin;set albedo 0.3;split 0.3"});
+  ASSERT_NE(lit, nullptr);
+  std::filesystem::remove(lit_png);
   const auto [alone, width_alone, height_alone] = capture(alone_png, {"--albedo", "0.3"});
   ASSERT_NE(pinned, nullptr);
   ASSERT_NE(alone, nullptr);
