@@ -16,8 +16,6 @@ uniform vec2 u_extent;
 uniform int u_samples;       // samples this pass
 uniform int u_first_sample;  // samples added before this pass
 uniform uint u_seed;         // the accumulation's random stream
-uniform int u_quick;         // 1: the environment and cosine strategies only (half the cost; the first pass after a
-                             // change, so that it shows within a frame)
 
 uint g_state;
 // PCG (O'Neill 2014) as a per-pixel stream.
@@ -65,7 +63,7 @@ float beckmann_pdf(vec3 n, vec3 l, vec3 v) {
 vec3 contribution(vec3 n, vec3 l, vec3 v) {
   float cos_l = dot(n, l);
   if (cos_l <= 0.0) return vec3(0.0);
-  float pdf = environment_pdf(l) + cos_l / kPi + (u_quick == 1 ? 0.0 : beckmann_pdf(n, l, v));
+  float pdf = environment_pdf(l) + cos_l / kPi + beckmann_pdf(n, l, v);
   if (pdf <= 0.0) return vec3(0.0);
   return sphere_brdf(n, l, v) * environment_radiance(l) * cos_l / pdf;
 }
@@ -90,7 +88,6 @@ void main() {
     vec2 xi = fract(point + shift_cos);
     float r = sqrt(xi.x), a = 2.0 * kPi * xi.y;
     sum += contribution(n, local * vec3(r * cos(a), r * sin(a), sqrt(max(0.0, 1.0 - r * r))), v);
-    if (u_quick == 1) continue;
     // A Beckmann facet normal: tan^2(alpha) = -sigma^2 ln(1 - xi).
     xi = fract(point + shift_facet);
     float t2 = -u_sigma * u_sigma * log(max(1e-12, 1.0 - xi.x));

@@ -134,14 +134,13 @@ void Renderer::bind_environment(GLuint program, const EnvironmentView& environme
 }
 
 void Renderer::accumulate_environment(EnvironmentAccumulation& accumulation, const EnvironmentView& environment,
-                                      const SurfaceParams& surface, int samples, int slot, bool quick) const {
+                                      const SurfaceParams& surface, int samples, int slot) const {
   const RenderTarget& target = accumulation.target_;
   target.bind();
   const GLuint program =
       begin_view(accumulate_.get(), surface, Viewport{0, 0, target.width(), target.height()}, kSphereMargin, slot);
   bind_environment(program, environment);
   glUniform1i(location(program, "u_samples"), samples);
-  glUniform1i(location(program, "u_quick"), quick ? 1 : 0);
   glUniform1i(location(program, "u_first_sample"), accumulation.samples_);
   glUniform1ui(location(program, "u_seed"), accumulation.seed_);
   glEnable(GL_BLEND);

@@ -96,11 +96,9 @@ class Renderer {
   // luminance distribution. Throws std::runtime_error for a black one.
   void upload_environment(const EnvironmentMap& map);
   // Adds `samples` estimates per pixel (3 directions each) to the accumulation, for the table slot's material; the
-  // accumulation covers a view of the sphere with the given aspect. `quick`: 2 directions each (the environment and
-  // the cosine, without the surface lobe's strategy: half the cost, noisier highlights; still unbiased). Leaves the
-  // default framebuffer bound.
+  // accumulation covers a view of the sphere with the given aspect. Leaves the default framebuffer bound.
   void accumulate_environment(EnvironmentAccumulation& accumulation, const EnvironmentView& environment,
-                              const SurfaceParams& surface, int samples, int slot = 0, bool quick = false) const;
+                              const SurfaceParams& surface, int samples, int slot = 0) const;
 
   // With view.environment set, `environment` is the accumulation to show (null: none yet).
   void draw_sphere(const SphereView& view, const SurfaceParams& surface, const Viewport& viewport, int slot = 0,

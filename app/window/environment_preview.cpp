@@ -33,9 +33,9 @@ bool EnvironmentPreview::refine(const Renderer& renderer, const Key& key, const 
     }
     key_ = key;
     samples_per_pass_ = 1;
-    // The first frame after a change shows one quick sample per pixel and nothing more, so that it comes as fast
-    // as the directional light's frame (docs: BM_EnvironmentChangeLatency).
-    renderer.accumulate_environment(*accumulation_, view, surface, 1, key.slot, true);
+    // The first frame after a change shows one sample per pixel and nothing more, so that it comes about as soon as
+    // the directional light's frame (bench_render: BM_EnvironmentChangeLatency).
+    renderer.accumulate_environment(*accumulation_, view, surface, 1, key.slot);
     return true;
   }
   if (accumulation_->samples() >= kMaxSamples) return false;

@@ -120,7 +120,7 @@ BENCHMARK(BM_ParameterChangeLatency)->Arg(0)->Arg(1)->ArgNames({"rgb"})->Unit(be
 
 // The same step (RGB albedo) to the first frame under the studio environment, as the previewer draws it: the solve,
 // upload, the estimate restarted at a quarter of the 512 x 512 sphere view (app/window/environment_preview.h) with
-// one quick sample per pixel, and the frame. Issue 14's target: BM_ParameterChangeLatency/rgb:1 + 5 ms.
+// one sample per pixel, and the frame. Issue 14's target: BM_ParameterChangeLatency/rgb:1 + 5 ms.
 void BM_EnvironmentChangeLatency(benchmark::State& state) {
   PreviewFrame frame;
   const int size = PreviewFrame::kSize;
@@ -138,13 +138,38 @@ void BM_EnvironmentChangeLatency(benchmark::State& state) {
     Scene scene = make_scene(tables, ViewKind::Both, 0.785, 3.14159, 1.0, false);
     scene.sphere.environment = EnvironmentView{};
     accumulation.clear();
-    renderer.accumulate_environment(accumulation, EnvironmentView{}, scene.surface, 1, 0, true);
+    renderer.accumulate_environment(accumulation, EnvironmentView{}, scene.surface, 1);
     frame.target.bind();
     draw_scene(renderer, scene, size, size, &accumulation);
     glFinish();
   }
 }
 BENCHMARK(BM_EnvironmentChangeLatency)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The pieces of that frame at 512 x 512 (studio): range(0) 0 a 1-sample pass at 128 x 128, 1 the frame drawn with
+// the environment (estimate and background), 2 the frame without it.
+void BM_EnvironmentFramePieces(benchmark::State& state) {
+  PreviewFrame frame;
+  const int size = PreviewFrame::kSize;
+  Renderer& renderer = frame.renderer;
+  renderer.upload_environment(*builtin_environment("studio"));
+  const ColorTables tables = solve_color(ColorMaterial{}, 0.785);
+  renderer.upload(make_table_textures(tables));
+  Scene scene = make_scene(tables, ViewKind::Both, 0.785, 3.14159, 1.0, false);
+  EnvironmentAccumulation accumulation(size / 4, size / 4);
+  renderer.accumulate_environment(accumulation, EnvironmentView{}, scene.surface, 1);
+  if (state.range(0) == 1) scene.sphere.environment = EnvironmentView{};
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      renderer.accumulate_environment(accumulation, EnvironmentView{}, scene.surface, 1);
+    } else {
+      frame.target.bind();
+      draw_scene(renderer, scene, size, size, &accumulation);
+    }
+    glFinish();
+  }
+}
+BENCHMARK(BM_EnvironmentFramePieces)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // The previewer's path for one slider step of each parameter, RGB albedo (0.95, 0.8, 0.7), 512 x 512: the worker's
 // cache warm and its parallel-for over the channels, then textures, upload and a finished frame. The value

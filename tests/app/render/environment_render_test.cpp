@@ -219,11 +219,8 @@ TEST(EnvironmentRender, TheFurnaceShowsTheDirectionalReflectanceAtEveryAngle) {
     const ColorTables tables = solve_color(material, 0.0);
     renderer.upload(make_table_textures(tables));
     EnvironmentAccumulation accumulation(size, size);
-    // Every other pass quick (the environment and cosine strategies only, as the previewer's first pass after a
-    // change): both estimators are unbiased, so their mixture is too.
     const SurfaceParams surface{material.layer.eta, material.layer.sigma};
-    for (int pass = 0; pass < 128; ++pass)
-      renderer.accumulate_environment(accumulation, {}, surface, 8, 0, pass % 2 == 1);
+    for (int pass = 0; pass < 128; ++pass) renderer.accumulate_environment(accumulation, {}, surface, 8);
     SphereView view;
     view.irradiance = 0.0;
     view.linear_output = true;
