@@ -9,22 +9,6 @@
 
 namespace skinlayer::cli {
 
-namespace {
-
-double number_flag(const ParsedFlags& flags, std::string_view name, double fallback, double low, double high,
-                   std::string_view meaning) {
-  const std::optional<std::string_view> text = flags.value(name);
-  if (!text) return fallback;
-  const std::optional<double> value = parse_number(*text);
-  if (!value || !(*value >= low && *value <= high)) {
-    throw UsageError(std::string(name) + " = " + quoted(*text) + " is out of range; valid range is [" +
-                     format_short(low) + ", " + format_short(high) + "] (" + std::string(meaning) + ")");
-  }
-  return *value;
-}
-
-}  // namespace
-
 std::vector<std::string_view> lighting_flag_names() {
   return {"env", "env-rotate", "env-ev", "background", "samples", "light", "tonemap"};
 }
@@ -40,8 +24,8 @@ LightingFlags lighting_from_flags(const ParsedFlags& flags) {
     }
   }
   lighting.view.rotation = degrees_to_radians(
-      number_flag(flags, "env-rotate", 0.0, -360.0, 360.0, "degrees about the vertical, turning the environment"));
-  lighting.view.scale = std::exp2(number_flag(flags, "env-ev", 0.0, -20.0, 20.0, "exposure value: radiance x 2^EV"));
+      number_flag(flags, "env-rotate", 0.0, -360.0, 360.0, " (degrees about the vertical, turning the environment)"));
+  lighting.view.scale = std::exp2(number_flag(flags, "env-ev", 0.0, -20.0, 20.0, " (exposure value: radiance x 2^EV)"));
   const std::string_view background = flags.value("background").value_or("show");
   if (background == "show") {
     lighting.view.background = EnvironmentBackground::Show;

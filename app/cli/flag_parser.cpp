@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/cli/errors.h"
+#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 
 namespace skinlayer::cli {
@@ -85,6 +86,18 @@ std::vector<std::string_view> ParsedFlags::values(std::string_view name) const {
     if (flag == name) result.push_back(value);
   }
   return result;
+}
+
+double number_flag(const ParsedFlags& flags, std::string_view name, double fallback, double low, double high,
+                   std::string_view note) {
+  const std::optional<std::string_view> text = flags.value(name);
+  if (!text) return fallback;
+  const std::optional<double> value = parse_number(*text);
+  if (!value || !(*value >= low && *value <= high)) {
+    throw UsageError(std::string(name) + " = " + quoted(*text) + " is out of range; valid range is [" +
+                     format_short(low) + ", " + format_short(high) + "]" + std::string(note));
+  }
+  return *value;
 }
 
 }  // namespace skinlayer::cli

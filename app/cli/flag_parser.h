@@ -42,4 +42,9 @@ class ParsedFlags {
   std::vector<std::pair<std::string, std::string>> values_;  // (name, value) in command-line order
 };
 
+// The number a flag gives, or `fallback` when it is absent. Throws UsageError "<name> = '<text>' is out of range;
+// valid range is [low, high]<note>" for a value that is not a number in [low, high].
+double number_flag(const ParsedFlags& flags, std::string_view name, double fallback, double low, double high,
+                   std::string_view note);
+
 }  // namespace skinlayer::cli

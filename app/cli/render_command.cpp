@@ -30,18 +30,6 @@ namespace {
 
 constexpr int kMaxSide = 8192;
 
-double number_in(const ParsedFlags& flags, std::string_view name, double fallback, double low, double high,
-                 std::string_view unit) {
-  const std::optional<std::string_view> text = flags.value(name);
-  if (!text) return fallback;
-  const std::optional<double> value = parse_number(*text);
-  if (!value || !(*value >= low && *value <= high)) {
-    throw UsageError(std::string(name) + " = " + quoted(*text) + " is out of range; valid range is [" +
-                     format_short(low) + ", " + format_short(high) + "]" + std::string(unit));
-  }
-  return *value;
-}
-
 std::pair<int, int> parse_size(std::string_view text) {
   const std::size_t x = text.find('x');
   const std::optional<double> w = parse_number(text.substr(0, x));
@@ -98,9 +86,9 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
                                         : view == ViewKind::Compare ? "1200x400"
                                                                     : "512x512";
   const auto [width, height] = parse_size(flags.value("size").value_or(default_size));
-  const double light_theta = degrees_to_radians(number_in(flags, "light-theta", 45.0, 0.0, 89.9, " (degrees)"));
-  const double light_phi = degrees_to_radians(number_in(flags, "light-phi", 180.0, -360.0, 360.0, " (degrees)"));
-  const double exposure = number_in(flags, "exposure", 1.0, 1e-6, 1000.0, "");
+  const double light_theta = degrees_to_radians(number_flag(flags, "light-theta", 45.0, 0.0, 89.9, " (degrees)"));
+  const double light_phi = degrees_to_radians(number_flag(flags, "light-phi", 180.0, -360.0, 360.0, " (degrees)"));
+  const double exposure = number_flag(flags, "exposure", 1.0, 1e-6, 1000.0, "");
   const std::string_view scale = flags.value("scale").value_or("linear");
   if (scale != "linear" && scale != "log") throw UsageError("scale = " + quoted(scale) + " is not linear or log");
   const LightingFlags lighting = lighting_from_flags(flags);

@@ -18,6 +18,16 @@ namespace {
 
 constexpr int kSize = 120;
 
+// The float pixels of what draw() draws into the target, cleared first.
+template <class Draw>
+std::vector<float> drawn(const RenderTarget& target, const Draw& draw) {
+  target.bind();
+  glClear(GL_COLOR_BUFFER_BIT);
+  draw();
+  RenderTarget::unbind();
+  return target.read_rgba32f();
+}
+
 TEST(AbComparison, TheSplitSphereIsAOnTheLeftAndBOnTheRight) {
   gl::OsmesaContext context(kSize, kSize);
   Renderer renderer;
@@ -34,13 +44,7 @@ TEST(AbComparison, TheSplitSphereIsAOnTheLeftAndBOnTheRight) {
   const SurfaceParams surface_a{a.layer.eta, a.layer.sigma}, surface_b{b.layer.eta, b.layer.sigma};
   const Viewport viewport{0, 0, kSize, kSize};
   RenderTarget target(kSize, kSize, PixelFormat::Rgba32F);
-  const auto draw = [&](const auto& how) {
-    target.bind();
-    glClear(GL_COLOR_BUFFER_BIT);
-    how();
-    RenderTarget::unbind();
-    return target.read_rgba32f();
-  };
+  const auto draw = [&](const auto& how) { return drawn(target, how); };
   const std::vector<float> only_a = draw([&] { renderer.draw_sphere(scene.sphere, surface_a, viewport, 0); });
   const std::vector<float> only_b =
       draw([&] { renderer.draw_sphere(scene.sphere, surface_b, viewport, Renderer::kPinnedSlot); });
@@ -84,13 +88,7 @@ TEST(AbComparison, TheOutlineOfBLiesOnBsLobeAndChangesNothingElse) {
   const SurfaceParams surface_a{a.layer.eta, a.layer.sigma}, surface_b{b.layer.eta, b.layer.sigma};
   const Viewport viewport{0, 0, kPlot, kPlot};
   RenderTarget target(kPlot, kPlot, PixelFormat::Rgba32F);
-  const auto draw = [&](const auto& how) {
-    target.bind();
-    glClear(GL_COLOR_BUFFER_BIT);
-    how();
-    RenderTarget::unbind();
-    return target.read_rgba32f();
-  };
+  const auto draw = [&](const auto& how) { return drawn(target, how); };
   const std::vector<float> plain = draw([&] { renderer.draw_lobes(scene_a.lobes, surface_a, viewport, 0); });
   LobeView outline = lobes_b;
   outline.outline = true;
