@@ -401,9 +401,7 @@ bool lighting_controls(LightingState& lighting, int samples) {
     lighting.environment = lighting.typed_path;
     changed = true;
   }
-  if (lighting.environment.empty()) {
-    changed |= ImGui::Checkbox("directional light", &lighting.directional);
-  } else {
+  if (!lighting.environment.empty()) {  // without an environment the directional light is the only light
     changed |= slider_row(
         SliderSpec{"rotate", "the environment turned about the vertical, degrees", -180.0, 180.0, 0.0, "%.0f°"},
         lighting.rotate_degrees);
