@@ -89,16 +89,21 @@ bool slider_row(const SliderSpec& spec, double& value) {
   return value != before;
 }
 
+// A labelled combo of the row layout; returns true when the choice changed.
+bool combo_row(const char* label, int& index, const char* const* items, int count) {
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted(label);
+  ImGui::SameLine(label_column());
+  ImGui::SetNextItemWidth(-1.0f);
+  return ImGui::Combo((std::string("##") + label).c_str(), &index, items, count);
+}
+
 bool bottom_controls(Material& layer, bool unicode) {
   bool changed = false;
   constexpr std::array<const char*, 3> kKinds = {"air (rough interface)", "matched (no interface)",
                                                  "lambert (diffuse base)"};
   int kind = static_cast<int>(layer.bottom.kind);
-  ImGui::AlignTextToFramePadding();
-  ImGui::TextUnformatted("bottom");
-  ImGui::SameLine(label_column());
-  ImGui::SetNextItemWidth(-1.0f);
-  if (ImGui::Combo("##bottom", &kind, kKinds.data(), static_cast<int>(kKinds.size()))) {
+  if (combo_row("bottom", kind, kKinds.data(), static_cast<int>(kKinds.size()))) {
     const double lambert = layer.bottom.lambert_albedo;
     layer.bottom = Bottom{};
     layer.bottom.kind = static_cast<BottomKind>(kind);
@@ -136,11 +141,7 @@ bool model_controls(SubsurfaceModel& model) {
   constexpr std::array<const char*, 3> kModels = {"layer (Stam 2001)", "Lambert (same albedo at normal)",
                                                   "Hanrahan-Krueger (single scattering)"};
   int index = static_cast<int>(model);
-  ImGui::AlignTextToFramePadding();
-  ImGui::TextUnformatted("model");
-  ImGui::SameLine(label_column());
-  ImGui::SetNextItemWidth(-1.0f);
-  if (!ImGui::Combo("##model", &index, kModels.data(), static_cast<int>(kModels.size()))) return false;
+  if (!combo_row("model", index, kModels.data(), static_cast<int>(kModels.size()))) return false;
   model = static_cast<SubsurfaceModel>(index);
   return true;
 }
@@ -344,11 +345,7 @@ bool view_controls(ViewOptions& view) {
     constexpr std::array<const char*, 4> kPlotModels = {"same as the sphere", "layer (Stam 2001)", "Lambert",
                                                         "Hanrahan-Krueger"};
     int index = view.plot_model ? static_cast<int>(*view.plot_model) + 1 : 0;
-    ImGui::AlignTextToFramePadding();
-    ImGui::TextUnformatted("plots");
-    ImGui::SameLine(label_column());
-    ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::Combo("##plot-model", &index, kPlotModels.data(), static_cast<int>(kPlotModels.size()))) {
+    if (combo_row("plots", index, kPlotModels.data(), static_cast<int>(kPlotModels.size()))) {
       view.plot_model = index == 0 ? std::nullopt : std::optional(static_cast<SubsurfaceModel>(index - 1));
       changed = true;
     }
@@ -366,15 +363,6 @@ bool view_controls(ViewOptions& view) {
     changed = true;
   }
   return changed;
-}
-
-// A labelled combo of the row layout; returns true when the choice changed.
-bool combo_row(const char* label, int& index, const char* const* items, int count) {
-  ImGui::AlignTextToFramePadding();
-  ImGui::TextUnformatted(label);
-  ImGui::SameLine(label_column());
-  ImGui::SetNextItemWidth(-1.0f);
-  return ImGui::Combo((std::string("##") + label).c_str(), &index, items, count);
 }
 
 bool lighting_controls(LightingState& lighting, int samples) {
