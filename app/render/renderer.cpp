@@ -1,6 +1,7 @@
 #include "app/render/renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string_view>
 #include <utility>
@@ -75,6 +76,20 @@ void upload_float_texture(GLuint texture, int width, int height, int channels, c
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
+// llvmpipe (Mesa's gallivm) ends the loops of a shader invocation once they have run LP_MAX_TGSI_LOOP_ITERATIONS =
+// 65535 iterations together (one counter shared by every loop, per group of 8 pixels), silently: a draw of too many
+// samples drops the rest and darkens the estimate, unevenly from group to group (a 1024-sample draw of the paper's
+// default, 16 modes, came out 15% dark). So a pass is drawn in pieces whose loops stay well under the limit. Loop
+// iterations per sample of shaders/env_accumulate.frag: three table sums of `modes` terms (tables.glsl), the two
+// binary searches of the environment's CDFs (environment.glsl, about log2 of each side), the Sobol point's bits
+// (at most 32) and the sample loop itself.
+int samples_per_draw(int modes, int environment_width, int environment_height) {
+  const int searches = std::bit_width(static_cast<unsigned>(environment_width) + 1u) +
+                       std::bit_width(static_cast<unsigned>(environment_height) + 1u);
+  const int per_sample = 3 * modes + searches + 32 + 1;
+  return std::max(1, 49152 / per_sample);
+}
+
 }  // namespace
 
 std::array<double, 2> view_extent(const Viewport& viewport, double margin) {
@@ -114,6 +129,8 @@ void Renderer::upload_environment(const EnvironmentMap& map) {
   upload_float_texture(environment_.density.get(), map.width, map.height, 1, distribution.density.data());
   upload_float_texture(environment_.marginal.get(), map.height + 1, 1, 1, distribution.marginal.data());
   upload_float_texture(environment_.conditional.get(), map.width + 1, map.height, 1, distribution.conditional.data());
+  environment_.width = map.width;
+  environment_.height = map.height;
   gl::check_errors("Renderer::upload_environment");
 }
 
@@ -140,16 +157,22 @@ void Renderer::accumulate_environment(EnvironmentAccumulation& accumulation, con
   const GLuint program =
       begin_view(accumulate_.get(), surface, Viewport{0, 0, target.width(), target.height()}, kSphereMargin, slot);
   bind_environment(program, environment);
-  glUniform1i(location(program, "u_samples"), samples);
-  glUniform1i(location(program, "u_first_sample"), accumulation.samples_);
   glUniform1ui(location(program, "u_seed"), accumulation.seed_);
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   glBindVertexArray(vertex_array_.get());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  const int per_draw =
+      samples_per_draw(slots_.at(static_cast<std::size_t>(slot)).data.modes, environment_.width, environment_.height);
+  for (int left = samples; left > 0;) {
+    const int draw = std::min(left, per_draw);
+    glUniform1i(location(program, "u_samples"), draw);
+    glUniform1i(location(program, "u_first_sample"), accumulation.samples_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    accumulation.samples_ += draw;
+    left -= draw;
+  }
   glDisable(GL_BLEND);
   RenderTarget::unbind();
-  accumulation.samples_ += samples;
   gl::check_errors("Renderer::accumulate_environment");
 }
 

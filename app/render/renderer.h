@@ -96,7 +96,8 @@ class Renderer {
   // luminance distribution. Throws std::runtime_error for a black one.
   void upload_environment(const EnvironmentMap& map);
   // Adds `samples` estimates per pixel (3 directions each) to the accumulation, for the table slot's material; the
-  // accumulation covers a view of the sphere with the given aspect. Leaves the default framebuffer bound.
+  // accumulation covers a view of the sphere with the given aspect. Any number of samples: they are drawn in as many
+  // draws as llvmpipe's loop limit needs (renderer.cpp, samples_per_draw). Leaves the default framebuffer bound.
   void accumulate_environment(EnvironmentAccumulation& accumulation, const EnvironmentView& environment,
                               const SurfaceParams& surface, int samples, int slot = 0) const;
 
@@ -133,6 +134,7 @@ class Renderer {
   gl::Program accumulate_;
   struct EnvironmentTextures {
     gl::Texture radiance, density, marginal, conditional;
+    int width = 0, height = 0;  // the map's texels
   };
   EnvironmentTextures environment_;
   gl::Texture unscattered_plane_;  // the lobe plot's in-plane unscattered BTDF, refilled by every draw_lobes

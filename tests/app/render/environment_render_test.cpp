@@ -195,6 +195,41 @@ TEST(EnvironmentRender, BadEnvironmentsAndFlagsAreOneLineErrors) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// llvmpipe stops a shader's loops after 65535 iterations in all (renderer.cpp, samples_per_draw): one call of many
+// samples must add exactly what many small passes add (the same sequence points, summed in another order).
+TEST(EnvironmentRender, OneCallOfManySamplesAddsWhatManySmallPassesAdd) {
+  const int size = 32;
+  gl::OsmesaContext context(size, size);
+  Renderer renderer;
+  renderer.upload_environment(*builtin_environment("studio"));
+  ColorMaterial sharp;  // more modes than the default: more loop iterations per sample
+  sharp.layer.sigma = 0.15;
+  sharp.layer.g = 0.9;
+  const ColorTables tables = solve_color(sharp, 0.0);
+  renderer.upload(make_table_textures(tables));
+  const SurfaceParams surface{sharp.layer.eta, sharp.layer.sigma};
+  constexpr int kSamples = 1024;
+  EnvironmentAccumulation once(size, size), passes(size, size);
+  renderer.accumulate_environment(once, {}, surface, kSamples);
+  for (int pass = 0; pass < kSamples / 16; ++pass) renderer.accumulate_environment(passes, {}, surface, 16);
+  ASSERT_EQ(once.samples(), kSamples);
+  ASSERT_EQ(passes.samples(), kSamples);
+  const std::vector<float> a = once.target().read_rgba32f(), b = passes.target().read_rgba32f();
+  double worst = 0.0;  // relative, over every channel of every estimated texel (RGB sums and the sample count)
+  int estimated = 0;
+  for (std::size_t i = 0; i < a.size(); i += 4) {
+    ASSERT_EQ(a[i + 3] > 0.0f, b[i + 3] > 0.0f) << "texel " << i / 4;  // texels far outside the limb are skipped
+    if (b[i + 3] == 0.0f) continue;
+    ++estimated;
+    for (std::size_t c = 0; c < 4; ++c) {
+      ASSERT_GT(b[i + c], 0.0f) << "texel " << i / 4;
+      worst = std::max(worst, std::abs(static_cast<double>(a[i + c]) / b[i + c] - 1.0));
+    }
+  }
+  EXPECT_GT(estimated, size * size / 2);
+  EXPECT_LT(worst, 1e-4) << "modes " << tables.channels[0].modes();
+}
+
 // In process, from the float target (no .hdr quantization): rings of pixels at one angle each (the furnace is
 // symmetric about the view axis), their mean against the mean of R at each pixel's own angle.
 TEST(EnvironmentRender, TheFurnaceShowsTheDirectionalReflectanceAtEveryAngle) {
