@@ -11,10 +11,12 @@ float table_coordinate(float theta) {
   return (x * (size - 1.0) + 0.5) / size;
 }
 
+// textureLod: the tables have one level, and the environment's estimate sums them in non-uniform control flow,
+// where the implicit derivatives of texture() are undefined (GLSL 4.60, 8.9).
 vec3 sum_fourier_modes(sampler2DArray table, float theta_i, float theta_o, float phi) {
   vec2 uv = vec2(table_coordinate(theta_o), table_coordinate(theta_i));
   vec3 value = vec3(0.0);
-  for (int m = 0; m < u_modes; ++m) value += texture(table, vec3(uv, float(m))).rgb * cos(float(m) * phi);
+  for (int m = 0; m < u_modes; ++m) value += textureLod(table, vec3(uv, float(m)), 0.0).rgb * cos(float(m) * phi);
   return max(value, vec3(0.0));
 }
 
