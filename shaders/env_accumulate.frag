@@ -69,7 +69,12 @@ vec3 contribution(vec3 n, vec3 l, vec3 v) {
 }
 
 void main() {
-  vec3 n = sphere_normal(v_ndc * u_extent);
+  // Texels whose centre lies more than 1.5 texel diagonals outside the limb are never read (the display's bilinear
+  // filter reaches a texel only from within one diagonal of its centre; length(fwidth(p)) is the diagonal here).
+  // Skipping them saves about a tenth of each pass (bench_render: BM_EnvironmentFramePieces).
+  vec2 p = v_ndc * u_extent;
+  if (length(p) > 1.0 + 1.5 * length(fwidth(p))) discard;
+  vec3 n = sphere_normal(p);
   vec3 v = vec3(0.0, 0.0, 1.0);
   if (n.z <= 0.0) n = normalize(n + vec3(0.0, 0.0, 1e-3));  // the silhouette: just inside it
   g_state = uint(gl_FragCoord.x) * 1973u + uint(gl_FragCoord.y) * 9277u + u_seed * 26699u;

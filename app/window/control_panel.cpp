@@ -130,7 +130,7 @@ void status_line(const PanelStatus& status) {
   } else if (!status.solving) {
     ImGui::TextColored(kDimColor, "no result yet");
   }
-  if (status.environment_samples > 0) {  // the environment's estimate (app/window/environment_preview.h)
+  if (status.environment_samples > 0) {  // the environment's estimate (app/render/environment_preview.h)
     ImGui::SameLine();
     ImGui::TextColored(kDimColor, "| %d spp", status.environment_samples);
   }

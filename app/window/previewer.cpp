@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <deque>
 #include <filesystem>
@@ -23,10 +24,10 @@
 #include "app/preview/recent_files.h"
 #include "app/preview/solve_worker.h"
 #include "app/preview/view_layout.h"
+#include "app/render/environment_preview.h"
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
 #include "app/window/control_panel.h"
-#include "app/window/environment_preview.h"
 #include "app/window/export_job.h"
 #include "app/window/file_panel.h"
 #include "app/window/glfw_window.h"
@@ -563,10 +564,12 @@ class Previewer {
     const bool final_result = submitted_ && !worker_.settling();
     if (final_result && !error_.empty()) throw std::runtime_error(error_);
     if (!final_result || !shown_ || shown_->preview || !same_request(shown_->request, *submitted_)) return;
-    // Under an environment, the estimate has its --samples (and it belongs to what is shown).
+    // Under an environment, the estimate has its --samples (and it belongs to what is shown); a capture always
+    // shows the quarter-side estimate, never the coarse one of the first frame after a change.
     if (!state_.lighting.environment.empty()) {
       if (!environment_error_.empty()) throw std::runtime_error(environment_error_);
-      const int wanted = std::min(capture_samples_, EnvironmentPreview::kMaxSamples);
+      const int wanted =
+          std::clamp(capture_samples_, EnvironmentPreview::kFineShownFrom, EnvironmentPreview::kMaxSamples);
       if (environment_.samples() < wanted || (comparing() && environment_pinned_.samples() < wanted) ||
           !scene_.sphere.environment) {
         return;

@@ -6,6 +6,11 @@
 // The estimate is kept at a quarter of the sphere view's side (128 x 128 for a 512 x 512 view; the display filters
 // it up): at full resolution llvmpipe adds 10 samples per pixel per second on this machine, at a quarter 140, and the
 // centre reaches 1% noise in 2 s under the sky (docs/benchmarks.md, BM_EnvironmentConvergence).
+//
+// The frame right after a change shows a coarser estimate instead: one sample per pixel at an eighth of the side,
+// a quarter of the quarter-side pass's cost, so that the first environment-lit frame comes within a few ms of the
+// directional light's (bench_render: BM_EnvironmentChangeLatency). Each of its pixels covers four of the finer
+// estimate's, so the finer one is shown once it has kFineShownFrom samples per pixel and is no noisier.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +24,8 @@ namespace skinlayer {
 class EnvironmentPreview {
  public:
   static constexpr int kResolutionDivisor = 4;
+  static constexpr int kCoarseDivisor = 8;
+  static constexpr int kFineShownFrom = 4;
   static constexpr int kMaxSamples = 16384;
 
   // Makes `source` (a built-in name or a .hdr path; empty: none) the renderer's environment if it is not already.
@@ -37,19 +44,28 @@ class EnvironmentPreview {
     int height = 0;
     bool operator==(const Key&) const = default;
   };
-  // Adds passes for about budget_seconds (at least one sample), restarting first if the key changed. Returns true
-  // while the estimate is still refining (the window should draw again soon).
+  // If the key changed: restarts, and takes the coarse estimate's one sample and nothing more. Otherwise adds
+  // passes to the finer estimate for about budget_seconds (at least one sample). Returns true while the estimate is
+  // still refining (the window should draw again soon).
   bool refine(const Renderer& renderer, const Key& key, const EnvironmentView& view, const SurfaceParams& surface,
               double budget_seconds);
   // Drops the estimate (no environment shown).
-  void reset() { accumulation_.reset(); }
+  void reset() {
+    coarse_.reset();
+    fine_.reset();
+  }
 
-  const EnvironmentAccumulation* accumulation() const { return accumulation_ ? &*accumulation_ : nullptr; }
-  int samples() const { return accumulation_ ? accumulation_->samples() : 0; }
+  // The estimate to show (null when there is none) and its samples per pixel.
+  const EnvironmentAccumulation* accumulation() const;
+  int samples() const {
+    const EnvironmentAccumulation* shown = accumulation();
+    return shown ? shown->samples() : 0;
+  }
 
  private:
   std::string loaded_;
-  std::optional<EnvironmentAccumulation> accumulation_;
+  std::optional<EnvironmentAccumulation> coarse_;
+  std::optional<EnvironmentAccumulation> fine_;
   Key key_;
   int samples_per_pass_ = 1;
 };
