@@ -4,8 +4,8 @@
 // per pixel and the picture converges when the mouse stops.
 //
 // The estimate is kept at a quarter of the sphere view's side (128 x 128 for a 512 x 512 view; the display filters
-// it up): at full resolution llvmpipe adds 10 samples per pixel per second on this machine, at a quarter 140, and the
-// centre reaches 1% noise in 2 s under the sky (docs/benchmarks.md, BM_EnvironmentConvergence).
+// it up): at full resolution llvmpipe adds 10 samples per pixel per second on this machine, at a quarter about 190,
+// and the centre's noise 2 s after a change is 0.3-0.6% (bench_render: BM_EnvironmentConvergence).
 //
 // The frame right after a change shows a coarser estimate instead: one sample per pixel at an eighth of the side,
 // a quarter of the quarter-side pass's cost, so that the first environment-lit frame comes within a few ms of the
