@@ -28,8 +28,8 @@ namespace {
 
 constexpr int kSize = 256;
 constexpr double kMargin = 1.08;  // Renderer::kSphereMargin: the view shows 1.08 sphere radii each side
-constexpr double kInsideSquared =
-    0.5;  // compared pixels: sin^2 of the normal's angle to the view below this (45 degrees)
+// Compared pixels: sin^2 of the normal's angle to the view below this (45 degrees).
+constexpr double kInsideSquared = 0.5;
 
 struct Fixture {
   gl::OsmesaContext context{kSize, kSize};
@@ -48,15 +48,16 @@ struct Fixture {
   bool refine(const EnvironmentPreview::Key& key, double budget = 0.002) {
     return preview.refine(renderer, key, EnvironmentView{}, scene.surface, budget);
   }
-  // The linear picture drawn with the estimate now shown.
-  std::vector<float> picture() const {
+  // The linear picture drawn with `estimate` (by default the one the preview shows).
+  std::vector<float> picture(const EnvironmentAccumulation* estimate) const {
     RenderTarget target(kSize, kSize, PixelFormat::Rgba32F);
     target.bind();
     glClear(GL_COLOR_BUFFER_BIT);
-    renderer.draw_sphere(scene.sphere, scene.surface, Viewport{0, 0, kSize, kSize}, 0, preview.accumulation());
+    renderer.draw_sphere(scene.sphere, scene.surface, Viewport{0, 0, kSize, kSize}, 0, estimate);
     RenderTarget::unbind();
     return target.read_rgba32f();
   }
+  std::vector<float> picture() const { return picture(preview.accumulation()); }
 };
 
 int shown_width(const EnvironmentPreview& preview) {
@@ -121,12 +122,7 @@ TEST(EnvironmentPreview, AnEstimateOfAnySizeShowsTheSameRadiance) {
   const auto converged = [&](int divisor) {
     EnvironmentAccumulation accumulation(kSize / divisor, kSize / divisor);
     f.renderer.accumulate_environment(accumulation, EnvironmentView{}, f.scene.surface, 1024);
-    RenderTarget target(kSize, kSize, PixelFormat::Rgba32F);
-    target.bind();
-    glClear(GL_COLOR_BUFFER_BIT);
-    f.renderer.draw_sphere(f.scene.sphere, f.scene.surface, Viewport{0, 0, kSize, kSize}, 0, &accumulation);
-    RenderTarget::unbind();
-    return target.read_rgba32f();
+    return f.picture(&accumulation);
   };
   const std::vector<double> deviations = deviations_inside(converged(EnvironmentPreview::kCoarseDivisor),
                                                            converged(EnvironmentPreview::kResolutionDivisor));
@@ -136,20 +132,16 @@ TEST(EnvironmentPreview, AnEstimateOfAnySizeShowsTheSameRadiance) {
   EXPECT_LT(worst, 0.01);
 }
 
-// The estimate skips texels more than 1.5 texel diagonals outside the limb (shaders/env_accumulate.frag); the display's
-// bilinear filter must never need them: under the furnace every pixel of the sphere, up to the limb, is lit.
+// The estimate skips texels more than 1.5 texel diagonals outside the limb (shaders/env_accumulate.frag); the
+// display's bilinear filter must never need them: under the furnace every pixel of the sphere, up to the limb, is
+// lit, whatever the estimate's resolution.
 TEST(EnvironmentPreview, EveryPixelOfTheSphereReadsEstimatedTexels) {
   Fixture f;
   f.renderer.upload_environment(*builtin_environment("furnace"));
   for (int divisor : {1, EnvironmentPreview::kResolutionDivisor, EnvironmentPreview::kCoarseDivisor, 32}) {
     EnvironmentAccumulation accumulation(kSize / divisor, kSize / divisor);
     f.renderer.accumulate_environment(accumulation, EnvironmentView{}, f.scene.surface, 1);
-    RenderTarget target(kSize, kSize, PixelFormat::Rgba32F);
-    target.bind();
-    glClear(GL_COLOR_BUFFER_BIT);
-    f.renderer.draw_sphere(f.scene.sphere, f.scene.surface, Viewport{0, 0, kSize, kSize}, 0, &accumulation);
-    RenderTarget::unbind();
-    const std::vector<float> picture = target.read_rgba32f();
+    const std::vector<float> picture = f.picture(&accumulation);
     int inside = 0, dark = 0;
     for (int y = 0; y < kSize; ++y) {
       for (int x = 0; x < kSize; ++x) {

@@ -198,7 +198,7 @@ TEST(EnvironmentRender, BadEnvironmentsAndFlagsAreOneLineErrors) {
 // llvmpipe stops a shader's loops after 65535 iterations in all (renderer.cpp, samples_per_draw): one call of many
 // samples must add exactly what many small passes add (the same sequence points, summed in another order).
 TEST(EnvironmentRender, OneCallOfManySamplesAddsWhatManySmallPassesAdd) {
-  const int size = 32;
+  const int size = 16;
   gl::OsmesaContext context(size, size);
   Renderer renderer;
   renderer.upload_environment(*builtin_environment("studio"));
