@@ -56,13 +56,16 @@ void energy_readout(const SolveResult& shown, bool unicode) {
 // Pin as B (the shown material), or with B pinned: Unpin B and the split line's place.
 void ab_controls(ComparisonState& comparison, const PanelStatus& status, PanelActions& actions) {
   if (!comparison.pinned) {
-    ImGui::BeginDisabled(status.shown == nullptr);
+    // B is always a full solve: while a preview (capped resolution) is on screen, the button waits for it.
+    const bool preview = status.shown != nullptr && status.shown->preview;
+    ImGui::BeginDisabled(status.shown == nullptr || preview);
     actions.pin = ImGui::Button("Pin as B");
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
       ImGui::SetTooltip(
-          "Keep the shown material as B and go on editing A: the sphere shows A left of a split line\n"
-          "(drag it) and B right of it, under the same light; the lobes draw B as an outline.");
+          preview ? "A preview is on screen: B waits for the full solve."
+                  : "Keep the shown material as B and go on editing A: the sphere shows A left of a split line\n"
+                    "(drag it) and B right of it, under the same light; the lobes draw B as an outline.");
     }
     return;
   }

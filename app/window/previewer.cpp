@@ -293,9 +293,10 @@ class Previewer {
   }
 
   // The A/B comparison: the shown material becomes B, its tables copied to the pinned slot (no solve: they are
-  // what is on screen).
+  // what is on screen). Never a preview's tables (capped resolution): B would keep them, as no full solve of B's
+  // material is requested once A changes.
   void pin_shown(PreviewState& state) {
-    if (!shown_) return;
+    if (!shown_ || shown_->preview) return;
     state.comparison.pinned = shown_->request.material;
     pinned_tables_ = shown_->tables();
     TableTextureData copy = renderer_.table_data(static_cast<int>(shown_->request.material.model));
