@@ -63,11 +63,6 @@ LightingFlags lighting_from_flags(const ParsedFlags& flags) {
   return lighting;
 }
 
-EnvironmentMap load_environment(const std::string& source) {
-  if (std::optional<EnvironmentMap> builtin = builtin_environment(source)) return std::move(*builtin);
-  return read_hdr_environment(source);
-}
-
 std::string lighting_flags_usage() {
   return "  --env E              light the sphere by an environment: furnace (uniform radiance 1), studio (a\n"
          "                       softbox and two strip lights), sky (a sun and a sky), or an equirectangular\n"

@@ -29,8 +29,6 @@ struct LightingFlags {
 std::vector<std::string_view> lighting_flag_names();
 // Reads and checks the flags; throws UsageError naming the flag and its valid values.
 LightingFlags lighting_from_flags(const ParsedFlags& flags);
-// The environment's radiance map: a built-in, or the .hdr file (std::runtime_error naming it).
-EnvironmentMap load_environment(const std::string& source);
 std::string lighting_flags_usage();
 
 }  // namespace skinlayer::cli

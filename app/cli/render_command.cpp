@@ -17,6 +17,7 @@
 #include "app/material/atomic_file.h"
 #include "app/material/picture_metadata.h"
 #include "app/process/parallel_for.h"
+#include "app/render/environment_map.h"
 #include "app/render/hdr_export.h"
 #include "app/render/material_solve.h"
 #include "app/render/png_export.h"

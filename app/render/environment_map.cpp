@@ -7,6 +7,7 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace skinlayer {
 
@@ -138,6 +139,11 @@ EnvironmentMap read_hdr_environment(const std::string& path) {
     if (!std::isfinite(value) || value < 0.0f) value = 0.0f;
   }
   return map;
+}
+
+EnvironmentMap load_environment(const std::string& source) {
+  if (std::optional<EnvironmentMap> builtin = builtin_environment(source)) return std::move(*builtin);
+  return read_hdr_environment(source);
 }
 
 EnvironmentDistribution environment_distribution(const EnvironmentMap& map) {

@@ -33,6 +33,9 @@ inline constexpr std::array<std::string_view, 3> kBuiltinEnvironments = {"furnac
 // HDR image, or not twice as wide as high (within one pixel).
 EnvironmentMap read_hdr_environment(const std::string& path);
 
+// What `render --env` and the previewer accept: a built-in's name, else a .hdr path (read_hdr_environment's errors).
+EnvironmentMap load_environment(const std::string& source);
+
 // The unit direction at the centre of texel coordinates (u, v) in [0, 1]^2, and back.
 std::array<double, 3> environment_direction(double u, double v);
 std::array<double, 2> environment_coordinates(const std::array<double, 3>& direction);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "app/gl/gl_api.h"
+#include "app/render/environment_map.h"
 
 namespace skinlayer {
 namespace {
@@ -23,8 +24,7 @@ void restart(std::optional<EnvironmentAccumulation>& accumulation, int width, in
 std::string EnvironmentPreview::load(Renderer& renderer, const std::string& source) {
   if (source.empty() || source == loaded_) return "";
   try {
-    std::optional<EnvironmentMap> map = builtin_environment(source);
-    renderer.upload_environment(map ? *map : read_hdr_environment(source));
+    renderer.upload_environment(load_environment(source));
   } catch (const std::exception& error) {
     return error.what();
   }
