@@ -1,5 +1,6 @@
 #include "app/cli/environment_flags.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "app/cli/errors.h"
@@ -8,6 +9,17 @@
 #include "core/conventions.h"
 
 namespace skinlayer::cli {
+namespace {
+
+// The index of `word` in `names`; nullopt when it is none of them.
+template <std::size_t N>
+std::optional<std::size_t> index_of(const std::array<std::string_view, N>& names, std::string_view word) {
+  const auto found = std::find(names.begin(), names.end(), word);
+  if (found == names.end()) return std::nullopt;
+  return static_cast<std::size_t>(found - names.begin());
+}
+
+}  // namespace
 
 std::vector<std::string_view> lighting_flag_names() {
   return {"env", "env-rotate", "env-ev", "background", "samples", "light", "tonemap"};
@@ -27,15 +39,9 @@ LightingFlags lighting_from_flags(const ParsedFlags& flags) {
       number_flag(flags, "env-rotate", 0.0, -360.0, 360.0, " (degrees about the vertical, turning the environment)"));
   lighting.view.scale = std::exp2(number_flag(flags, "env-ev", 0.0, -20.0, 20.0, " (exposure value: radiance x 2^EV)"));
   const std::string_view background = flags.value("background").value_or("show");
-  if (background == "show") {
-    lighting.view.background = EnvironmentBackground::Show;
-  } else if (background == "blur") {
-    lighting.view.background = EnvironmentBackground::Blur;
-  } else if (background == "hide") {
-    lighting.view.background = EnvironmentBackground::Hide;
-  } else {
-    throw UsageError("background = " + quoted(background) + " is not one of: show, blur, hide");
-  }
+  const std::optional<std::size_t> backdrop = index_of(kBackgroundNames, background);
+  if (!backdrop) throw UsageError("background = " + quoted(background) + " is not one of: show, blur, hide");
+  lighting.view.background = static_cast<EnvironmentBackground>(*backdrop);
   if (const std::optional<std::string_view> text = flags.value("samples")) {
     const std::optional<double> value = parse_number(*text);
     if (!value || *value != std::floor(*value) || *value < 1 || *value > kMaxEnvironmentSamples) {
@@ -51,15 +57,9 @@ LightingFlags lighting_from_flags(const ParsedFlags& flags) {
     throw UsageError("--light off needs --env: nothing would light the sphere");
   }
   const std::string_view tonemap = flags.value("tonemap").value_or("exponential");
-  if (tonemap == "exponential") {
-    lighting.tone_map = ToneMap::Exponential;
-  } else if (tonemap == "aces") {
-    lighting.tone_map = ToneMap::Aces;
-  } else if (tonemap == "none") {
-    lighting.tone_map = ToneMap::None;
-  } else {
-    throw UsageError("tonemap = " + quoted(tonemap) + " is not one of: exponential, aces, none");
-  }
+  const std::optional<std::size_t> tone_map = index_of(kToneMapNames, tonemap);
+  if (!tone_map) throw UsageError("tonemap = " + quoted(tonemap) + " is not one of: exponential, aces, none");
+  lighting.tone_map = static_cast<ToneMap>(*tone_map);
   return lighting;
 }
 

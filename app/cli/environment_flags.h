@@ -3,6 +3,7 @@
 // exponential|aces|none (app/render/environment_map.h, app/render/renderer.h).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,6 +16,9 @@
 namespace skinlayer::cli {
 
 inline constexpr int kDefaultEnvironmentSamples = 256;
+// The flags' words for the backdrop and the tone map, indexed by the enums' values (also the picture metadata's).
+inline constexpr std::array<std::string_view, 3> kBackgroundNames = {"hide", "show", "blur"};
+inline constexpr std::array<std::string_view, 3> kToneMapNames = {"exponential", "aces", "none"};
 inline constexpr int kMaxEnvironmentSamples = 1 << 20;
 
 struct LightingFlags {

@@ -1,6 +1,5 @@
 #include "app/cli/render_command.h"
 
-#include <array>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -162,16 +161,14 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
                                      {"exposure", exposure},
                                      {"scale", std::string(scale)}};
   if (lighting.environment) {
-    constexpr std::array<const char*, 3> kBackgrounds = {"hide", "show", "blur"};
     settings["environment"] = {{"source", *lighting.environment},
                                {"rotate", radians_to_degrees(lighting.view.rotation)},
                                {"ev", std::log2(lighting.view.scale)},
-                               {"background", kBackgrounds[static_cast<std::size_t>(lighting.view.background)]},
+                               {"background", kBackgroundNames[static_cast<std::size_t>(lighting.view.background)]},
                                {"samples", lighting.samples},
                                {"light", lighting.directional_light}};
   }
-  constexpr std::array<const char*, 3> kToneMaps = {"exponential", "aces", "none"};
-  settings["tonemap"] = kToneMaps[static_cast<std::size_t>(lighting.tone_map)];
+  settings["tonemap"] = kToneMapNames[static_cast<std::size_t>(lighting.tone_map)];
   write_png(Image{width, height, target.read_rgba8()}, std::string(*output), {picture_metadata(drawn, settings)});
   out << "wrote " << *output << " (" << width << "x" << height << ")\n";
   return kExitSuccess;
