@@ -99,6 +99,23 @@ struct PreviewFrame {
   PreviewFrame() { target.bind(); }
 };
 
+// That frame under the studio environment, with the previewer's estimate of it (app/render/environment_preview.h).
+struct StudioFrame : PreviewFrame {
+  EnvironmentPreview preview;
+  std::string error = preview.load(renderer, "studio");  // "" when it loaded
+  // True (and the benchmark marked skipped, with the reason) when the studio did not load.
+  bool failed(benchmark::State& state) const {
+    if (!error.empty()) state.SkipWithError(error.c_str());
+    return !error.empty();
+  }
+  EnvironmentPreview::Key key{0, 0, 0.0, 1.0, kSize, kSize};
+  // What the previewer does after a change: a new result, so the estimate restarts (one coarse sample per pixel).
+  void restart(const SurfaceParams& surface) {
+    ++key.generation;
+    preview.refine(renderer, key, EnvironmentView{}, surface, 0.006);
+  }
+};
+
 // From a parameter change to a finished frame that shows it, at the paper's default material with an RGB albedo
 // (three channel solves), at 512 x 512: solve, texture resampling, upload and draw; no cache, one thread.
 void BM_ParameterChangeLatency(benchmark::State& state) {
@@ -127,17 +144,12 @@ BENCHMARK(BM_ParameterChangeLatency)->Arg(0)->Arg(1)->ArgNames({"rgb"})->Unit(be
 // after the other, so that the counters compare them in the same minutes of this noisy VM: directional_ms,
 // environment_ms and extra_ms (their difference), averages over the iterations.
 void BM_EnvironmentChangeLatency(benchmark::State& state) {
-  PreviewFrame frame;
+  StudioFrame frame;
+  if (frame.failed(state)) return;
   const int size = PreviewFrame::kSize;
   Renderer& renderer = frame.renderer;
-  EnvironmentPreview preview;
-  if (const std::string error = preview.load(renderer, "studio"); !error.empty()) {
-    state.SkipWithError(error.c_str());
-    return;
-  }
   ColorMaterial material;
   material.albedo_rgb = {0.95, 0.8, 0.7};
-  EnvironmentPreview::Key key{0, 0, 0.0, 1.0, size, size};
   const auto frame_after_step = [&](bool environment) {
     const auto start = std::chrono::steady_clock::now();
     material.layer.g = material.layer.g == 0.8 ? 0.79 : 0.8;
@@ -146,11 +158,10 @@ void BM_EnvironmentChangeLatency(benchmark::State& state) {
     Scene scene = make_scene(tables, ViewKind::Both, 0.785, 3.14159, 1.0, false);
     if (environment) {
       scene.sphere.environment = EnvironmentView{};
-      ++key.generation;  // a new result: the estimate restarts
-      preview.refine(renderer, key, EnvironmentView{}, scene.surface, 0.006);
+      frame.restart(scene.surface);
     }
     frame.target.bind();
-    draw_scene(renderer, scene, size, size, environment ? preview.accumulation() : nullptr);
+    draw_scene(renderer, scene, size, size, environment ? frame.preview.accumulation() : nullptr);
     glFinish();
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   };
@@ -170,27 +181,21 @@ BENCHMARK(BM_EnvironmentChangeLatency)->Unit(benchmark::kMillisecond)->UseRealTi
 // sample per pixel at an eighth of the side), 1 a 1-sample pass at a quarter of the side (each later refinement
 // pass), 2 the frame drawn with the environment (estimate and background), 3 the frame without it.
 void BM_EnvironmentFramePieces(benchmark::State& state) {
-  PreviewFrame frame;
+  StudioFrame frame;
+  if (frame.failed(state)) return;
   const int size = PreviewFrame::kSize;
   Renderer& renderer = frame.renderer;
-  EnvironmentPreview preview;
-  if (const std::string error = preview.load(renderer, "studio"); !error.empty()) {
-    state.SkipWithError(error.c_str());
-    return;
-  }
   const ColorTables tables = solve_color(ColorMaterial{}, 0.785);
   renderer.upload(make_table_textures(tables));
   Scene scene = make_scene(tables, ViewKind::Both, 0.785, 3.14159, 1.0, false);
-  EnvironmentPreview::Key key{0, 0, 0.0, 1.0, size, size};
-  preview.refine(renderer, key, EnvironmentView{}, scene.surface, 0.006);
+  frame.restart(scene.surface);
   EnvironmentAccumulation accumulation(size / EnvironmentPreview::kResolutionDivisor,
                                        size / EnvironmentPreview::kResolutionDivisor);
   renderer.accumulate_environment(accumulation, EnvironmentView{}, scene.surface, 1);
   if (state.range(0) == 2) scene.sphere.environment = EnvironmentView{};
   for (auto _ : state) {
     if (state.range(0) == 0) {
-      ++key.generation;
-      preview.refine(renderer, key, EnvironmentView{}, scene.surface, 0.006);
+      frame.restart(scene.surface);
     } else if (state.range(0) == 1) {
       renderer.accumulate_environment(accumulation, EnvironmentView{}, scene.surface, 1);
     } else {
