@@ -128,11 +128,14 @@ void probe_under_mouse(ImDrawList& draw, const Rect& plots, const ColorTables& t
 // A drag that starts within this many pixels of the A/B split line moves the line, not the light.
 constexpr float kSplitGrab = 8.0f;
 
+// The A/B split line's x on screen (Renderer::draw_split_sphere draws it there).
+float split_line_x(const Rect& sphere, double split) { return sphere.x + static_cast<float>(split) * sphere.width; }
+
 bool sphere_drag(const Rect& sphere, LightState& light, ComparisonState& comparison) {
   ImGui::SetCursorScreenPos(ImVec2(sphere.x, sphere.y));
   ImGui::InvisibleButton("sphere", ImVec2(sphere.width, sphere.height));
   const ImVec2 mouse = ImGui::GetIO().MousePos;
-  const float line = sphere.x + static_cast<float>(comparison.split) * sphere.width;
+  const float line = split_line_x(sphere, comparison.split);
   const bool near_line = comparison.pinned && std::abs(mouse.x - line) <= kSplitGrab;
   if (near_line && ImGui::IsItemHovered()) ImGui::SetMouseCursor(ImGuiMouseCursor_ResizeEW);
   // Which drag this is, kept while the button is held (ImGui's storage, as the sliders' reset press).
@@ -183,7 +186,7 @@ bool view_overlays(const ViewOverlayInput& input, LightState& light, ComparisonS
     light_marker(draw, layout.sphere, light);
     if (comparison.pinned) {  // which side is which
       const Rect& sphere = layout.sphere;
-      const float line = sphere.x + static_cast<float>(comparison.split) * sphere.width;
+      const float line = split_line_x(sphere, comparison.split);
       const float y = sphere.y + sphere.height - ImGui::GetTextLineHeight() - 10.0f;
       draw.AddText(ImVec2(line - ImGui::CalcTextSize("A (edited)").x - 8.0f, y), kLabelColor, "A (edited)");
       draw.AddText(ImVec2(line + 8.0f, y), kLabelColor, "B (pinned)");
