@@ -4,18 +4,12 @@
 #include <string_view>
 #include <vector>
 
-#include "app/cli/albedo_command.h"
+#include "app/cli/command_table.h"
 #include "app/cli/error_report.h"
 #include "app/cli/errors.h"
-#include "app/cli/eval_command.h"
-#include "app/cli/export_command.h"
-#include "app/cli/figures_command.h"
 #include "app/cli/help_command.h"
-#include "app/cli/material_command.h"
 #include "app/cli/previewer_launcher.h"
 #include "app/cli/quoted.h"
-#include "app/cli/render_command.h"
-#include "app/cli/validate_command.h"
 #include "app/process/heap_retention.h"
 
 namespace {
@@ -25,14 +19,9 @@ int dispatch(std::span<const std::string_view> arguments, int argc, char** argv)
   if (is_previewer_invocation(arguments)) exec_previewer(argc, argv);  // returns only by throwing
   const std::string_view command = arguments.front();
   const std::span<const std::string_view> rest = arguments.subspan(1);
-  if (command == "eval") return run_eval_command(rest, std::cin, std::cout);
-  if (command == "albedo") return run_albedo_command(rest, std::cout);
-  if (command == "render") return run_render_command(rest, std::cout, std::cerr);
-  if (command == "material") return run_material_command(rest, std::cout);
-  if (command == "presets") return run_presets_command(rest, std::cout);
-  if (command == "figures") return run_figures_command(rest, std::cout);
-  if (command == "validate") return run_validate_command(rest, std::cout);
-  if (command == "export") return run_export_command(rest, std::cout, std::cerr);
+  if (const Command* found = find_command(command)) {
+    return run_command(*found, rest, CommandStreams{std::cin, std::cout, std::cerr});
+  }
   if (command == "help" || command == "--help" || command == "-h") return run_help_command(rest, std::cout);
   if (command == "--version") {
     std::cout << "skinlayer " << SKINLAYER_VERSION << '\n';

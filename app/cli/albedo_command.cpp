@@ -62,10 +62,6 @@ std::string albedo_usage() {
 }
 
 int run_albedo_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  if (wants_help(arguments)) {
-    out << albedo_usage();
-    return kExitSuccess;
-  }
   const std::vector<std::string_view> flag_names = material_flags_and({kThetaFlag});
   const ParsedFlags flags = ParsedFlags::parse(arguments, flag_names, "skinlayer albedo");
   const Material material = material_from_flags(flags);

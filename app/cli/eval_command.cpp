@@ -34,10 +34,6 @@ std::string eval_usage() {
 }
 
 int run_eval_command(std::span<const std::string_view> arguments, std::istream& in, std::ostream& out) {
-  if (wants_help(arguments)) {
-    out << eval_usage();
-    return kExitSuccess;
-  }
   const ParsedFlags flags = ParsedFlags::parse(arguments, material_flags_and({kModelFlag}), "skinlayer eval");
   const MaterialDocument document = material_document_from_flags(flags);
   const Material material = single_channel(document);

@@ -60,10 +60,6 @@ int parse_nodes(std::optional<std::string_view> text) {
 }  // namespace
 
 int run_export_command(std::span<const std::string_view> arguments, std::ostream& out, std::ostream& progress) {
-  if (wants_help(arguments)) {
-    out << export_usage();
-    return kExitSuccess;
-  }
   const std::vector<std::string_view> known = material_flags_and({kModelFlag, "format", "output", "nodes"});
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer export");
   const std::optional<std::string_view> format = flags.value("format");

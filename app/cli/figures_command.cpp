@@ -29,10 +29,6 @@ std::string figures_usage() {
 }
 
 int run_figures_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  if (wants_help(arguments)) {
-    out << figures_usage();
-    return kExitSuccess;
-  }
   const std::vector<std::string_view> known = {"output", "size"};
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer figures");
   const std::optional<std::string_view> output = flags.value("output");

@@ -1,14 +1,8 @@
 #include "app/cli/help_command.h"
 
-#include "app/cli/albedo_command.h"
+#include "app/cli/command_table.h"
 #include "app/cli/errors.h"
-#include "app/cli/eval_command.h"
-#include "app/cli/export_command.h"
-#include "app/cli/figures_command.h"
-#include "app/cli/material_command.h"
 #include "app/cli/quoted.h"
-#include "app/cli/render_command.h"
-#include "app/cli/validate_command.h"
 
 namespace skinlayer::cli {
 
@@ -49,27 +43,11 @@ int run_help_command(std::span<const std::string_view> arguments, std::ostream& 
     return kExitSuccess;
   }
   if (arguments.size() > 1) throw UsageError("help takes at most one command name, as in skinlayer help eval");
-  const std::string_view command = arguments.front();
-  if (command == "eval") {
-    out << eval_usage();
-  } else if (command == "albedo") {
-    out << albedo_usage();
-  } else if (command == "render") {
-    out << render_usage();
-  } else if (command == "material") {
-    out << material_usage();
-  } else if (command == "presets") {
-    out << presets_usage();
-  } else if (command == "figures") {
-    out << figures_usage();
-  } else if (command == "validate") {
-    out << validate_usage();
-  } else if (command == "export") {
-    out << export_usage();
-  } else {
-    throw UsageError("unknown command " + quoted(command) +
-                     "; the commands are eval, albedo, render, material, presets, figures, export and validate");
+  const Command* command = find_command(arguments.front());
+  if (command == nullptr) {
+    throw UsageError("unknown command " + quoted(arguments.front()) + "; the commands are " + command_names());
   }
+  out << command->usage();
   return kExitSuccess;
 }
 

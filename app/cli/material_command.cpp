@@ -30,10 +30,6 @@ std::string material_usage() {
 }
 
 int run_material_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  if (wants_help(arguments)) {
-    out << material_usage();
-    return kExitSuccess;
-  }
   const std::vector<std::string_view> known = material_flags_and({kModelFlag, "name", "description", "output"});
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer material");
   MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
@@ -57,10 +53,6 @@ std::string presets_usage() {
 }
 
 int run_presets_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  if (wants_help(arguments)) {
-    out << presets_usage();
-    return kExitSuccess;
-  }
   if (!arguments.empty()) throw UsageError("presets takes no arguments; see skinlayer presets --help");
   std::size_t width = 0;
   const std::vector<PresetInfo> presets = preset_list();

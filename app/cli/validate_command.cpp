@@ -89,10 +89,6 @@ std::string validate_usage() {
 }
 
 int run_validate_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  if (wants_help(arguments)) {
-    out << validate_usage();
-    return kExitSuccess;
-  }
   const std::vector<std::string_view> known = {"output", "set", "seed", "threads"};
   const std::vector<std::string_view> switches = {"quick"};
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer validate", switches);

@@ -62,6 +62,23 @@ TEST(CliDispatch, OverviewNamesTheCommands) {
   }
 }
 
+// Every command answers --help and -h with its usage on stdout and exit 0, whatever other flags stand beside it,
+// the same text as `skinlayer help COMMAND`; and the overview names every command.
+TEST(CliDispatch, EveryCommandAnswersHelp) {
+  const std::string overview = run_skinlayer({"--help"}).out;
+  for (const std::string command :
+       {"eval", "albedo", "render", "material", "presets", "figures", "export", "validate"}) {
+    const ProcessResult help = run_skinlayer({command, "--help"});
+    EXPECT_EQ(help.exit_code, 0) << command << ": " << help.err;
+    EXPECT_EQ(help.err, "") << command;
+    EXPECT_TRUE(help.out.starts_with("Usage: skinlayer " + command)) << command << ": " << help.out;
+    EXPECT_EQ(run_skinlayer({command, "-h"}).out, help.out) << command;
+    EXPECT_EQ(run_skinlayer({command, "--sigma", "0.3", "--help"}).out, help.out) << command;
+    EXPECT_EQ(run_skinlayer({"help", command}).out, help.out) << command;
+    EXPECT_NE(overview.find("skinlayer " + command), std::string::npos) << command;
+  }
+}
+
 TEST(CliDispatch, VersionPrintsOneLine) {
   const ProcessResult result = run_skinlayer({"--version"});
   ASSERT_EQ(result.exit_code, 0);
