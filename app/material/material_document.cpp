@@ -36,6 +36,17 @@ AlbedoRgb MaterialDocument::layer_albedo(std::size_t i) const {
   return {grey, grey, grey};
 }
 
+DistinctChannels distinct_channels(const MaterialDocument& document) {
+  DistinctChannels channels;
+  for (std::size_t c = 0; c < 3; ++c) {
+    const Material channel = document.channel(static_cast<int>(c));  // the channels differ in their albedos only
+    const auto found = std::find(channels.materials.begin(), channels.materials.end(), channel);
+    channels.index[c] = static_cast<std::size_t>(found - channels.materials.begin());
+    if (found == channels.materials.end()) channels.materials.push_back(channel);
+  }
+  return channels;
+}
+
 MaterialDocument grey_document(const Material& material) {
   MaterialDocument document;
   document.layer = material;

@@ -34,6 +34,14 @@ struct MaterialDocument {
   AlbedoRgb layer_albedo(std::size_t i) const;
 };
 
+// The document's three channels as the distinct materials to solve: channel c (0 red, 1 green, 2 blue) is
+// materials[index[c]]. Channels whose layers' albedos are equal share one material, so a grey document has one.
+struct DistinctChannels {
+  std::vector<Material> materials;
+  std::array<std::size_t, 3> index{};
+};
+DistinctChannels distinct_channels(const MaterialDocument& document);
+
 // The document of a one-channel material: every layer's albedo the same in the three channels.
 MaterialDocument grey_document(const Material& material);
 

@@ -1,6 +1,5 @@
 #include "app/render/material_solve.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -54,15 +53,8 @@ ColorTables solve_color(const ColorMaterial& material, double theta_i, const Sol
   result.material = material;
   result.albedo_theta_i = theta_i;
   // One solve for the distinct channels (each its layers' albedos); the channels index into it.
-  const MaterialDocument document = material_document(material);
-  std::vector<Material> distinct;
-  std::array<std::size_t, 3> index{};
-  for (int c = 0; c < 3; ++c) {
-    const Material channel = document.channel(c);  // the channels differ in their albedos only
-    const auto found = std::find(distinct.begin(), distinct.end(), channel);
-    index[c] = static_cast<std::size_t>(found - distinct.begin());
-    if (found == distinct.end()) distinct.push_back(channel);
-  }
+  const DistinctChannels channels = distinct_channels(material_document(material));
+  const std::vector<Material>& distinct = channels.materials;
   std::vector<LayerTables> tables;
   std::vector<DirectionalAlbedo> albedo;
   const std::vector<std::vector<DirectionalAlbedo>> layer_albedo =
@@ -77,8 +69,8 @@ ColorTables solve_color(const ColorMaterial& material, double theta_i, const Sol
     }
   }
   for (int c = 0; c < 3; ++c) {
-    result.channels[c] = tables[index[c]];
-    result.albedo[c] = albedo[index[c]];
+    result.channels[c] = tables[channels.index[c]];
+    result.albedo[c] = albedo[channels.index[c]];
   }
   result.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
