@@ -1,4 +1,4 @@
-// Reads the reference tables in ../shared/reference as data (their values are never copied into the repo).
+// Reads the reference tables in tests/reference/ as data (their provenance is in tests/reference/README.md).
 #pragma once
 
 #include <fstream>

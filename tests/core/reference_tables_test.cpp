@@ -1,5 +1,5 @@
 // The solver against established radiative-transfer codes and published benchmarks for index-matched slabs
-// (../shared/reference/README.md): DISORT 128 streams, Prahl's adding-doubling, van de Hulst's tables.
+// (tests/reference/README.md): DISORT 128 streams, Prahl's adding-doubling, van de Hulst's tables.
 // Agreement: 0.5% relative wherever the reference value exceeds 1e-3 of the table's peak.
 #include <gtest/gtest.h>
 

@@ -53,7 +53,7 @@ TEST(SolverLimits, SingleScatteringClosedFormForThinSlab) {
 }
 
 // Semi-infinite isotropic scatterer: Chandrasekhar's H-function gives the albedo 1 - H(mu0) sqrt(1 - omega) and the
-// BRDF omega H(mu) H(mu0) / (4 pi (mu + mu0)) (table in ../shared/reference).
+// BRDF omega H(mu) H(mu0) / (4 pi (mu + mu0)) (table in tests/reference/).
 TEST(SolverLimits, SemiInfiniteIsotropicMatchesChandrasekharHFunction) {
   const test::CsvTable table = test::read_reference("analytic_Hfunction_isotropic_semiinfinite.csv");
   ASSERT_GT(table.rows.size(), 10u);

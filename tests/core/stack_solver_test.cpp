@@ -106,7 +106,7 @@ TEST(StackSolver, CuttingASlabIntoIdenticalSlabsChangesNothing) {
   }
 }
 
-// ../shared/reference/disort_multilayer_*.csv: index-matched stacks (eta 1, no interfaces), DISORT 128 streams.
+// tests/reference/disort_multilayer_*.csv: index-matched stacks (eta 1, no interfaces), DISORT 128 streams.
 Material disort_stack(const std::string& layers) {
   std::vector<StackedLayer> parsed;
   std::size_t start = 0;
