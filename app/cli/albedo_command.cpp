@@ -1,5 +1,6 @@
 #include "app/cli/albedo_command.h"
 
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -11,7 +12,9 @@
 #include "app/cli/numbers.h"
 #include "app/cli/numeric_table.h"
 #include "app/cli/quoted.h"
+#include "app/process/parallel_for.h"
 #include "core/conventions.h"
+#include "core/solve_cache.h"
 #include "core/solver.h"
 
 namespace skinlayer::cli {
@@ -42,7 +45,7 @@ std::vector<double> parse_theta_list(std::string_view list) {
 }  // namespace
 
 std::string albedo_usage() {
-  return "Usage: skinlayer albedo [material flags] [--theta-i LIST]\n"
+  return "Usage: skinlayer albedo [material flags] [--albedo A | r,g,b] [--theta-i LIST]\n"
          "\n"
          "Writes, one row per incidence angle, in the order given:\n"
          "  theta_i,reflectance_surface,reflectance_subsurface,reflectance,transmittance,absorptance\n"
@@ -51,46 +54,120 @@ std::string albedo_usage() {
          "unscattered beam. A stack (--layer, repeated) adds absorptance_layer1, absorptance_layer2, ...: what\n"
          "each layer's medium absorbs; the rest of absorptance is lost to the interfaces' shadowing and to a\n"
          "Lambertian base.\n"
+         "An RGB albedo (--albedo r,g,b, a preset, a material file or a stack's albedo=r:g:b) writes one column per\n"
+         "channel for what depends on colour: reflectance_surface, then reflectance_subsurface_r, _g, _b,\n"
+         "reflectance_*, transmittance_*, absorptance_* (and a stack's absorptance_layerK_*), each with _r, _g and\n"
+         "_b. Each channel is the grey solve with that channel's albedo. --albedo A makes any material grey.\n"
          "\n"
          "  --theta-i LIST\n"
          "      comma-separated incidence angles in degrees from the normal, each in [0, 90]; default " +
-         std::string(kDefaultThetas) + ".\n\n" + material_flags_usage() +
+         std::string(kDefaultThetas) + ".\n" + rgb_albedo_usage() + "\n" + material_flags_usage() +
          "\n"
          "Example:\n"
          "  skinlayer albedo --albedo 0.9 --g 0.5 --bottom lambert:0.3 --theta-i 0,45,85\n"
-         "  skinlayer albedo --layer tau=0.3,albedo=0.95,g=0.8 --layer T=0,albedo=0.99,g=0.7\n";
+         "  skinlayer albedo --layer tau=0.3,albedo=0.95,g=0.8 --layer T=0,albedo=0.99,g=0.7\n"
+         "  skinlayer albedo --preset skin-fair --theta-i 0,60\n";
 }
+
+namespace {
+
+// A stack's absorptance_layer1, absorptance_layer2, ...: what each layer's medium absorbs. None for one layer.
+std::vector<std::string> layer_absorptance_columns(const Material& material) {
+  std::vector<std::string> columns;
+  for (int i = 1; material.layer_count() > 1 && i <= material.layer_count(); ++i) {
+    columns.push_back("absorptance_layer" + std::to_string(i));
+  }
+  return columns;
+}
+
+// One row's values of each channel, in the grey table's column order after reflectance_surface.
+std::vector<double> colour_dependent_values(const DirectionalAlbedo& albedo) {
+  std::vector<double> values = {albedo.reflectance_subsurface, albedo.reflectance(), albedo.transmittance,
+                                albedo.absorptance};
+  values.insert(values.end(), albedo.layer_absorptance.begin(), albedo.layer_absorptance.end());
+  return values;
+}
+
+// A grey material: one column per quantity.
+NumericTable grey_table(const Material& material, std::span<const double> thetas_degrees,
+                        const std::vector<DirectionalAlbedo>& albedos) {
+  std::vector<std::string> columns = {"reflectance_surface", "reflectance_subsurface", "reflectance",
+                                      "transmittance", "absorptance"};
+  const std::vector<std::string> layer_columns = layer_absorptance_columns(material);
+  columns.insert(columns.end(), layer_columns.begin(), layer_columns.end());
+  NumericTable table({"theta_i"}, columns);
+  for (std::size_t index = 0; index < albedos.size(); ++index) {
+    std::vector<double> row = {thetas_degrees[index], albedos[index].reflectance_surface};
+    const std::vector<double> values = colour_dependent_values(albedos[index]);
+    row.insert(row.end(), values.begin(), values.end());
+    table.add_row(row);
+  }
+  return table;
+}
+
+// An RGB material: reflectance_surface (grey: the surface term has no albedo in it), then each colour-dependent
+// quantity's _r, _g and _b columns. channel_albedos[c] are channel c's rows.
+NumericTable rgb_table(const Material& material, std::span<const double> thetas_degrees,
+                       const std::array<const std::vector<DirectionalAlbedo>*, 3>& channel_albedos) {
+  std::vector<std::string> quantities = {"reflectance_subsurface", "reflectance", "transmittance", "absorptance"};
+  const std::vector<std::string> layer_columns = layer_absorptance_columns(material);
+  quantities.insert(quantities.end(), layer_columns.begin(), layer_columns.end());
+  std::vector<std::string> columns = {"reflectance_surface"};
+  for (const std::string& quantity : quantities) {
+    const std::vector<std::string> names = channel_columns(quantity);
+    columns.insert(columns.end(), names.begin(), names.end());
+  }
+  NumericTable table({"theta_i"}, columns);
+  for (std::size_t index = 0; index < thetas_degrees.size(); ++index) {
+    std::array<std::vector<double>, 3> values;
+    for (std::size_t c = 0; c < 3; ++c) values[c] = colour_dependent_values((*channel_albedos[c])[index]);
+    std::vector<double> row = {thetas_degrees[index], (*channel_albedos[0])[index].reflectance_surface};
+    for (std::size_t q = 0; q < quantities.size(); ++q) {
+      for (std::size_t c = 0; c < 3; ++c) row.push_back(values[c][q]);
+    }
+    table.add_row(row);
+  }
+  return table;
+}
+
+}  // namespace
 
 int run_albedo_command(std::span<const std::string_view> arguments, std::ostream& out) {
   const std::vector<std::string_view> flag_names = material_flags_and({kThetaFlag});
   const ParsedFlags flags = ParsedFlags::parse(arguments, flag_names, "skinlayer albedo");
-  const Material material = material_from_flags(flags);
+  const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
   const std::vector<double> thetas_degrees = parse_theta_list(flags.value(kThetaFlag).value_or(kDefaultThetas));
 
   std::vector<double> thetas_radians;
   for (const double theta : thetas_degrees) thetas_radians.push_back(degrees_to_radians(theta));
-  const std::vector<DirectionalAlbedo> albedos = directional_albedo(material, thetas_radians);
-  if (albedos.size() != thetas_degrees.size()) {
-    throw std::runtime_error("the solver returned " + std::to_string(albedos.size()) + " albedo rows for " +
-                             std::to_string(thetas_degrees.size()) + " angles");
-  }
+  const auto check_rows = [&thetas_degrees](const std::vector<DirectionalAlbedo>& albedos) {
+    if (albedos.size() != thetas_degrees.size()) {
+      throw std::runtime_error("the solver returned " + std::to_string(albedos.size()) + " albedo rows for " +
+                               std::to_string(thetas_degrees.size()) + " angles");
+    }
+  };
 
-  // A stack adds what each of its layers absorbs, after the columns a single layer has.
-  std::vector<std::string> layer_columns;
-  for (int i = 1; material.layer_count() > 1 && i <= material.layer_count(); ++i) {
-    layer_columns.push_back("absorptance_layer" + std::to_string(i));
-  }
-  std::vector<std::string_view> columns = {"reflectance_surface", "reflectance_subsurface", "reflectance",
-                                           "transmittance", "absorptance"};
-  columns.insert(columns.end(), layer_columns.begin(), layer_columns.end());
-  NumericTable table({"theta_i"}, columns);
-  for (std::size_t index = 0; index < albedos.size(); ++index) {
-    const DirectionalAlbedo& albedo = albedos[index];
-    std::vector<double> row = {thetas_degrees[index], albedo.reflectance_surface, albedo.reflectance_subsurface,
-                               albedo.reflectance(),  albedo.transmittance,       albedo.absorptance};
-    if (!layer_columns.empty()) row.insert(row.end(), albedo.layer_absorptance.begin(), albedo.layer_absorptance.end());
-    table.add_row(row);
-  }
+  NumericTable table = [&] {
+    if (document.grey()) {
+      const Material material = single_channel(document);
+      const std::vector<DirectionalAlbedo> albedos = directional_albedo(material, thetas_radians);
+      check_rows(albedos);
+      return grey_table(material, thetas_degrees, albedos);
+    }
+    // One solve per distinct channel, each exactly the grey solve of that channel's material, through one cache.
+    const DistinctChannels channels = distinct_channels(document);
+    SolveCache cache;
+    SolveOptions options;
+    options.cache = &cache;
+    options.parallel_for = parallel_for_threads;
+    std::vector<std::vector<DirectionalAlbedo>> distinct;
+    for (const Material& material : channels.materials) {
+      distinct.push_back(directional_albedo(material, thetas_radians, options));
+      check_rows(distinct.back());
+    }
+    return rgb_table(document.layer, thetas_degrees,
+                     {&distinct[channels.index[0]], &distinct[channels.index[1]], &distinct[channels.index[2]]});
+  }();
   table.require_finite();
   table.write_csv(out);
   return kExitSuccess;

@@ -1,5 +1,7 @@
 #include "app/cli/eval_command.h"
 
+#include <array>
+#include <string>
 #include <vector>
 
 #include "app/cli/csv_reader.h"
@@ -8,14 +10,16 @@
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
 #include "app/cli/numeric_table.h"
+#include "app/process/parallel_for.h"
 #include "core/conventions.h"
+#include "core/solve_cache.h"
 #include "core/solver.h"
 #include "core/subsurface_model.h"
 
 namespace skinlayer::cli {
 
 std::string eval_usage() {
-  return "Usage: skinlayer eval [material flags] [--model stam|lambert|hk] < rows.csv\n"
+  return "Usage: skinlayer eval [material flags] [--albedo A | r,g,b] [--model stam|lambert|hk] < rows.csv\n"
          "\n"
          "Reads CSV rows theta_i,theta_o,phi from stdin and writes, one row per input row, in order:\n"
          "  theta_i,theta_o,phi,brdf_surface,brdf_subsurface,brdf,btdf\n"
@@ -24,22 +28,69 @@ std::string eval_usage() {
          "theta_o lie in [0, 90]; phi is any finite number. The first line may be the header theta_i,theta_o,phi.\n"
          "BSDFs are plain (not cosine-weighted), in 1/sr; brdf = brdf_surface + brdf_subsurface; btdf is the\n"
          "radiance BSDF into the medium below without the unscattered beam (0 for --bottom lambert:A).\n"
+         "An RGB albedo (--albedo r,g,b, a preset, a material file or a stack's albedo=r:g:b) writes one column per\n"
+         "channel for what depends on colour; the surface term does not:\n"
+         "  theta_i,theta_o,phi,brdf_surface,brdf_subsurface_r,brdf_subsurface_g,brdf_subsurface_b,\n"
+         "  brdf_r,brdf_g,brdf_b,btdf_r,btdf_g,btdf_b\n"
+         "Each channel is the grey solve with that channel's albedo. --albedo A makes any material grey.\n"
          "--model picks the subsurface model (the surface term is the same): stam, the layer model (default);\n"
          "lambert, A/pi with the layer's albedo at normal incidence; hk, Hanrahan-Krueger single scattering.\n"
          "\n" +
-         material_flags_usage() +
+         rgb_albedo_usage() + "\n" + material_flags_usage() +
          "\n"
          "Example:\n"
-         "  printf 'theta_i,theta_o,phi\\n30,30,180\\n' | skinlayer eval --sigma 0.3 --T 0.5 --bottom matched\n";
+         "  printf 'theta_i,theta_o,phi\\n30,30,180\\n' | skinlayer eval --sigma 0.3 --T 0.5 --bottom matched\n"
+         "  printf '30,30,180\\n' | skinlayer eval --preset skin-fair\n";
 }
 
-int run_eval_command(std::span<const std::string_view> arguments, std::istream& in, std::ostream& out) {
-  const ParsedFlags flags = ParsedFlags::parse(arguments, material_flags_and({kModelFlag}), "skinlayer eval");
-  const MaterialDocument document = material_document_from_flags(flags);
-  const Material material = single_channel(document);
-  const LayerTables tables = solve_model(material, model_from_flags(flags, document.model));
-  const std::vector<AngleRow> rows = read_angle_rows(in);
+namespace {
 
+// Each channel's tables: one solve per distinct channel (channels of equal albedos share one), through one cache,
+// so the interface operators are built once.
+std::vector<LayerTables> solve_channels(const DistinctChannels& channels, SubsurfaceModel model) {
+  SolveCache cache;
+  SolveOptions options;
+  options.cache = &cache;
+  options.parallel_for = parallel_for_threads;
+  std::vector<LayerTables> tables;
+  for (const Material& material : channels.materials) tables.push_back(solve_model(material, model, options));
+  return tables;
+}
+
+// An RGB material: the surface term, grey, then the subsurface BRDF, the BRDF and the BTDF per channel.
+void write_rgb_rows(const MaterialDocument& document, SubsurfaceModel model, std::istream& in, std::ostream& out) {
+  const DistinctChannels channels = distinct_channels(document);
+  const std::vector<LayerTables> solved = solve_channels(channels, model);
+  const std::vector<AngleRow> rows = read_angle_rows(in);
+  std::vector<std::string> columns = {"brdf_surface"};
+  for (const char* quantity : {"brdf_subsurface", "brdf", "btdf"}) {
+    const std::vector<std::string> names = channel_columns(quantity);
+    columns.insert(columns.end(), names.begin(), names.end());
+  }
+  NumericTable table({"theta_i", "theta_o", "phi"}, columns);
+  for (const AngleRow& row : rows) {
+    const double theta_i = degrees_to_radians(row.theta_i);
+    const double theta_o = degrees_to_radians(row.theta_o);
+    const double phi = degrees_to_radians(row.phi);
+    const double surface = brdf_surface(channels.materials.front(), theta_i, theta_o, phi);  // no albedo in it
+    std::array<double, 3> subsurface{}, btdf{};
+    for (std::size_t c = 0; c < 3; ++c) {
+      const LayerTables& tables = solved[channels.index[c]];
+      subsurface[c] = tables.brdf_subsurface(theta_i, theta_o, phi);
+      btdf[c] = tables.btdf(theta_i, theta_o, phi);
+    }
+    table.add_row({row.theta_i, row.theta_o, row.phi, surface, subsurface[0], subsurface[1], subsurface[2],
+                   surface + subsurface[0], surface + subsurface[1], surface + subsurface[2], btdf[0], btdf[1],
+                   btdf[2]});
+  }
+  table.require_finite();
+  table.write_csv(out);
+}
+
+// A grey material: one solve, one column per quantity.
+void write_grey_rows(const Material& material, SubsurfaceModel model, std::istream& in, std::ostream& out) {
+  const LayerTables tables = solve_model(material, model);
+  const std::vector<AngleRow> rows = read_angle_rows(in);
   NumericTable table({"theta_i", "theta_o", "phi"}, {"brdf_surface", "brdf_subsurface", "brdf", "btdf"});
   for (const AngleRow& row : rows) {
     const double theta_i = degrees_to_radians(row.theta_i);
@@ -52,6 +103,19 @@ int run_eval_command(std::span<const std::string_view> arguments, std::istream& 
   }
   table.require_finite();
   table.write_csv(out);
+}
+
+}  // namespace
+
+int run_eval_command(std::span<const std::string_view> arguments, std::istream& in, std::ostream& out) {
+  const ParsedFlags flags = ParsedFlags::parse(arguments, material_flags_and({kModelFlag}), "skinlayer eval");
+  const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  const SubsurfaceModel model = model_from_flags(flags, document.model);
+  if (document.grey()) {
+    write_grey_rows(single_channel(document), model, in, out);
+  } else {
+    write_rgb_rows(document, model, in, out);
+  }
   return kExitSuccess;
 }
 

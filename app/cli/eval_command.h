@@ -4,7 +4,9 @@
 //   theta_i,theta_o,phi,brdf_surface,brdf_subsurface,brdf,btdf
 // one row per input row, in order: the angles as parsed (degrees, in the shortest form that reads back exactly),
 // then the BSDFs in 1/sr with "%.17g" (brdf = brdf_surface + brdf_subsurface). Output is all or nothing: nothing is
-// written unless every row parsed and every value is finite.
+// written unless every row parsed and every value is finite. An RGB albedo solves each distinct channel and writes
+//   theta_i,theta_o,phi,brdf_surface,brdf_subsurface_{r,g,b},brdf_{r,g,b},btdf_{r,g,b}
+// (each channel the grey solve with that channel's albedo; the surface term does not depend on colour).
 #pragma once
 
 #include <istream>

@@ -20,7 +20,8 @@ std::string material_usage() {
          "to FILE.json or to stdout. Start from --material FILE or --preset NAME and change values with flags, as in\n"
          "  skinlayer material --preset skin-fair --sigma 0.3 -o my-skin.json\n"
          "Any command then reads it back with --material my-skin.json.\n"
-         "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in [0, 1]\n"
+         +
+         rgb_albedo_usage() +
          "  --model M            subsurface model stored in the file: stam (default), lambert or hk\n"
          "  --name N             the material's name (default: the file's or preset's)\n"
          "  --description D      a one-line description (default: the file's or preset's)\n"

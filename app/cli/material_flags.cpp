@@ -212,6 +212,12 @@ std::string material_to_flags(const Material& material) {
   return text;
 }
 
+std::string rgb_albedo_usage() {
+  const ParameterInfo& albedo = parameter_info("albedo");
+  return "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in " + range_text(albedo) +
+         " (default " + format_short(albedo.default_value) + ")\n";
+}
+
 std::string material_flags_usage() {
   std::string text =
       "Material flags (--name value or --name=value; an omitted flag takes its default, or the file's):\n"

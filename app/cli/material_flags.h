@@ -52,6 +52,9 @@ std::array<double, 3> albedo_rgb_from_text(std::string_view text);
 // bottom's own sigma and eta and --ordinates only when set), each number in its shortest exact form.
 std::string material_to_flags(const Material& material);
 
+// The help line of --albedo where it takes RGB: "  --albedo A | r,g,b   ..." with its range and default.
+std::string rgb_albedo_usage();
+
 // Help text for the material flags: every flag with its meaning, symbol, range and default, from
 // skinlayer::parameter_table().
 std::string material_flags_usage();

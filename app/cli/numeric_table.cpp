@@ -8,7 +8,7 @@
 
 namespace skinlayer::cli {
 
-NumericTable::NumericTable(std::vector<std::string_view> input_columns, std::vector<std::string_view> computed_columns)
+NumericTable::NumericTable(std::vector<std::string> input_columns, std::vector<std::string> computed_columns)
     : columns_(std::move(input_columns)), input_columns_(columns_.size()) {
   columns_.insert(columns_.end(), computed_columns.begin(), computed_columns.end());
 }
@@ -25,7 +25,7 @@ void NumericTable::require_finite() const {
     if (!std::isfinite(values_[index])) {
       const std::size_t row = index / columns_.size() + 1;
       throw std::runtime_error("output row " + std::to_string(row) + ": " +
-                               std::string(columns_[index % columns_.size()]) + " = " + format_number(values_[index]) +
+                               columns_[index % columns_.size()] + " = " + format_number(values_[index]) +
                                " is not finite; no output was written");
     }
   }
@@ -46,6 +46,12 @@ void NumericTable::write_csv(std::ostream& out) const {
   out << text;
   out.flush();
   if (!out) throw std::runtime_error("could not write the output");
+}
+
+std::vector<std::string> channel_columns(std::string_view name) {
+  std::vector<std::string> columns;
+  for (const char* suffix : {"_r", "_g", "_b"}) columns.push_back(std::string(name) + suffix);
+  return columns;
 }
 
 }  // namespace skinlayer::cli

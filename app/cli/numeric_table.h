@@ -12,7 +12,7 @@ namespace skinlayer::cli {
 
 class NumericTable {
  public:
-  NumericTable(std::vector<std::string_view> input_columns, std::vector<std::string_view> computed_columns);
+  NumericTable(std::vector<std::string> input_columns, std::vector<std::string> computed_columns);
 
   // Appends one row. Throws std::logic_error unless it has one value per column.
   void add_row(const std::vector<double>& values);
@@ -26,9 +26,12 @@ class NumericTable {
   void write_csv(std::ostream& out) const;
 
  private:
-  std::vector<std::string_view> columns_;  // input columns, then computed columns
+  std::vector<std::string> columns_;  // input columns, then computed columns
   std::size_t input_columns_ = 0;
   std::vector<double> values_;  // row-major
 };
+
+// The columns of a quantity that depends on colour, one per channel: name_r, name_g, name_b.
+std::vector<std::string> channel_columns(std::string_view name);
 
 }  // namespace skinlayer::cli

@@ -58,7 +58,8 @@ std::string render_usage() {
          "\n"
          "Renders the previewer's picture offscreen (OSMesa, no display needed) with the same renderer as the\n"
          "window and writes it as PNG, or as linear radiance without a tone map (.hdr, --view sphere).\n"
-         "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in [0, 1] (default 1)\n"
+         +
+         rgb_albedo_usage() +
          "  --model M            subsurface model: stam (default), lambert or hk (Hanrahan-Krueger)\n"
          "  --light-theta D      light angle from the view direction, degrees in [0, 89.9] (default 45)\n"
          "  --light-phi D        light azimuth in the picture plane, degrees (default 180: from the left)\n"

@@ -134,7 +134,6 @@ TEST_F(MaterialCommands, EveryFailureIsOneLineAndWritesNothing) {
   EXPECT_TRUE(failed_with_one_line(eval_with({"--preset", "nope"}), 2, {"unknown preset \"nope\"", "skin-fair"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--preset", "wax", "--material", path("typo.json")}), 2,
                                    {"--material", "--preset"}));
-  EXPECT_TRUE(failed_with_one_line(eval_with({"--preset", "skin-fair"}), 2, {"RGB", "--albedo"}));
   EXPECT_TRUE(
       failed_with_one_line(eval_with({"--preset", "paint-red-base", "--albedo", "0.5", "--bottom-sigma", "0.2"}), 2,
                            {"bottom-sigma", "lambert", "paint-red-base"}));

@@ -111,7 +111,9 @@ TEST(StackCommands, BadLayersAreOneLineNamingThePlaceTheKeyAndTheRange) {
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", good, "--layer", "albedo=0.5"}), 2, {"layer 2", "T", "tau"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,colour=red"}), 2, {"layer 1", "colour"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,albedo=x"}), 2, {"layer 1", "albedo", "x"}));
-  EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,albedo=0.9:0.8:0.7"}), 2, {"layer 1", "RGB"}));
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,albedo=0.9:0.8"}), 2, {"layer 1", "r:g:b"}));
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,albedo=0.9:0.8:1.7"}), 2,
+                                   {"layer 1", "albedo = 1.7", "[0, 1]"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,sigma=0.3,eta=1.2"}), 2, {"layer 1", "top"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--g", "0.5", "--layer", good}), 2, {"--g", "--layer"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", good, "--layer", good, "--model", "hk"}), 2,
