@@ -237,7 +237,9 @@ void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface,
   glUniform1f(location(program, "u_irradiance"), static_cast<float>(view.irradiance));
   glUniform1f(location(program, "u_exposure"), static_cast<float>(view.exposure));
   glUniform1i(location(program, "u_output_linear"), view.linear_output ? 1 : 0);
-  glUniform3f(location(program, "u_background"), 0.02f, 0.02f, 0.025f);
+  // A hidden environment, or none, leaves the flat backdrop: a display colour, or in linear radiance no light at all.
+  const std::array<float, 3> backdrop = view.linear_output ? std::array<float, 3>{} : kFlatBackdrop;
+  glUniform3f(location(program, "u_background"), backdrop[0], backdrop[1], backdrop[2]);
   glBindVertexArray(vertex_array_.get());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   gl::check_errors("Renderer::draw_sphere");

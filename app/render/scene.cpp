@@ -88,7 +88,7 @@ void draw_scene(const Renderer& renderer, const Scene& scene, int width, int hei
                 const EnvironmentAccumulation* environment) {
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
-  glClearColor(0.02f, 0.02f, 0.025f, 1.0f);
+  glClearColor(kFlatBackdrop[0], kFlatBackdrop[1], kFlatBackdrop[2], 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   const std::vector<Viewport> viewports = scene_viewports(scene.view, width, height);
   if (scene.view == ViewKind::Sphere) renderer.draw_sphere(scene.sphere, scene.surface, viewports[0], 0, environment);

@@ -121,6 +121,42 @@ TEST(EnvironmentRender, AConstantHdrFileGivesTheFurnacesPicture) {
   EXPECT_NEAR(from_file.at(0, 0, 0), 1.0, 0.01);
 }
 
+// In linear radiance the backdrop is light or nothing: a hidden environment, and a picture without one, leave zero
+// radiance behind the sphere (so that it composites and a furnace check finds the sphere); shown, it is the
+// environment's radiance. The PNG keeps its flat display colour.
+TEST(EnvironmentRender, AHiddenBackdropIsZeroRadianceInLinearOutput) {
+  const Picture hidden = render({"--env", "furnace", "--samples", "8", "--background", "hide"}, temporary("h", ".hdr"));
+  const Picture directional = render({}, temporary("n", ".hdr"));
+  const Picture shown = render({"--env", "furnace", "--samples", "8", "--background", "show"}, temporary("s", ".hdr"));
+  ASSERT_EQ(hidden.width, kSize);
+  ASSERT_EQ(directional.width, kSize);
+  ASSERT_EQ(shown.width, kSize);
+  const int far = kSize - 1;
+  for (const auto& [x, y] : {std::pair{0, 0}, std::pair{far, 0}, std::pair{0, far}, std::pair{far, far}}) {
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(hidden.at(x, y, c), 0.0) << x << "," << y << " channel " << c;
+      EXPECT_EQ(directional.at(x, y, c), 0.0) << x << "," << y << " channel " << c;
+      EXPECT_NEAR(shown.at(x, y, c), 1.0, 0.01) << x << "," << y << " channel " << c;
+    }
+  }
+  // The sphere itself is lit in all three.
+  EXPECT_GT(hidden.at(kSize / 2, kSize / 2, 0), 0.1);
+  EXPECT_GT(directional.at(kSize / 2, kSize / 2, 0), 0.1);
+  // The PNG's backdrop is the flat colour, not black.
+  const fs::path png = temporary("h", ".png");
+  const test::ProcessResult drawn = test::run_skinlayer({"render", "--view", "sphere", "--size", "48x48", "--env",
+                                                        "furnace", "--samples", "8", "--background", "hide", "-o",
+                                                        png.string()});
+  ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
+  int width = 0, height = 0, channels = 0;
+  const std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load(png.c_str(), &width, &height, &channels, 3),
+                                                               stbi_image_free);
+  fs::remove(png);
+  ASSERT_TRUE(pixels);
+  EXPECT_GT(pixels.get()[0], 0);
+  EXPECT_GT(pixels.get()[2], pixels.get()[0]);  // the backdrop's slight blue
+}
+
 // A patch 2 degrees in radius whose radiance times its solid angle is the directional light's irradiance (pi)
 // lights the sphere as that light does, at every lit pixel well inside the terminator.
 TEST(EnvironmentRender, ATinyBrightPatchGivesTheDirectionalLightsPicture) {
