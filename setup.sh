@@ -7,8 +7,7 @@
 #   ./setup.sh test    install, configure, build everything and run every test; then build core, the command line's
 #                      GL-free parsers and their tests again under AddressSanitizer + UndefinedBehaviorSanitizer
 #                      (build-sanitize/: SKINLAYER_SANITIZE=ON, SKINLAYER_BUILD_APP=OFF) and run those tests too,
-#                      where any sanitizer report fails the test (the four slowest numerical tests excepted: see
-#                      sanitize_skip)
+#                      where any sanitizer report fails the test
 #
 # Idempotent: apt is skipped when every package is already installed, and an existing build folder is reused.
 set -euo pipefail
@@ -28,13 +27,6 @@ readonly sanitizer_env=(
   ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1:strict_string_checks=1
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 )
-# The sanitized run leaves out the four slowest numerical tests (10-20x slower there, 60-130 s each on 2 cores,
-# about 3 minutes of the 30 CI allows). They run in the plain stage, and lighter tests take the same code under the
-# sanitizers: SolverEnergy.InteractingExtremeParameters… solves the same conservative, backward-scattering matched
-# half-space (at eta 2.5); UnscatteredLight's closed-form and two-interface tests evaluate the same lobes;
-# AutomaticResolution.SharpInterfaces… solves at sharp interfaces; StackSolver.InternalInterfaceStacks… stacks
-# layers across an internal interface.
-readonly sanitize_skip='^(SolverEnergy\.ConservativeHalfSpaceWithoutInterfaceAtExtremeAsymmetryGivesFiniteBoundedValues|UnscatteredLight\.PublishedValuesAtTheSharpLobes|PointAccuracy\.SharpInterfacesAreWithinOnePercentAtEveryJudgedPoint|StackSolver\.UnscatteredLightThroughAnInterfaceBetweenLayersIsExact)$'
 
 install_packages() {
   local missing=()
@@ -76,7 +68,7 @@ sanitize_test() {
   fi
   # The build runs the test executables too (gtest_discover_tests lists their tests), so it gets the options.
   env "${sanitizer_env[@]}" cmake --build "$sanitize_dir" -j2
-  env "${sanitizer_env[@]}" ctest --test-dir "$sanitize_dir" --output-on-failure -j2 -E "$sanitize_skip"
+  env "${sanitizer_env[@]}" ctest --test-dir "$sanitize_dir" --output-on-failure -j2
 }
 
 install_packages
