@@ -1,5 +1,5 @@
 // Homogeneous solutions of the discrete-ordinate transfer equation of one Fourier mode, by the half-size
-// symmetric eigen-reduction (Stamnes & Swanson 1981; model-spec §6).
+// symmetric eigen-reduction (Stamnes & Swanson 1981; docs/model.md §8).
 //
 // Per mode m, with nodes mu_i > 0, weights a_i (sum 1), s = Omega c_m, P++ = p^m(mu_i, mu_j), P+- = p^m(mu_i, -mu_j):
 //   alpha = M^-1 (I - s P++ A),   beta = M^-1 s P+- A,   d/dtau [u+; u-] = [[alpha, -beta], [beta, -alpha]] [u+; u-],

@@ -258,7 +258,7 @@ int refracted_lobe_ordinates(const LayerGeometry& geometry) {
 // Measured pointwise against a 95-node grid (docs/accuracy.md): a bottom bounce errs 8.8% at h = 0.75 s (sigma3
 // 0.05, T 0.5, Omega 0) and 0.6% at 0.37 s, and 1.2% at 0.27 s where the bottom's critical angle cuts the lobe
 // (sigma3 0.1, eta3 1.2): h <= 0.22 s. A forward lobe of width w errs 2.6% at h = 0.64 w and 0.57% at 0.43 w; the
-// DISORT stacks (../shared/reference/disort_multilayer_intensities.csv, g 0.8 under T 0.22 and 0.1) err 0.17-0.22%
+// DISORT stacks (tests/reference/disort_multilayer_intensities.csv, g 0.8 under T 0.22 and 0.1) err 0.17-0.22%
 // straight through at 0.4 w (K 48) and 1.4e-4 at 0.25 w (K 64): h <= 0.25 w where T >= 0.05. At eta 1.05, sigma 1 (N
 // 128) h = 1.1 w errs 1.2%, 0.73 w 0.5%: h <= 0.8 w, relaxed as eta leaves 1.1 (near_matched). K is a multiple of 8 in
 // [48, 96]; 48 (3 degrees at the normal) where none binds, the default material included.
@@ -316,7 +316,7 @@ Resolution choose_layer_resolution(const Material& material, const SolveOptions&
   const double sigma_min = std::min(geometry.top_open ? 1.0 : material.sigma,
                                     geometry.base == LayerBase::Rough ? material.bottom_sigma() : 1.0);
   Resolution resolution{};
-  // N >= 6/sigma keeps the node quadrature of the interface lobes energy-conserving (model-spec §4.1); half of
+  // N >= 6/sigma keeps the node quadrature of the interface lobes energy-conserving (docs/model.md §4.2); half of
   // layerlab's full-sphere HG heuristic 8.6/(1-g) - 0.2 resolves the phase function.
   const int from_phase = ceil_to_int(0.5 * (8.6 / forwardness - 0.2));
   const int from_surface = sigma_min < 1.0 ? ceil_to_int(6.0 / sigma_min) : 6;

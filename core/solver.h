@@ -1,6 +1,6 @@
 // The one entry point of the subsurface solver: material parameters to tables, and directional albedos.
 //
-// Method (Stam 2001, with the choices of ../shared/docs/model-spec.md): Fourier series in azimuth, double-Gauss
+// Method (Stam 2001, with the choices of docs/model.md): Fourier series in azimuth, double-Gauss
 // discrete ordinates in polar angle, one half-size symmetric eigen-decomposition per Fourier mode, one boundary
 // linear system per mode solved for every incident direction at once, then out through the top (and bottom)
 // interface, tabulated on a polar-angle grid and splined.

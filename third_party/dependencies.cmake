@@ -7,7 +7,7 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(nlohmann_json 3.11 REQUIRED)
 find_package(PNG REQUIRED)
 
-# Previewer and headless rendering (see ../shared/docs/platform-notes.md): not looked for without the app.
+# Previewer and headless rendering (see docs/platform-notes.md): not looked for without the app.
 if(NOT SKINLAYER_BUILD_APP)
   return()
 endif()

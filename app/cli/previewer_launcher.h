@@ -1,7 +1,7 @@
 // `skinlayer` with no command, or with flags and no command (`skinlayer --sigma 0.3`, `skinlayer --preset wax
 // --capture shot.png`), runs the previewer: the separate
 // executable skinlayer-window in the same folder as skinlayer. The window links libGL and skinlayer links
-// libOSMesa, and one process must never load both (../shared/docs/platform-notes.md), hence two executables.
+// libOSMesa, and one process must never load both (docs/platform-notes.md), hence two executables.
 #pragma once
 
 #include <span>

@@ -1,4 +1,4 @@
-// The MERL BRDF ".binary" (Matusik et al. 2003; ../shared/docs/exchange-formats.md §2): reflection only, isotropic,
+// The MERL BRDF ".binary" (Matusik et al. 2003; docs/exchange-formats.md §2): reflection only, isotropic,
 // RGB, tabulated on the Rusinkiewicz half/difference angles, 90 (theta_h, square-root spacing) x 90 (theta_d) x 180
 // (phi_d in [0, pi)) bins. Layout: three int32 (90, 90, 180), then 3 x 1,458,000 float64, all red, then all green,
 // then all blue, each value the plain BRDF f (1/sr, no cosine) times the format's channel scale (1500, 1500/1.15,

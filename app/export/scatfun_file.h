@@ -1,5 +1,5 @@
 // The tabulated Fourier BSDF file, "SCATFUN" version 1: what layerlab writes and pbrt-v3's "fourier" material reads
-// (../shared/docs/exchange-formats.md §1; pbrt-v4 and Mitsuba 3 do not read it). Little-endian:
+// (docs/exchange-formats.md §1; pbrt-v4 and Mitsuba 3 do not read it). Little-endian:
 //   64-byte header: "SCATFUN", version 1 (uint8); uint32 flags (1: a BSDF), nMu, nCoeffs, mMax, nChannels, nBases (1),
 //     nMetadataBytes, nParameters (0), nParameterValues (0); float32 eta (n_below / n_above), alpha[2] (the top's and
 //     the bottom's roughness, informational), 2 unused;

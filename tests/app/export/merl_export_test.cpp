@@ -1,5 +1,5 @@
 // `skinlayer export --format merl` read back by a reader written here from the format's description
-// (../shared/docs/exchange-formats.md §2), sharing no code with the writer: the exact size and header, the
+// (docs/exchange-formats.md §2), sharing no code with the writer: the exact size and header, the
 // channel-major float64 body, the Rusinkiewicz lookup a MERL reader does, and every sampled bin's value against
 // `skinlayer eval` at that bin's centre (float64 stores it exactly: agreement to rounding). Bins below the horizon
 // hold a negative value.

@@ -1,4 +1,4 @@
-// SCATFUN v1 reader and pbrt-v3-style evaluation, from ../shared/docs/exchange-formats.md §1 and the facts of
+// SCATFUN v1 reader and pbrt-v3-style evaluation, from docs/exchange-formats.md §1 and the facts of
 // pbrt-v3's algorithm given with this reader's brief.
 #include "tests/app/export/scatfun_reader.h"
 

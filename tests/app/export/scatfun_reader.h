@@ -1,5 +1,5 @@
 // An independent reader of the tabulated Fourier BSDF format "SCATFUN" version 1 (layerlab writes it, pbrt-v3's
-// `fourier` material reads it), written for the tests from ../shared/docs/exchange-formats.md §1 alone. It shares no
+// `fourier` material reads it), written for the tests from docs/exchange-formats.md §1 alone. It shares no
 // code with skinlayer's writer: it includes nothing from core/ or app/.
 #pragma once
 

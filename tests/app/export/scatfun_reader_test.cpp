@@ -1,5 +1,5 @@
 // The SCATFUN v1 reader (scatfun_reader.h) alone, on byte buffers built here by hand from the header layout of
-// ../shared/docs/exchange-formats.md §1: every structural rule it enforces, the CDF check, and the pbrt-v3-style
+// docs/exchange-formats.md §1: every structural rule it enforces, the CDF check, and the pbrt-v3-style
 // evaluation against hand-computed numbers.
 #include "tests/app/export/scatfun_reader.h"
 
