@@ -80,7 +80,7 @@ std::vector<std::string> layer_absorptance_columns(const Material& material) {
   return columns;
 }
 
-// One row's values of each channel, in the grey table's column order after reflectance_surface.
+// One channel's values at one angle that depend on colour, in column order after reflectance_surface.
 std::vector<double> colour_dependent_values(const DirectionalAlbedo& albedo) {
   std::vector<double> values = {albedo.reflectance_subsurface, albedo.reflectance(), albedo.transmittance,
                                 albedo.absorptance};
@@ -88,42 +88,28 @@ std::vector<double> colour_dependent_values(const DirectionalAlbedo& albedo) {
   return values;
 }
 
-// A grey material: one column per quantity.
-NumericTable grey_table(const Material& material, std::span<const double> thetas_degrees,
-                        const std::vector<DirectionalAlbedo>& albedos) {
-  std::vector<std::string> columns = {"reflectance_surface", "reflectance_subsurface", "reflectance",
-                                      "transmittance", "absorptance"};
-  const std::vector<std::string> layer_columns = layer_absorptance_columns(material);
-  columns.insert(columns.end(), layer_columns.begin(), layer_columns.end());
-  NumericTable table({"theta_i"}, columns);
-  for (std::size_t index = 0; index < albedos.size(); ++index) {
-    std::vector<double> row = {thetas_degrees[index], albedos[index].reflectance_surface};
-    const std::vector<double> values = colour_dependent_values(albedos[index]);
-    row.insert(row.end(), values.begin(), values.end());
-    table.add_row(row);
-  }
-  return table;
-}
-
-// An RGB material: reflectance_surface (grey: the surface term has no albedo in it), then each colour-dependent
-// quantity's _r, _g and _b columns. channel_albedos[c] are channel c's rows.
-NumericTable rgb_table(const Material& material, std::span<const double> thetas_degrees,
-                       const std::array<const std::vector<DirectionalAlbedo>*, 3>& channel_albedos) {
+// The table: reflectance_surface (the surface term has no albedo in it: one column), then each quantity that
+// depends on colour, as one column for a grey material (one channel) or as _r, _g and _b (three channels).
+// channels[c] are channel c's rows, one per angle.
+NumericTable albedo_table(const Material& material, std::span<const double> thetas_degrees,
+                          const std::vector<const std::vector<DirectionalAlbedo>*>& channels) {
   std::vector<std::string> quantities = {"reflectance_subsurface", "reflectance", "transmittance", "absorptance"};
   const std::vector<std::string> layer_columns = layer_absorptance_columns(material);
   quantities.insert(quantities.end(), layer_columns.begin(), layer_columns.end());
   std::vector<std::string> columns = {"reflectance_surface"};
   for (const std::string& quantity : quantities) {
-    const std::vector<std::string> names = channel_columns(quantity);
+    const std::vector<std::string> names = channels.size() == 1 ? std::vector{quantity} : channel_columns(quantity);
     columns.insert(columns.end(), names.begin(), names.end());
   }
   NumericTable table({"theta_i"}, columns);
   for (std::size_t index = 0; index < thetas_degrees.size(); ++index) {
-    std::array<std::vector<double>, 3> values;
-    for (std::size_t c = 0; c < 3; ++c) values[c] = colour_dependent_values((*channel_albedos[c])[index]);
-    std::vector<double> row = {thetas_degrees[index], (*channel_albedos[0])[index].reflectance_surface};
+    std::vector<std::vector<double>> values;
+    for (const std::vector<DirectionalAlbedo>* rows : channels) {
+      values.push_back(colour_dependent_values((*rows)[index]));
+    }
+    std::vector<double> row = {thetas_degrees[index], (*channels.front())[index].reflectance_surface};
     for (std::size_t q = 0; q < quantities.size(); ++q) {
-      for (std::size_t c = 0; c < 3; ++c) row.push_back(values[c][q]);
+      for (const std::vector<double>& channel : values) row.push_back(channel[q]);
     }
     table.add_row(row);
   }
@@ -152,7 +138,7 @@ int run_albedo_command(std::span<const std::string_view> arguments, std::ostream
       const Material material = single_channel(document);
       const std::vector<DirectionalAlbedo> albedos = directional_albedo(material, thetas_radians);
       check_rows(albedos);
-      return grey_table(material, thetas_degrees, albedos);
+      return albedo_table(material, thetas_degrees, {&albedos});
     }
     // One solve per distinct channel, each exactly the grey solve of that channel's material, through one cache.
     const DistinctChannels channels = distinct_channels(document);
@@ -165,8 +151,8 @@ int run_albedo_command(std::span<const std::string_view> arguments, std::ostream
       distinct.push_back(directional_albedo(material, thetas_radians, options));
       check_rows(distinct.back());
     }
-    return rgb_table(document.layer, thetas_degrees,
-                     {&distinct[channels.index[0]], &distinct[channels.index[1]], &distinct[channels.index[2]]});
+    return albedo_table(document.layer, thetas_degrees,
+                        {&distinct[channels.index[0]], &distinct[channels.index[1]], &distinct[channels.index[2]]});
   }();
   table.require_finite();
   table.write_csv(out);
