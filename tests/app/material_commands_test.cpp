@@ -11,6 +11,7 @@
 
 #include "tests/app/error_expectations.h"
 #include "tests/app/process_runner.h"
+#include "tests/app/scratch_folder.h"
 
 namespace skinlayer::test {
 namespace {
@@ -19,24 +20,14 @@ namespace fs = std::filesystem;
 
 constexpr std::string_view kRows = "theta_i,theta_o,phi\n0,0,0\n30,25,180\n60,70,90\n80,10,0\n45,45,180\n";
 
-// A fresh folder for one test, removed afterwards.
-class MaterialCommands : public ::testing::Test {
+// A fresh folder for one test, removed afterwards, and what it holds.
+class MaterialCommands : public ScratchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("skinlayer_material_test_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
   std::vector<std::string> entries() const {
     std::vector<std::string> names;
     for (const auto& entry : fs::directory_iterator(dir_)) names.push_back(entry.path().filename().string());
     return names;
   }
-
-  fs::path dir_;
 };
 
 ProcessResult eval_with(std::vector<std::string> flags) {

@@ -16,6 +16,7 @@
 #include "tests/app/csv_output.h"
 #include "tests/app/error_expectations.h"
 #include "tests/app/process_runner.h"
+#include "tests/app/scratch_folder.h"
 
 namespace skinlayer::test {
 namespace {
@@ -26,24 +27,25 @@ constexpr std::string_view kRows = "theta_i,theta_o,phi\n0,0,0\n30,25,180\n60,70
 constexpr double kChannelTolerance = 1e-9;  // relative: each channel against the grey solve of its albedo
 const char* const kChannelSuffix[3] = {"_r", "_g", "_b"};
 
-const std::vector<std::string> kRgbEvalHeader = {
-    "theta_i", "theta_o", "phi",    "brdf_surface", "brdf_subsurface_r", "brdf_subsurface_g", "brdf_subsurface_b",
-    "brdf_r",  "brdf_g",  "brdf_b", "btdf_r",       "btdf_g",            "btdf_b"};
+const std::vector<std::string> kRgbEvalHeader = {"theta_i",
+                                                 "theta_o",
+                                                 "phi",
+                                                 "brdf_surface",
+                                                 "brdf_subsurface_r",
+                                                 "brdf_subsurface_g",
+                                                 "brdf_subsurface_b",
+                                                 "brdf_r",
+                                                 "brdf_g",
+                                                 "brdf_b",
+                                                 "btdf_r",
+                                                 "btdf_g",
+                                                 "btdf_b"};
 const std::vector<std::string> kGreyEvalHeader = {"theta_i",         "theta_o", "phi", "brdf_surface",
                                                   "brdf_subsurface", "brdf",    "btdf"};
 
-// A folder for one test, removed afterwards.
-class RgbColumns : public ::testing::Test {
+// A folder for one test (removed afterwards), and the test's material files.
+class RgbColumns : public ScratchFolderTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("skinlayer_rgb_test_" + std::to_string(::getpid()) + "_" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
   // The material the flags describe, as `skinlayer material` writes it.
   nlohmann::json material_json(const std::vector<std::string>& flags) const {
     std::vector<std::string> arguments = {"material"};
@@ -63,8 +65,6 @@ class RgbColumns : public ::testing::Test {
     std::ofstream(file) << material.dump(2);
     return file;
   }
-
-  fs::path dir_;
 };
 
 CsvOutput run_csv(std::vector<std::string> arguments, std::string_view stdin_text = "") {
@@ -144,7 +144,8 @@ TEST_F(RgbColumns, AlbedoWritesEachChannelAsTheGreySolveOfItsAlbedo) {
     const nlohmann::json material = material_json(flags);
     const std::size_t layers = material.at("layers").size();
     std::vector<std::string> quantities = {"reflectance_subsurface", "reflectance", "transmittance", "absorptance"};
-    for (std::size_t k = 1; layers > 1 && k <= layers; ++k) quantities.push_back("absorptance_layer" + std::to_string(k));
+    for (std::size_t k = 1; layers > 1 && k <= layers; ++k)
+      quantities.push_back("absorptance_layer" + std::to_string(k));
     std::vector<std::string> header = {"theta_i", "reflectance_surface"};
     for (const std::string& quantity : quantities) {
       for (const char* suffix : kChannelSuffix) header.push_back(quantity + suffix);
@@ -185,20 +186,18 @@ TEST_F(RgbColumns, AGreyAlbedoFlagOverridesAnRgbFile) {
 }
 
 TEST(RgbColumnsErrors, BadRgbAlbedosAreOneLineNamingTheParameterAndItsRange) {
-  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"eval", "--albedo", "0.9,2,0.1"}, kRows), 2,
-                                   {"albedo = 2", "[0, 1]"}));
+  EXPECT_TRUE(
+      failed_with_one_line(run_skinlayer({"eval", "--albedo", "0.9,2,0.1"}, kRows), 2, {"albedo = 2", "[0, 1]"}));
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--albedo", "0.9,0.1"}), 2, {"albedo", "r,g,b"}));
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--albedo", "0.9,nan,0.1"}), 2, {"albedo", "nan"}));
 }
 
 // Every preset: eval and albedo write finite numbers (RGB columns where the preset is RGB), render draws it and
 // export writes it.
-class EveryPreset : public ::testing::TestWithParam<std::string> {};
+class EveryPreset : public ScratchFolderTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(EveryPreset, RunsThroughEvalAlbedoRenderAndExport) {
   const std::string& name = GetParam();
-  const fs::path dir = fs::temp_directory_path() / ("skinlayer_every_preset_" + std::to_string(::getpid()) + name);
-  fs::create_directories(dir);
   const CsvOutput eval = run_csv({"eval", "--preset", name}, kRows);
   EXPECT_EQ(eval.rows.size(), 6u);
   const CsvOutput albedo = run_csv({"albedo", "--preset", name});
@@ -218,16 +217,15 @@ TEST_P(EveryPreset, RunsThroughEvalAlbedoRenderAndExport) {
   EXPECT_EQ(eval.header == kRgbEvalHeader, rgb);
   EXPECT_EQ(eval.header == kGreyEvalHeader, !rgb);
   EXPECT_EQ(albedo.header.back().ends_with("_b"), rgb);
-  const std::string png = (dir / "preset.png").string();
+  const std::string png = path("preset.png");
   const ProcessResult render = run_skinlayer({"render", "--preset", name, "--size", "32x32", "-o", png});
   EXPECT_EQ(render.exit_code, 0) << render.err;
   EXPECT_TRUE(fs::is_regular_file(png));
-  const std::string bsdf = (dir / "preset.bsdf").string();
+  const std::string bsdf = path("preset.bsdf");
   const ProcessResult exported =
       run_skinlayer({"export", "--format", "bsdf", "--nodes", "8", "--preset", name, "-o", bsdf});
   EXPECT_EQ(exported.exit_code, 0) << exported.err;
   EXPECT_GT(fs::is_regular_file(bsdf) ? fs::file_size(bsdf) : 0u, 64u);
-  fs::remove_all(dir);
 }
 
 // The preset files of the source tree, which `skinlayer presets` must list one for one.
@@ -255,9 +253,9 @@ TEST(EveryPresetListed, PresetsListsEveryPresetFile) {
   EXPECT_GE(files.size(), 14u);
   ASSERT_EQ(lines.size(), files.size());
   for (const std::string& name : files) {
-    EXPECT_TRUE(std::any_of(lines.begin(), lines.end(),
-                            [&name](const std::string& line) { return line.starts_with(name + " "); }))
-        << name;
+    EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [&name](const std::string& line) {
+      return line.starts_with(name + " ");
+    })) << name;
   }
 }
 

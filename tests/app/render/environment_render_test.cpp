@@ -144,9 +144,9 @@ TEST(EnvironmentRender, AHiddenBackdropIsZeroRadianceInLinearOutput) {
   EXPECT_GT(directional.at(kSize / 2, kSize / 2, 0), 0.1);
   // The PNG's backdrop is the flat colour, not black.
   const fs::path png = temporary("h", ".png");
-  const test::ProcessResult drawn = test::run_skinlayer({"render", "--view", "sphere", "--size", "48x48", "--env",
-                                                        "furnace", "--samples", "8", "--background", "hide", "-o",
-                                                        png.string()});
+  const test::ProcessResult drawn =
+      test::run_skinlayer({"render", "--view", "sphere", "--size", "48x48", "--env", "furnace", "--samples", "8",
+                           "--background", "hide", "-o", png.string()});
   ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
   int width = 0, height = 0, channels = 0;
   const std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load(png.c_str(), &width, &height, &channels, 3),
