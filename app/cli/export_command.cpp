@@ -36,8 +36,7 @@ std::string export_usage() {
          "                       than the node spacing, 90/(N-1) degrees, need more\n"
          "  --format merl        the MERL BRDF .binary (90 x 90 x 180 half/difference bins, float64, RGB):\n"
          "                       reflection only (surface + subsurface), for BRDF viewers and fitting tools;\n"
-         "                       34,992,012 bytes. Bins below the horizon hold -1, as the format's readers expect.\n"
-         +
+         "                       34,992,012 bytes. Bins below the horizon hold -1, as the format's readers expect.\n" +
          rgb_albedo_usage() +
          "  --model M            subsurface model: stam (default), lambert or hk\n"
          "  -o, --output FILE    the file to write (required; written whole or not at all)\n"

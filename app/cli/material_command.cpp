@@ -19,8 +19,7 @@ std::string material_usage() {
          "Writes the complete material, every value explicit, as a material file (JSON; README \"Material files\"),\n"
          "to FILE.json or to stdout. Start from --material FILE or --preset NAME and change values with flags, as in\n"
          "  skinlayer material --preset skin-fair --sigma 0.3 -o my-skin.json\n"
-         "Any command then reads it back with --material my-skin.json.\n"
-         +
+         "Any command then reads it back with --material my-skin.json.\n" +
          rgb_albedo_usage() +
          "  --model M            subsurface model stored in the file: stam (default), lambert or hk\n"
          "  --name N             the material's name (default: the file's or preset's)\n"

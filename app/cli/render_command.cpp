@@ -57,8 +57,7 @@ std::string render_usage() {
          "                        [--light on|off] [--tonemap T] -o FILE.png|FILE.hdr\n"
          "\n"
          "Renders the previewer's picture offscreen (OSMesa, no display needed) with the same renderer as the\n"
-         "window and writes it as PNG, or as linear radiance without a tone map (.hdr, --view sphere).\n"
-         +
+         "window and writes it as PNG, or as linear radiance without a tone map (.hdr, --view sphere).\n" +
          rgb_albedo_usage() +
          "  --model M            subsurface model: stam (default), lambert or hk (Hanrahan-Krueger)\n"
          "  --light-theta D      light angle from the view direction, degrees in [0, 89.9] (default 45)\n"
