@@ -7,18 +7,18 @@
 #include <memory>
 #include <optional>
 
-#include "core/bottom_bounce.h"
-#include "core/boundary_solve.h"
 #include "core/conventions.h"
-#include "core/henyey_greenstein.h"
-#include "core/interface_albedo.h"
-#include "core/layer_interfaces.h"
-#include "core/microfacet.h"
-#include "core/quadrature.h"
-#include "core/slab_eigen.h"
-#include "core/solve_cache.h"
-#include "core/stack_solver.h"
-#include "core/unscattered_light.h"
+#include "core/interfaces/interface_albedo.h"
+#include "core/interfaces/layer_interfaces.h"
+#include "core/interfaces/microfacet.h"
+#include "core/medium/henyey_greenstein.h"
+#include "core/medium/slab_eigen.h"
+#include "core/series/quadrature.h"
+#include "core/solve/boundary_solve.h"
+#include "core/solve/solve_cache.h"
+#include "core/solve/stack_solver.h"
+#include "core/unscattered/bottom_bounce.h"
+#include "core/unscattered/unscattered_light.h"
 
 namespace skinlayer {
 namespace {
@@ -248,7 +248,7 @@ int refracted_lobe_ordinates(const LayerGeometry& geometry) {
 
 // The tables' polar grid (LayerTables::grid_angle) is spaced h = (pi/2)^2 / (K - 1) radians at the normal and finer
 // towards grazing; Catmull-Rom between its nodes must follow the sharpest lobe the tables hold. The unscattered
-// transmission is exact outside them (core/unscattered_light.h); three sharp features stay in them:
+// transmission is exact outside them (core/unscattered/unscattered_light.h); three sharp features stay in them:
 // - the unscattered light's reflection off a rough bottom (Beckmann sigma3, seen through the top about
 //   s = sigma3 eta wide), where it is not buried under scattered light: T^2 > Omega (1 - T) / 4;
 // - single forward scattering (Henyey-Greenstein, half width 0.77 (1 - g) / sqrt(g) radians) of light that crossed
@@ -427,7 +427,7 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
   const UnscatteredLight unscattered = options.exact_unscattered ? UnscatteredLight(material) : UnscatteredLight();
   const auto kernels = kernels_for(material, resolution, grid, grid, options.cache, options.parallel_for);
-  // One layer: the single-slab solve; a stack: core/stack_solver.h. The channels share either.
+  // One layer: the single-slab solve; a stack: core/solve/stack_solver.h. The channels share either.
   std::optional<LayerSolver> layer;
   std::optional<StackSolver> stack;
   if (material.below.empty()) {
@@ -514,12 +514,13 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
   }
 
   // The unscattered light's first reflection off a rough bottom, on finer ordinates where it matters
-  // (core/bottom_bounce.h): the tables' node image of it is replaced by the finer one, mode by mode. Not in a
-  // preview, which is a quick look by definition.
+  // (core/unscattered/bottom_bounce.h): the tables' node image of it is replaced by the finer one, mode by mode. Not in
+  // a preview, which is a quick look by definition.
   const auto refine_bottom_bounce = [&] {
     // The bounce off the path's second interface under the top (an interface between layers, or the bottom): the
-    // image of a single layer with that interface as its bottom and the depth between them (core/bottom_bounce.h).
-    // Under an open top, where the path starts at an interface between layers, it stays as solved.
+    // image of a single layer with that interface as its bottom and the depth between them
+    // (core/unscattered/bottom_bounce.h). Under an open top, where the path starts at an interface between layers, it
+    // stays as solved.
     if (unscattered.path() != UnscatteredPath::TopThenBottom || options.preview || material.eta == 1.0) return;
     const bool internal = material.has_internal_interfaces();
     Material bounce = material;  // one layer, or a stack whose path ends at the bottom: the material's own kernels

@@ -11,9 +11,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/layer_tables.h"
 #include "core/material.h"
 #include "core/parallel_for.h"
+#include "core/series/layer_tables.h"
 
 namespace skinlayer {
 
@@ -24,10 +24,10 @@ struct SolveOptions {
   double fourier_tolerance = 1e-4;  // stop when two successive modes are below this fraction of mode 0's peak
   int max_modes = 0;                // hard cap on Fourier modes; 0 = automatic
   // true: the light that crosses the slab unscattered through the rough interfaces is evaluated exactly at the
-  // requested directions (core/unscattered_light.h) and the tables hold the rest; false: every path on the discrete
-  // ordinates and the tables, as Stam 2001 publishes the method (for convergence studies and comparisons).
+  // requested directions (core/unscattered/unscattered_light.h) and the tables hold the rest; false: every path on the
+  // discrete ordinates and the tables, as Stam 2001 publishes the method (for convergence studies and comparisons).
   bool exact_unscattered = true;
-  // The caller's cache of interface operators (core/solve_cache.h); null = build them for this solve only.
+  // The caller's cache of interface operators (core/solve/solve_cache.h); null = build them for this solve only.
   SolveCache* cache = nullptr;
   // The caller's parallel-for (core/parallel_for.h). The solver runs independent work through it: RGB channels,
   // blocks of Fourier modes, the interface kernels; core itself starts no threads. Empty = one after another.

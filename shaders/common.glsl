@@ -1,6 +1,6 @@
 // GLSL twins of core's fresnel_dielectric, beckmann_ndf, smith_g1_beckmann and microfacet_brdf
-// (core/fresnel.h, core/microfacet.h): the same equations, in float. Directions are unit vectors in the local
-// frame (z = macro normal), pointing away from the surface. BRDF values in 1/sr.
+// (core/interfaces/fresnel.h, core/interfaces/microfacet.h): the same equations, in float. Directions are unit vectors
+// in the local frame (z = macro normal), pointing away from the surface. BRDF values in 1/sr.
 
 const float kPi = 3.14159265358979;
 

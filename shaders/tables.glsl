@@ -21,6 +21,7 @@ vec3 sum_fourier_modes(sampler2DArray table, float theta_i, float theta_o, float
 }
 
 // Subsurface BRDF and layer BTDF per color channel [1/sr]; theta from the normal of the direction's side,
-// phi = phi_o - phi_i (pi = forward). Clamped at 0 as core/layer_tables.h does (spline undershoot beside sharp lobes).
+// phi = phi_o - phi_i (pi = forward). Clamped at 0 as core/series/layer_tables.h does (spline undershoot beside sharp
+// lobes).
 vec3 brdf_subsurface(float theta_i, float theta_o, float phi) { return sum_fourier_modes(u_reflection, theta_i, theta_o, phi); }
 vec3 btdf_layer(float theta_i, float theta_o, float phi) { return sum_fourier_modes(u_transmission, theta_i, theta_o, phi); }

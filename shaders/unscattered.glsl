@@ -1,4 +1,4 @@
-// The unscattered part of the layer's BSDF (core/unscattered_light.h), which the tables do not hold.
+// The unscattered part of the layer's BSDF (core/unscattered/unscattered_light.h), which the tables do not hold.
 //   * Open top (eta = 1) over a rough bottom: f_R = e^{-tau/mu_i} f_r23(omega_i, omega_o) e^{-tau/mu_o}, in closed
 //     form: microfacet_brdf of the bottom seen from inside the layer (eta = n_below / n_layer).
 //   * The BTDF of every path, in the plane of incidence only (the lobe plot): app/render/unscattered_plane.h samples

@@ -14,7 +14,7 @@
 #include "app/cli/quoted.h"
 #include "app/process/parallel_for.h"
 #include "core/conventions.h"
-#include "core/solve_cache.h"
+#include "core/solve/solve_cache.h"
 #include "core/solver.h"
 
 namespace skinlayer::cli {

@@ -12,9 +12,9 @@
 #include "app/cli/numeric_table.h"
 #include "app/process/parallel_for.h"
 #include "core/conventions.h"
-#include "core/solve_cache.h"
+#include "core/models/subsurface_model.h"
+#include "core/solve/solve_cache.h"
 #include "core/solver.h"
-#include "core/subsurface_model.h"
 
 namespace skinlayer::cli {
 

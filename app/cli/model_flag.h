@@ -1,11 +1,11 @@
-// --model stam|lambert|hk: which subsurface model a command evaluates (core/subsurface_model.h). Default stam.
+// --model stam|lambert|hk: which subsurface model a command evaluates (core/models/subsurface_model.h). Default stam.
 #pragma once
 
 #include <optional>
 #include <string_view>
 
 #include "app/cli/flag_parser.h"
-#include "core/subsurface_model.h"
+#include "core/models/subsurface_model.h"
 
 namespace skinlayer::cli {
 

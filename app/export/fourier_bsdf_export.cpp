@@ -7,9 +7,9 @@
 #include <string>
 
 #include "app/material/material_json.h"
-#include "core/bsdf_fourier_series.h"
 #include "core/conventions.h"
-#include "core/upside_down.h"
+#include "core/series/bsdf_fourier_series.h"
+#include "core/solve/upside_down.h"
 
 namespace skinlayer {
 

@@ -3,13 +3,13 @@
 //
 // Entry (row, col) for node cosines mu_r, mu_c (propagation against the downward axis) holds the series of
 // f |mu_c| in the file's azimuth, a_k(file) = (-1)^k a_k(graphics) (core/conventions.h puts the forward direction at
-// phi = pi, the file at 0), f from core/bsdf_fourier_series.h:
+// phi = pi, the file at 0), f from core/series/bsdf_fourier_series.h:
 //   mu_r > 0, mu_c < 0: light from above at acos(mu_r), reflected to acos(-mu_c)         the material's f_r
 //   mu_r > 0, mu_c > 0: light from above, transmitted to acos(mu_c) below                the material's f_t
 //   mu_r < 0, mu_c > 0: light from below, reflected back down                            the upside-down f_r
 //   mu_r < 0, mu_c < 0: light from below, transmitted out the top                        the upside-down f_t
-// (core/upside_down.h). Rows and columns at the doubled 0 are empty. A series ends at its last coefficient (in any
-// channel) above kScatfunTruncation times the sum of its |a_k| per channel; coefficients below 1e-7 of the largest
+// (core/solve/upside_down.h). Rows and columns at the doubled 0 are empty. A series ends at its last coefficient (in
+// any channel) above kScatfunTruncation times the sum of its |a_k| per channel; coefficients below 1e-7 of the largest
 // stored value are dropped too. A negative Y a_0 (a table's undershoot at grazing) is written as 0.
 #pragma once
 

@@ -10,7 +10,7 @@
 #include <functional>
 #include <string>
 
-#include "core/microfacet.h"
+#include "core/interfaces/microfacet.h"
 
 namespace skinlayer {
 

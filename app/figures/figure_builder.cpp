@@ -14,7 +14,7 @@
 #include "app/figures/polar_plot.h"
 #include "app/material/picture_metadata.h"
 #include "core/conventions.h"
-#include "core/microfacet.h"
+#include "core/interfaces/microfacet.h"
 #include "core/solver.h"
 
 namespace skinlayer::figures {

@@ -8,7 +8,7 @@
 
 #include "app/figures/figure_set.h"
 #include "app/figures/font.h"
-#include "core/layer_tables.h"
+#include "core/series/layer_tables.h"
 
 namespace skinlayer::figures {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/material.h"
-#include "core/subsurface_model.h"
+#include "core/models/subsurface_model.h"
 
 namespace skinlayer::figures {
 

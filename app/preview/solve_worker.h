@@ -29,7 +29,7 @@
 #include "app/preview/solve_request.h"
 #include "app/render/material_solve.h"
 #include "app/render/table_textures.h"
-#include "core/solve_cache.h"
+#include "core/solve/solve_cache.h"
 
 namespace skinlayer {
 

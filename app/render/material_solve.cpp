@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/conventions.h"
-#include "core/quadrature.h"
+#include "core/series/quadrature.h"
 
 namespace skinlayer {
 

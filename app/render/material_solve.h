@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "app/material/material_document.h"
-#include "core/layer_tables.h"
 #include "core/material.h"
+#include "core/models/subsurface_model.h"
+#include "core/series/layer_tables.h"
 #include "core/solver.h"
-#include "core/subsurface_model.h"
 
 namespace skinlayer {
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "app/render/material_solve.h"
-#include "core/unscattered_light.h"
+#include "core/unscattered/unscattered_light.h"
 
 namespace skinlayer {
 

@@ -11,7 +11,7 @@
 namespace skinlayer {
 namespace {
 
-// A quarter of the narrowest refracted lobe's width (refracted_lobe_width, core/microfacet.h).
+// A quarter of the narrowest refracted lobe's width (refracted_lobe_width, core/interfaces/microfacet.h).
 double lobe_scale(const UnscatteredLight& light) {
   double w = 1.0;
   if (light.path() != UnscatteredPath::BottomOnly) w = std::min(w, refracted_lobe_width(light.top()));

@@ -1,5 +1,5 @@
-// The unscattered part of the layer BTDF (core/unscattered_light.h) in the plane of incidence, sampled for the lobe
-// plot's one incident angle: a 1-D texture on coordinates centred on the lobe, because the two-interface part is a
+// The unscattered part of the layer BTDF (core/unscattered/unscattered_light.h) in the plane of incidence, sampled for
+// the lobe plot's one incident angle: a 1-D texture on coordinates centred on the lobe, because the two-interface part is a
 // quadrature per direction (too slow per pixel) and its lobe can be narrower than a degree.
 //
 // Samples lie at signed exit angles s (radians; s > 0 forward, phi = pi; s < 0 back, phi = 0) spaced as
@@ -14,7 +14,7 @@
 #include <memory>
 #include <vector>
 
-#include "core/unscattered_light.h"
+#include "core/unscattered/unscattered_light.h"
 
 namespace skinlayer {
 

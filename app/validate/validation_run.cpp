@@ -9,7 +9,7 @@
 #include "core/conventions.h"
 #include "core/reference/bin_average.h"
 #include "core/solver.h"
-#include "core/unscattered_light.h"
+#include "core/unscattered/unscattered_light.h"
 
 namespace skinlayer::validation {
 namespace {

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "app/validate/validation_grid.h"
-#include "core/layer_tables.h"
 #include "core/reference/monte_carlo.h"
+#include "core/series/layer_tables.h"
 
 namespace skinlayer::validation {
 

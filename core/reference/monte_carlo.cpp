@@ -11,8 +11,8 @@
 #include <Eigen/Geometry>
 
 #include "core/conventions.h"
-#include "core/fresnel.h"
-#include "core/microfacet.h"
+#include "core/interfaces/fresnel.h"
+#include "core/interfaces/microfacet.h"
 
 namespace skinlayer {
 

@@ -1,7 +1,7 @@
 // An independent Monte Carlo reference for the skin layer: a random walk of photons through the same layer the
 // solver models, written without any of the solver's machinery (no discrete ordinates, Fourier series, eigen-
-// decompositions or tables). It shares only the Fresnel and Beckmann/Smith functions (core/fresnel.h,
-// core/microfacet.h, which have their own unit tests), the Material type and its validation.
+// decompositions or tables). It shares only the Fresnel and Beckmann/Smith functions (core/interfaces/fresnel.h,
+// core/interfaces/microfacet.h, which have their own unit tests), the Material type and its validation.
 //
 // Threads: this reference module uses std::thread, because a useful number of paths needs both cores; it is built
 // as its own library (skinlayer_reference), so the solver library itself stays free of threads. Each thread owns its

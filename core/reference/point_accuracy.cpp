@@ -6,7 +6,7 @@
 
 #include "core/conventions.h"
 #include "core/solver.h"
-#include "core/unscattered_light.h"
+#include "core/unscattered/unscattered_light.h"
 
 namespace skinlayer {
 namespace {

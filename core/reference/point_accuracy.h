@@ -5,8 +5,8 @@
 // is finer than the lobes near the mirror, straight-through and normal directions.
 //
 // What this measures is the scattered part's convergence in ordinates, Fourier modes and table nodes: both solves
-// share the exact unscattered part (core/unscattered_light.h), which tests/core/unscattered_light_test.cpp judges
-// against closed forms and a brute-force integral.
+// share the exact unscattered part (core/unscattered/unscattered_light.h), which
+// tests/core/unscattered/unscattered_light_test.cpp judges against closed forms and a brute-force integral.
 #pragma once
 
 #include <span>

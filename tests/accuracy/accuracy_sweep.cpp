@@ -181,7 +181,8 @@ int main(int argc, char** argv) {
         "(subsurface) or BTDF exceeds 1e-3 of the material's peak of that quantity (a quantity whose peak is under "
         "1e-12 1/sr, such as the subsurface BRDF of a layer that does not scatter over a matched bottom, is 0 up to "
         "round-off and is not judged). The unscattered part, exact in "
-        "both, is judged against closed forms and a brute-force integral in tests/core/unscattered_light_test.cpp. "
+        "both, is judged against closed forms and a brute-force integral in "
+        "tests/core/unscattered/unscattered_light_test.cpp. "
         "The first rows vary one parameter at a time about a sharp base (σ 0.2, η 1.4, T 0.2, g 0.5, Ω 0.5, air) "
         "plus interacting extremes; the rows marked `sample` are a seeded draw of "
      << kGridSample

@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "core/conventions.h"
+#include "core/models/hanrahan_krueger.h"
+#include "core/models/lambert_model.h"
 #include "tests/app/csv_output.h"
 #include "tests/app/error_expectations.h"
 #include "tests/app/process_runner.h"
-#include "core/conventions.h"
-#include "core/hanrahan_krueger.h"
-#include "core/lambert_model.h"
 
 namespace skinlayer::test {
 namespace {

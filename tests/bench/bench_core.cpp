@@ -11,16 +11,16 @@
 
 #include "app/export/color_export.h"
 #include "app/process/parallel_for.h"
-#include "core/boundary_solve.h"
 #include "core/conventions.h"
-#include "core/henyey_greenstein.h"
-#include "core/interface_operators.h"
-#include "core/quadrature.h"
+#include "core/interfaces/interface_operators.h"
+#include "core/medium/henyey_greenstein.h"
+#include "core/medium/slab_eigen.h"
 #include "core/reference/monte_carlo.h"
-#include "core/slab_eigen.h"
-#include "core/solve_cache.h"
+#include "core/series/quadrature.h"
+#include "core/solve/boundary_solve.h"
+#include "core/solve/solve_cache.h"
 #include "core/solver.h"
-#include "core/unscattered_light.h"
+#include "core/unscattered/unscattered_light.h"
 #include "tests/bench/benchmark_report.h"
 #include "tests/bench/solve_stages.h"
 
@@ -93,8 +93,8 @@ void BM_ExportBsdf(benchmark::State& state) {
 }
 BENCHMARK(BM_ExportBsdf)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// One evaluation of the unscattered BTDF (core/unscattered_light.h) at the default material: two rough interfaces,
-// the 32 x 32 slope quadrature, near the straight-through direction. The cost of every tables.btdf() call there.
+// One evaluation of the unscattered BTDF (core/unscattered/unscattered_light.h) at the default material: two rough
+// interfaces, the 32 x 32 slope quadrature, near the straight-through direction. The cost of every tables.btdf() call there.
 void BM_UnscatteredBtdfTwoInterfaces(benchmark::State& state) {
   const UnscatteredLight light{Material{}};
   double theta_o = degrees_to_radians(40.0);

@@ -20,7 +20,7 @@
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
 #include "app/render/table_textures.h"
-#include "core/solve_cache.h"
+#include "core/solve/solve_cache.h"
 
 namespace {
 

@@ -166,7 +166,7 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
 
   md << "## Re-solves with the cache warm\n\n"
      << "One slider step from the default material, single channel, one thread, with a `SolveCache` kept across "
-        "solves as the previewer's worker keeps one (core/solve_cache.h). Ω, T and g reuse the interface "
+        "solves as the previewer's worker keeps one (core/solve/solve_cache.h). Ω, T and g reuse the interface "
         "operators; σ changes the interfaces, so every step pays for them (targets of issue 10: ≤ 3 ms after an Ω, "
         "T or g change).\n\n| parameter changed | ms | against the full solve |\n|---|---|---|\n";
   for (const char* parameter : {"albedo", "T", "g", "sigma"}) {
@@ -205,7 +205,7 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
     md << formatted("| %s | %.1f | %.0f |\n", label, r.ms(stem + "_preview/real_time"), r.ms(stem + "_full/real_time"));
   }
   md << formatted(
-      "\nOne unscattered BTDF evaluation through two rough interfaces (core/unscattered_light.h, the "
+      "\nOne unscattered BTDF evaluation through two rough interfaces (core/unscattered/unscattered_light.h, the "
       "32×32 slope quadrature): %.0f µs.\n\n",
       1e3 * r.ms("BM_UnscatteredBtdfTwoInterfaces"));
 

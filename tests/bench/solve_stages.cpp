@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "core/conventions.h"
-#include "core/interface_albedo.h"
-#include "core/interface_operators.h"
+#include "core/interfaces/interface_albedo.h"
+#include "core/interfaces/interface_operators.h"
 
 namespace skinlayer::bench {
 namespace {

@@ -5,13 +5,13 @@
 
 #include <vector>
 
-#include "core/boundary_solve.h"
-#include "core/fourier.h"
-#include "core/henyey_greenstein.h"
-#include "core/layer_tables.h"
 #include "core/material.h"
-#include "core/quadrature.h"
-#include "core/slab_eigen.h"
+#include "core/medium/henyey_greenstein.h"
+#include "core/medium/slab_eigen.h"
+#include "core/series/fourier.h"
+#include "core/series/layer_tables.h"
+#include "core/series/quadrature.h"
+#include "core/solve/boundary_solve.h"
 #include "core/solver.h"
 
 namespace skinlayer::bench {

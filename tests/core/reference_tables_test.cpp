@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "core/conventions.h"
-#include "core/quadrature.h"
+#include "core/series/quadrature.h"
 #include "core/solver.h"
-#include "reference_csv.h"
+#include "tests/core/reference_csv.h"
 
 namespace skinlayer {
 namespace {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/conventions.h"
-#include "core/quadrature.h"
+#include "core/series/quadrature.h"
 #include "core/solver.h"
 
 namespace skinlayer {

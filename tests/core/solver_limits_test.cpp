@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "core/conventions.h"
-#include "core/henyey_greenstein.h"
+#include "core/medium/henyey_greenstein.h"
 #include "core/solver.h"
-#include "reference_csv.h"
+#include "tests/core/reference_csv.h"
 
 namespace skinlayer {
 namespace {

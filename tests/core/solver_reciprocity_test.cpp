@@ -38,7 +38,7 @@ TEST(SolverReciprocity, BottomAirWithDifferentBottomInterface) {
 }
 
 // A thin layer that does not scatter: its BRDF is the unscattered light's bottom reflection, which the solver puts on
-// four times the ordinates (core/bottom_bounce.h); the correction keeps the tables reciprocal.
+// four times the ordinates (core/unscattered/bottom_bounce.h); the correction keeps the tables reciprocal.
 TEST(SolverReciprocity, BottomBounceOnFinerOrdinates) {
   Material m;
   m.sigma = 0.2;

@@ -36,7 +36,7 @@
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "core/material.h"
-#include "core/subsurface_model.h"
+#include "core/models/subsurface_model.h"
 
 namespace skinlayer::cli {
 namespace {

@@ -20,7 +20,7 @@
 #include "app/render/scene.h"
 #include "app/render/table_textures.h"
 #include "core/conventions.h"
-#include "core/microfacet.h"
+#include "core/interfaces/microfacet.h"
 
 namespace skinlayer {
 namespace {

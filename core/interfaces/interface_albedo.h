@@ -1,0 +1,32 @@
+// Directional-hemispherical reflectance and transmittance of one rough dielectric interface.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/interfaces/microfacet.h"
+
+namespace skinlayer {
+
+struct InterfaceAlbedo {
+  double reflectance;    // int f_r |wo.n| d omega_o
+  double transmittance;  // int f_t |wo.n| d omega_o  (energy; f_t is a radiance BTDF)
+  double loss() const { return 1.0 - reflectance - transmittance; }  // what Smith shadowing-masking removes
+};
+
+// Integrates over microfacet normals in slope space, where D(h) cos(alpha) d omega_h is the Gaussian slope density
+// exp(-(p^2+q^2)/sigma^2)/(pi sigma^2) dp dq. Changing variables from outgoing direction to h turns both integrands
+// into  F-or-(1-F) * G1(wi) G1(wo) * |wi.h| / (|wi.n| h.n)  (Walter et al. 2007, eqs. 14 and 17). That integrand is
+// smooth except on conics in slope space: the visibility cut-offs (wi.h = 0; the reflected or the refracted
+// direction on the horizon) and, for light on the denser side, the square-root edge of 1 - F at total internal
+// reflection. Rows of constant cross-slope are integrated piecewise between those curves' intersections, found in
+// closed form, with Gauss-Legendre on each piece (a u^2 map near the square-root edges); absolute error < 1e-6
+// (tests/core/interfaces/interface_albedo_test.cpp, against adaptive Gauss-Kronrod over outgoing directions). At eta =
+// 1 the interface is absent: reflectance 0, transmittance 1.
+InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& wi);
+
+// The same for many incident directions at once, sharing the quadrature rules and the slope grid (what the solver
+// needs per node and per table direction).
+std::vector<InterfaceAlbedo> interface_albedo(const RoughDielectric& interface, std::span<const Vec3> wi);
+
+}  // namespace skinlayer

@@ -1,0 +1,164 @@
+#include "core/interfaces/interface_operators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/conventions.h"
+
+namespace skinlayer {
+
+namespace {
+
+// Beckmann's D carries exp(-tan^2 theta_h / sigma^2): beyond tan^2 theta_h = 45 sigma^2 it is below e^-45 (3e-20)
+// of its peak, and the BSDF with it, whatever the Fresnel, Smith and Jacobian factors (at most ~1e3 there).
+constexpr double kNegligibleSlopes2 = 45.0;
+// A column (one incident direction) whose lobe comes no nearer to any outgoing direction than tan^2 theta_h =
+// 20 sigma^2 falls between them (fewer ordinates than the lobe needs, as in SolveOptions::preview): the energy
+// matching (match_column_energy) then scales its far tail up by up to e^20 or more, so the tail is kept whole.
+constexpr double kUnresolvedSlopes2 = 20.0;
+
+// The pair (wi, mu_to) of the projection (wi = (-s_i, 0, z_i) as project_propagation_kernel sets it up, wo at
+// azimuth phi): the half vector is h ~ wi + b wo, b = 1 for reflection and b = eta_t for transmission
+// (microfacet_brdf, microfacet_btdf), so with wo = (s_o cos phi, s_o sin phi, z_o)
+//   h_z = z_i + b z_o,   |h_xy|^2 = s_i^2 + b^2 s_o^2 - 2 b s_i s_o cos phi,
+// and tan^2 theta_h = |h_xy|^2 / h_z^2 only grows with phi.
+struct HalfVectorTilt {
+  double base;   // s_i^2 + b^2 s_o^2
+  double cross;  // 2 b s_i s_o
+  double h_z2;   // h_z^2
+
+  HalfVectorTilt(const RoughDielectric& interface, const Vec3& wi, double mu_to) {
+    const double b = wi.z() * mu_to > 0.0 ? 1.0 : (wi.z() > 0.0 ? interface.eta : 1.0 / interface.eta);
+    const double s_i = -wi.x();
+    const double s_o = std::sqrt(std::max(0.0, 1.0 - mu_to * mu_to));
+    const double h_z = wi.z() + b * mu_to;
+    base = s_i * s_i + b * b * s_o * s_o;
+    cross = 2.0 * b * s_i * s_o;
+    h_z2 = h_z * h_z;
+  }
+  // The least tan^2 theta_h / sigma^2 over the azimuths (phi = 0).
+  double least_slopes2(double sigma) const { return (base - cross) / (sigma * sigma * h_z2); }
+  // How many leading samples phi_k = k pi / (n - 1) have tan^2 theta_h <= K sigma^2 (one more for rounding).
+  int samples_within(double slopes2, double sigma, int n) const {
+    const double rest = base - slopes2 * sigma * sigma * h_z2;  // the lobe reaches phi where cross cos phi >= rest
+    if (rest <= -cross) return n;
+    if (rest > cross) return 0;
+    const double widest = std::acos(std::clamp(rest / cross, -1.0, 1.0));
+    return std::min(n, static_cast<int>(widest / (kPi / (n - 1))) + 2);
+  }
+};
+
+}  // namespace
+
+FourierKernel interface_fourier(const RoughDielectric& interface, std::span<const double> mu_from,
+                                std::span<const double> mu_to, const CosineProjector& projector) {
+  const auto kernel_for_pair = [&interface](const Vec3& wi, double cos_to) {
+    const double g1_wi = smith_g1_beckmann(wi.z(), interface.sigma);
+    const double g1_wo = smith_g1_beckmann(cos_to, interface.sigma);
+    return [&interface, wi, g1_wi, g1_wo](const Vec3& wo) {
+      return rough_dielectric_bsdf(interface, wi, wo, g1_wi, g1_wo);
+    };
+  };
+  // The azimuths each pair's lobe can reach; grazing pairs, unresolved columns and a missing interface (eta 1, a
+  // BSDF of 0) are sampled everywhere.
+  const int n = projector.samples();
+  const std::size_t n_to = mu_to.size();
+  std::vector<int> support(mu_from.size() * n_to, n);
+  for (std::size_t a = 0; a < mu_from.size(); ++a) {
+    const Vec3 wi = -propagation_direction(mu_from[a], 0.0);
+    if (interface.eta == 1.0 || wi.z() == 0.0) continue;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t b = 0; b < n_to; ++b) {
+      if (mu_to[b] == 0.0) continue;
+      const HalfVectorTilt tilt(interface, wi, mu_to[b]);
+      nearest = std::min(nearest, tilt.least_slopes2(interface.sigma));
+      support[a * n_to + b] = tilt.samples_within(kNegligibleSlopes2, interface.sigma, n);
+    }
+    if (nearest > kUnresolvedSlopes2) std::fill_n(support.begin() + static_cast<std::ptrdiff_t>(a * n_to), n_to, n);
+  }
+  const auto support_for_pair = [&support, n_to](int a, int b) {
+    return support[static_cast<std::size_t>(a) * n_to + static_cast<std::size_t>(b)];
+  };
+  return project_propagation_kernel(kernel_for_pair, support_for_pair, mu_from, mu_to, projector);
+}
+
+void apply_quadrature_weights(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights) {
+  for (std::size_t m = 0; m < kernel.size(); ++m) {
+    const double c_m = fourier_azimuth_weight(static_cast<int>(m));
+    for (Eigen::Index j = 0; j < kernel[m].cols(); ++j) {
+      kernel[m].col(j) *= c_m * std::abs(nodes[j]) * weights[j];
+    }
+  }
+}
+
+void match_column_energy(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights,
+                         std::span<const double> target) {
+  if (kernel.empty()) return;
+  for (Eigen::Index k = 0; k < kernel[0].cols(); ++k) {
+    double quadrature = 0.0;
+    for (Eigen::Index j = 0; j < kernel[0].rows(); ++j) {
+      quadrature += fourier_azimuth_weight(0) * weights[j] * std::abs(nodes[j]) * kernel[0](j, k);
+    }
+    const double wanted = target[static_cast<std::size_t>(k)];
+    if (quadrature <= 0.0 || wanted <= 0.0) continue;
+    for (Eigen::MatrixXd& mode : kernel) mode.col(k) *= wanted / quadrature;
+  }
+}
+
+void match_reflection_energy(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights,
+                             std::span<const double> target) {
+  constexpr int kMaxSteps = 200;
+  constexpr double kTolerance = 1e-12;
+  if (kernel.empty()) return;
+  const Eigen::Index n = kernel[0].cols();
+  Eigen::VectorXd row_weight(n);  // c_0 a_o |mu_o|
+  for (Eigen::Index o = 0; o < n; ++o) row_weight(o) = fourier_azimuth_weight(0) * weights[o] * std::abs(nodes[o]);
+  const Eigen::Map<const Eigen::VectorXd> wanted(target.data(), n);
+  const Eigen::MatrixXd weighted = row_weight.asDiagonal() * kernel[0];
+  const Eigen::Array<bool, Eigen::Dynamic, 1> active =
+      (wanted.array() > 0.0) && ((weighted.colwise().sum().transpose().array()) > 0.0);
+  Eigen::VectorXd d = Eigen::VectorXd::Ones(n);
+  for (int step = 0; step < kMaxSteps; ++step) {
+    const Eigen::VectorXd energy = d.cwiseProduct(weighted.transpose() * d);  // energy_j = d_j sum_o w_o f(o,j) d_o
+    double residual = 0.0;
+    for (Eigen::Index j = 0; j < n; ++j) {
+      if (!active(j)) continue;
+      residual = std::max(residual, std::abs(energy(j) / wanted(j) - 1.0));
+      d(j) *= std::sqrt(wanted(j) / energy(j));
+    }
+    if (residual < kTolerance) break;
+  }
+  for (Eigen::MatrixXd& mode : kernel) mode = d.asDiagonal() * mode * d.asDiagonal();
+}
+
+FourierKernel transmission_by_reciprocity(const FourierKernel& a_to_b, double eta) {
+  FourierKernel b_to_a(a_to_b.size());
+  for (std::size_t m = 0; m < a_to_b.size(); ++m) b_to_a[m] = a_to_b[m].transpose() / (eta * eta);
+  return b_to_a;
+}
+
+std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
+                                                     double z_sign) {
+  std::vector<Vec3> toward_light;
+  toward_light.reserve(cosines.size());
+  for (const double mu : cosines) {
+    toward_light.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, z_sign * std::abs(mu));
+  }
+  return interface_albedo(interface, toward_light);
+}
+
+std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos) {
+  std::vector<double> result;
+  for (const InterfaceAlbedo& a : albedos) result.push_back(a.reflectance);
+  return result;
+}
+
+std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos) {
+  std::vector<double> result;
+  for (const InterfaceAlbedo& a : albedos) result.push_back(a.transmittance);
+  return result;
+}
+
+}  // namespace skinlayer

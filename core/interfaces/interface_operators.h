@@ -1,0 +1,54 @@
+// Discretized interface operators (Stam 2001's t12, R21, R23, ...): Fourier coefficients of a rough interface's
+// BSDF between sets of propagation directions, and the radiance-to-radiance matrices built from them.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/interfaces/interface_albedo.h"
+#include "core/interfaces/microfacet.h"
+#include "core/series/fourier.h"
+
+namespace skinlayer {
+
+// f^m(d_from -> d_to) of the interface's full BSDF (reflection or transmission, whichever the signs imply), for
+// signed propagation cosines. Per mode an (n_to x n_from) matrix, in 1/sr.
+FourierKernel interface_fourier(const RoughDielectric& interface, std::span<const double> mu_from,
+                                std::span<const double> mu_to, const CosineProjector& projector);
+
+// Turns coefficients over quadrature directions (from = nodes with weights a_j) into operators that map node
+// radiance to outgoing radiance:  K^m(o, j) = c_m f^m(mu_j -> mu_o) |mu_j| a_j  (dimensionless).
+void apply_quadrature_weights(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights);
+
+// Energy matching of a kernel from outside directions into the nodes (rows = nodes, columns = outside directions,
+// before apply_quadrature_weights): scales column k of every mode by  target[k] / (c_0 sum_j a_j |mu_j| f^0(j, k)),
+// so that the node quadrature of the lobe carries exactly the energy `target[k]` of the accurate integral
+// (interface_albedo). A narrow lobe (small sigma, and the refracted lobe is narrower by about 1 - 1/eta) falls
+// between the nodes, and near the normal, where the nodes are sparsest in angle, its node sum errs by percents even
+// at N = 6/sigma. Scaling all modes alike keeps the lobe's shape. Columns whose sum or target is 0 are left alone.
+void match_column_energy(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights,
+                         std::span<const double> target);
+
+// The same for a reflection kernel between the nodes themselves (rows and columns over the same |mu_j|, before
+// apply_quadrature_weights), keeping its reciprocity: f^m(o, j) -> d_o f^m(o, j) d_j for every mode, with the
+// positive d solving  d_j sum_o c_0 a_o |mu_o| f^0(o, j) d_o = target[j]  (a symmetric Sinkhorn-Knopp scaling,
+// iterated as d_j <- sqrt(d_j target_j / energy_j(d)) to a relative residual of 1e-12 or 200 steps). A reciprocal
+// kernel (f^m(o, j) = f^m(j, o) for reflection inside one medium) stays reciprocal, so the solved BRDF does too.
+// Nodes whose column sum or target is 0 keep d = 1.
+void match_reflection_energy(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights,
+                             std::span<const double> target);
+
+// Generalized reciprocity of the radiance BTDF (Walter et al. 2007): f_t12(a -> b) / n2^2 = f_t21(b -> a) / n1^2.
+// The reversed pair of propagation directions has the same azimuth difference, so for a kernel carrying light from
+// medium a into medium b, the kernel from b back into a is its transpose / eta^2, eta = n_b / n_a.
+FourierKernel transmission_by_reciprocity(const FourierKernel& a_to_b, double eta);
+
+// The accurate albedos (interface_albedo) of an interface for light arriving along each cosine, with the direction
+// back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame (+z up): light from above has
+// z_sign +1, light from below -1.
+std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
+                                                     double z_sign);
+std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos);
+std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos);
+
+}  // namespace skinlayer

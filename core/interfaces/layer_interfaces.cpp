@@ -1,0 +1,149 @@
+#include "core/interfaces/layer_interfaces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "core/interfaces/interface_operators.h"
+
+namespace skinlayer {
+
+std::vector<double> negated(std::span<const double> cosines) {
+  std::vector<double> result(cosines.begin(), cosines.end());
+  for (double& v : result) v = -v;
+  return result;
+}
+
+LayerGeometry classify_layer(const Material& material) {
+  LayerGeometry geometry;
+  geometry.top_open = material.eta == 1.0;
+  geometry.top = {material.eta, material.sigma};
+  switch (material.bottom.kind) {
+    case BottomKind::Air:
+      geometry.base = material.bottom_eta() == 1.0 ? LayerBase::Open : LayerBase::Rough;
+      break;
+    case BottomKind::Matched:
+      geometry.base = LayerBase::Open;
+      break;
+    case BottomKind::Lambert:
+      geometry.base = LayerBase::Lambert;
+      break;
+  }
+  if (geometry.base == LayerBase::Rough) geometry.bottom = {1.0 / material.bottom_eta(), material.bottom_sigma()};
+  geometry.bottom_mirrors_top = geometry.base == LayerBase::Rough && material.bottom_eta() == material.eta &&
+                                material.bottom_sigma() == material.sigma;
+  return geometry;
+}
+
+Eigen::MatrixXd lambert_reflection(const QuadratureRule& quadrature, double albedo) {
+  const Eigen::Index n = quadrature.size();
+  Eigen::RowVectorXd row(n);
+  for (Eigen::Index j = 0; j < n; ++j) row(j) = 2.0 * albedo * quadrature.nodes[j] * quadrature.weights[j];
+  return row.replicate(n, 1);
+}
+
+std::size_t InterfaceKernels::bytes() const {
+  std::size_t total = 0;
+  for (const FourierKernel* k : {&r_top, &t_source, &t_exit, &t_source_exterior, &r_top_rows, &r_bottom, &t_bottom_exit,
+                                 &s_bottom_beam, &t_bottom_beam, &r_bottom_rows, &r_bottom_beam_rows}) {
+    total += fourier_kernel_bytes(*k);
+  }
+  return total + sizeof(InterfaceAlbedo) * (top_inside.size() + bottom_inside.size());
+}
+
+InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
+                                   std::span<const double> mu_in, std::span<const double> mu_out,
+                                   const ParallelFor& parallel_for, KernelSet set) {
+  InterfaceKernels k;
+  k.geometry = geometry;
+  k.quadrature = double_gauss_half_range(ordinates);
+  k.mu_in.assign(mu_in.begin(), mu_in.end());
+  k.mu_out.assign(mu_out.begin(), mu_out.end());
+  const std::size_t n = k.quadrature.nodes.size();
+  k.top_inside.assign(n, InterfaceAlbedo{0.0, 1.0});
+  k.bottom_inside.assign(n, InterfaceAlbedo{0.0, 1.0});
+  const bool want_exit = !mu_out.empty();
+  const CosineProjector surface(max_modes, interface_azimuths);
+  const std::span<const double> up = k.quadrature.nodes;
+  const std::span<const double> weights = k.quadrature.weights;
+  const std::vector<double> down = negated(up);
+  const std::vector<double> down_in = negated(mu_in);
+  const std::vector<double> down_out = negated(mu_out);
+  const bool rough_bottom = geometry.base == LayerBase::Rough;
+  const bool bottom_is_top = rough_bottom && geometry.bottom_mirrors_top && !geometry.top_open;
+  const bool all = set == KernelSet::All;
+
+  // Independent kernels, each written by one task: they run side by side on the caller's parallel-for.
+  std::vector<std::function<void()>> tasks;
+  if (!geometry.top_open && (all || bottom_is_top)) {
+    tasks.emplace_back([&] {
+      k.r_top = interface_fourier(geometry.top, up, down, surface);
+      k.top_inside = interface_albedos_along(geometry.top, up, -1.0);
+      match_reflection_energy(k.r_top, up, weights, reflectances(k.top_inside));
+      apply_quadrature_weights(k.r_top, up, weights);
+    });
+  }
+  if (!geometry.top_open) {
+    tasks.emplace_back([&] {
+      k.t_source = interface_fourier(geometry.top, down_in, down, surface);
+      match_column_energy(k.t_source, up, weights, transmittances(interface_albedos_along(geometry.top, mu_in, 1.0)));
+      if (want_exit) {
+        // By reciprocity the exit operator inherits the energy matching of the source columns, row by row.
+        k.t_exit = transmission_by_reciprocity(k.t_source, geometry.top.eta);
+        apply_quadrature_weights(k.t_exit, up, weights);
+      }
+    });
+    if (all && want_exit && geometry.base == LayerBase::Open) {
+      tasks.emplace_back([&] {
+        k.t_source_exterior = interface_fourier(geometry.top, down_in, down_out, surface);
+        k.r_top_rows = interface_fourier(geometry.top, up, down_out, surface);
+        apply_quadrature_weights(k.r_top_rows, up, weights);
+      });
+    }
+  }
+  if (rough_bottom && !bottom_is_top) {
+    tasks.emplace_back([&] {
+      k.r_bottom = interface_fourier(geometry.bottom, down, up, surface);
+      k.bottom_inside = interface_albedos_along(geometry.bottom, up, 1.0);
+      match_reflection_energy(k.r_bottom, up, weights, reflectances(k.bottom_inside));
+      apply_quadrature_weights(k.r_bottom, up, weights);
+    });
+    if (all && want_exit) {
+      tasks.emplace_back([&] {
+        // As for the top: the exit rows are the transposed source columns from the air below (propagating up), each
+        // matched to its slope-space transmittance. A sharp, low-contrast bottom (sigma3 0.2, eta3 1.2) has an
+        // interior lobe ~ sigma3 (1 - 1/eta3) wide, narrower than the node spacing: its unmatched node sums ripple
+        // by percents across exit angles.
+        FourierKernel from_below = interface_fourier(geometry.bottom, mu_out, up, surface);
+        match_column_energy(from_below, up, weights,
+                            transmittances(interface_albedos_along(geometry.bottom, mu_out, -1.0)));
+        k.t_bottom_exit = transmission_by_reciprocity(from_below, 1.0 / geometry.bottom.eta);
+        apply_quadrature_weights(k.t_bottom_exit, up, weights);
+      });
+    }
+  }
+  if (all && rough_bottom && geometry.top_open) {
+    tasks.emplace_back([&] {
+      k.s_bottom_beam = interface_fourier(geometry.bottom, down_in, up, surface);
+      match_column_energy(k.s_bottom_beam, up, weights,
+                          reflectances(interface_albedos_along(geometry.bottom, mu_in, 1.0)));
+    });
+    if (want_exit) {
+      tasks.emplace_back([&] {
+        k.t_bottom_beam = interface_fourier(geometry.bottom, down_in, down_out, surface);
+        k.r_bottom_rows = interface_fourier(geometry.bottom, down, mu_out, surface);
+        apply_quadrature_weights(k.r_bottom_rows, up, weights);
+        k.r_bottom_beam_rows = interface_fourier(geometry.bottom, down_in, mu_out, surface);
+      });
+    }
+  }
+  run_parallel(parallel_for, static_cast<int>(tasks.size()), [&](int i) { tasks[static_cast<std::size_t>(i)](); });
+  if (bottom_is_top) {
+    k.r_bottom = k.r_top;
+    if (all) k.t_bottom_exit = k.t_exit;
+    k.bottom_inside = k.top_inside;
+  }
+  return k;
+}
+
+}  // namespace skinlayer

@@ -1,0 +1,79 @@
+#include "core/series/bsdf_fourier_series.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/series/fourier.h"
+#include "core/unscattered/two_interface_series.h"
+
+namespace skinlayer {
+
+AzimuthalSeriesTable bsdf_fourier_series(const RoughDielectric& top, std::span<const LayerTables> channels,
+                                         ScatteringKind kind, std::span<const double> theta_i,
+                                         std::span<const double> theta_o, const SeriesOptions& options) {
+  if (channels.empty()) throw std::invalid_argument("bsdf_fourier_series: no channels");
+  const UnscatteredLight& unscattered = channels.front().unscattered();
+  for (const LayerTables& tables : channels) {
+    if (!(tables.unscattered() == unscattered)) {
+      throw std::invalid_argument("bsdf_fourier_series: the channels are not one material's");
+    }
+  }
+  const bool reflection = kind == ScatteringKind::Reflection;
+  const UnscatteredPath path = unscattered.path();
+  // What is sampled in azimuth: the surface term and the unscattered lobes of one interface.
+  const bool surface = reflection && top.eta != 1.0;
+  const bool sampled_unscattered =
+      path == UnscatteredPath::BottomOnly || (!reflection && path == UnscatteredPath::TopOnly);
+  const bool sampled = surface || sampled_unscattered;
+  std::vector<Eigen::MatrixXd> two_interface;
+  if (!reflection && path == UnscatteredPath::TopThenBottom) {
+    two_interface = two_interface_btdf_series(unscattered, theta_i, theta_o, two_interface_series_modes(unscattered),
+                                              options.parallel_for);
+  }
+  const AdaptiveCosineSeries adaptive(std::max(16, options.max_modes), options.tolerance);
+
+  AzimuthalSeriesTable table;
+  table.channels = static_cast<int>(channels.size());
+  table.rows = static_cast<int>(theta_i.size());
+  table.columns = static_cast<int>(theta_o.size());
+  table.entries.resize(static_cast<std::size_t>(table.rows) * table.columns);
+  run_parallel(options.parallel_for, table.rows, [&](int i) {
+    const Vec3 wi = direction_from_angles(theta_i[i], 0.0);
+    const double g1_in = smith_g1_beckmann(wi.z(), top.sigma);
+    for (int o = 0; o < table.columns; ++o) {
+      std::vector<double> shared;
+      if (sampled) {
+        const double g1_out = smith_g1_beckmann(std::cos(theta_o[o]), top.sigma);
+        shared = adaptive([&](double phi) {
+          double value = 0.0;
+          if (surface) value += microfacet_brdf(top, wi, direction_from_angles(theta_o[o], phi), g1_in, g1_out);
+          if (sampled_unscattered) {
+            value += reflection ? unscattered.brdf(theta_i[i], theta_o[o], phi)
+                                : unscattered.btdf(theta_i[i], theta_o[o], phi);
+          }
+          return value;
+        });
+      }
+      std::size_t length = std::max(shared.size(), two_interface.size());
+      for (const LayerTables& tables : channels) length = std::max(length, static_cast<std::size_t>(tables.modes()));
+      std::vector<double>& entry = table.entries[table.index(i, o)];
+      entry.assign(length * channels.size(), 0.0);
+      for (std::size_t c = 0; c < channels.size(); ++c) {
+        double* series = entry.data() + c * length;
+        for (std::size_t k = 0; k < shared.size(); ++k) series[k] += shared[k];
+        for (std::size_t k = 0; k < two_interface.size(); ++k) series[k] += two_interface[k](o, i);
+        for (int m = 0; m < channels[c].modes(); ++m) {
+          series[m] += reflection ? channels[c].reflection_mode(m, theta_i[i], theta_o[o])
+                                  : channels[c].transmission_mode(m, theta_i[i], theta_o[o]);
+        }
+      }
+      // Nothing at all (an opaque material's transmission): an empty entry.
+      if (std::ranges::all_of(entry, [](double a) { return a == 0.0; })) entry.clear();
+    }
+    if (options.row_done) options.row_done();
+  });
+  return table;
+}
+
+}  // namespace skinlayer
