@@ -29,7 +29,7 @@ namespace skinlayer {
 
 class StackSolver {
  public:
-  // As LayerSolver (core/solver.cpp): the top and bottom kernels come from the caller (its cache), for the
+  // As LayerSolver (core/solve/layer_solver.h): the top and bottom kernels come from the caller (its cache), for the
   // material's geometry and outside directions; the internal interfaces' and the layers' phase kernels are built
   // here, or taken from the cache.
   StackSolver(const Material& material, const Resolution& resolution, std::shared_ptr<const InterfaceKernels> kernels,
