@@ -15,7 +15,6 @@
 #include "core/medium/slab_eigen.h"
 #include "core/series/quadrature.h"
 #include "core/solve/boundary_solve.h"
-#include "core/solve/layer_solver.h"
 #include "core/solve/solve_cache.h"
 #include "core/solve/stack_solver.h"
 #include "core/unscattered/bottom_bounce.h"
@@ -78,24 +77,13 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
   const UnscatteredLight unscattered = options.exact_unscattered ? UnscatteredLight(material) : UnscatteredLight();
   const auto kernels = kernels_for(material, resolution, grid, grid, options.cache, options.parallel_for);
-  // One layer: the single-slab solve; a stack: core/solve/stack_solver.h. The channels share either.
-  std::optional<LayerSolver> layer;
-  std::optional<StackSolver> stack;
-  if (material.below.empty()) {
-    layer.emplace(material, resolution, kernels, unscattered.path(), options.cache);
-  } else {
-    stack.emplace(material, resolution, kernels, unscattered.path(), options.cache, options.parallel_for);
-  }
+  // One layer is a stack of one: core/solve/stack_solver.h solves both. The channels share it.
+  const StackSolver solver(material, resolution, kernels, unscattered.path(), options.cache, options.parallel_for);
   struct ModeTables {
     Eigen::MatrixXd reflection, transmission;
   };
   const auto solve_mode = [&](int m, int channel) -> ModeTables {
-    const Material& c = channels[static_cast<std::size_t>(channel)];
-    if (layer) {
-      LayerSolver::ModeResult r = layer->solve_mode(m, c.albedo);
-      return {std::move(r.reflection), std::move(r.transmission)};
-    }
-    StackSolver::ModeResult r = stack->solve_mode(m, layer_albedos(c));
+    StackSolver::ModeResult r = solver.solve_mode(m, layer_albedos(channels[static_cast<std::size_t>(channel)]));
     return {std::move(r.reflection), std::move(r.transmission)};
   };
   const auto check_cancelled = [&options] {
@@ -296,81 +284,14 @@ std::vector<double> cosines_of(std::span<const double> theta) {
   return mu;
 }
 
-std::vector<std::vector<DirectionalAlbedo>> layer_directional_albedo(const Material& material,
-                                                                     std::span<const double> theta_i,
-                                                                     std::span<const double> albedos,
-                                                                     const SolveOptions& options) {
-  const Resolution resolution = flux_resolution(material, options);
-  const std::vector<double> mu0 = cosines_of(theta_i);
-  const LayerSolver solver(material, resolution,
-                           kernels_for(material, resolution, mu0, {}, options.cache, options.parallel_for),
-                           UnscatteredPath::None, options.cache);
-  const LayerGeometry& geometry = solver.kernels().geometry;
-  const QuadratureRule& q = solver.kernels().quadrature;
+}  // namespace
 
-  // Energy transmittance of each interface from inside, per node: light travelling up (top) or down (bottom).
-  const std::vector<InterfaceAlbedo>& top_inside = solver.kernels().top_inside;
-  const std::vector<InterfaceAlbedo>& bottom_inside = solver.kernels().bottom_inside;
-  const bool direct_path = geometry.top_open && !std::isinf(material.tau);
-  // The interfaces' albedos for the incident directions, which no albedo changes: the top's for light from the air,
-  // and the bottom's for the open top's beam reaching it unscattered.
-  std::vector<Vec3> incident;
-  for (const double theta : theta_i) incident.push_back(direction_from_angles(theta, 0.0));
-  const std::vector<InterfaceAlbedo> entries = interface_albedo(geometry.top, incident);
-  std::vector<Vec3> beam_at_bottom;
-  for (const double mu : mu0) beam_at_bottom.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, mu);
-  const std::vector<InterfaceAlbedo> beam_exits = direct_path && geometry.base == LayerBase::Rough
-                                                      ? interface_albedo(geometry.bottom, beam_at_bottom)
-                                                      : std::vector<InterfaceAlbedo>(mu0.size(), {0.0, 0.0});
-  std::vector<std::vector<DirectionalAlbedo>> result;
-  for (const double albedo : albedos) {
-    const LayerSolver::ModeResult mode = solver.solve_mode(0, albedo);
-    std::vector<DirectionalAlbedo> rows;
-    for (std::size_t k = 0; k < theta_i.size(); ++k) {
-      const Eigen::Index col = static_cast<Eigen::Index>(k);
-      DirectionalAlbedo row{};
-      row.theta_i = theta_i[k];
-      const InterfaceAlbedo& entry = entries[k];
-      row.reflectance_surface = entry.reflectance;
-      row.interface_loss = entry.loss();
-      double up = 0.0, down = 0.0;
-      for (int j = 0; j < q.size(); ++j) {
-        const double flux_weight = 2.0 * kPi * q.nodes[j] * q.weights[j];
-        const double up_flux = flux_weight * mode.field.up_top(j, col);
-        const double down_flux = flux_weight * mode.field.down_bottom(j, col);
-        up += up_flux * top_inside[j].transmittance;
-        down += down_flux * bottom_inside[j].transmittance;
-        row.interface_loss += up_flux * top_inside[j].loss();
-        if (geometry.base == LayerBase::Rough) row.interface_loss += down_flux * bottom_inside[j].loss();
-      }
-      row.reflectance_subsurface = up;
-      const double direct = direct_path ? std::exp(-material.tau / std::max(mu0[k], kMinCosine)) : 0.0;
-      switch (geometry.base) {
-        case LayerBase::Lambert:
-          row.transmittance = 0.0;
-          break;
-        case LayerBase::Open:
-          row.transmittance = down + direct;
-          break;
-        case LayerBase::Rough: {
-          const InterfaceAlbedo beam_exit = direct > 0.0 ? beam_exits[k] : InterfaceAlbedo{0.0, 0.0};
-          row.transmittance = down + direct * beam_exit.transmittance;
-          row.interface_loss += direct * (direct > 0.0 ? beam_exit.loss() : 0.0);
-          break;
-        }
-      }
-      if (std::isinf(material.tau)) row.transmittance = 0.0;
-      row.absorptance = 1.0 - row.reflectance() - row.transmittance;
-      rows.push_back(row);
-    }
-    result.push_back(std::move(rows));
-  }
-  return result;
-}
-
-std::vector<std::vector<DirectionalAlbedo>> stack_directional_albedo(std::span<const Material> channels,
-                                                                     std::span<const double> theta_i,
-                                                                     const SolveOptions& options) {
+std::vector<std::vector<DirectionalAlbedo>> directional_albedo(std::span<const Material> channels,
+                                                               std::span<const double> theta_i,
+                                                               const SolveOptions& options) {
+  if (channels.empty()) return {};
+  check_channels(channels);
+  // Mode 0 alone, of one layer or of a stack alike (core/solve/stack_solver.h), for every channel.
   const Material& material = channels.front();
   const Resolution resolution = flux_resolution(material, options);
   const std::vector<double> mu0 = cosines_of(theta_i);
@@ -384,19 +305,6 @@ std::vector<std::vector<DirectionalAlbedo>> stack_directional_albedo(std::span<c
     result.push_back(std::move(rows));
   }
   return result;
-}
-
-}  // namespace
-
-std::vector<std::vector<DirectionalAlbedo>> directional_albedo(std::span<const Material> channels,
-                                                               std::span<const double> theta_i,
-                                                               const SolveOptions& options) {
-  if (channels.empty()) return {};
-  check_channels(channels);
-  if (!channels.front().below.empty()) return stack_directional_albedo(channels, theta_i, options);
-  std::vector<double> albedos;
-  for (const Material& c : channels) albedos.push_back(c.albedo);
-  return layer_directional_albedo(channels.front(), theta_i, albedos, options);
 }
 
 std::vector<std::vector<DirectionalAlbedo>> directional_albedo(const Material& material,

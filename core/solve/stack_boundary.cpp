@@ -63,6 +63,12 @@ StackField solve_stack_boundary(std::span<const BoundaryProblem> slabs, std::spa
   const Eigen::Index n = slabs.front().eigen->k.size();
   const Eigen::Index count = incident_count;
   const std::size_t layers = slabs.size();
+  if (layers == 1) {
+    // One slab: the same conditions without faces, which boundary_solve.h solves in its own, smaller system.
+    StackField field;
+    field.slabs.push_back(solve_boundary(slabs.front(), incident_count));
+    return field;
+  }
   std::vector<SlabFaces> values;
   std::vector<Eigen::Index> column;  // each slab's first unknown
   Eigen::Index unknowns = 0;

@@ -39,7 +39,8 @@ struct FaceCoupling {
 // The solved constants of each slab, and the node radiances at all its faces (N x K each).
 struct StackField {
   std::vector<NodeField> slabs;                      // c-, c+, up_top and down_bottom per slab
-  std::vector<Eigen::MatrixXd> down_top, up_bottom;  // u-_i(0) and u+_i(tau_i) (zero for a semi-infinite slab)
+  std::vector<Eigen::MatrixXd> down_top, up_bottom;  // u-_i(0) and u+_i(tau_i) (zero for a semi-infinite slab);
+                                                     // empty for one slab, whose fluxes up_top and down_bottom give
 };
 
 // slabs: top to bottom; slabs[0]'s reflect_top and source_top are the top condition, slabs.back()'s reflect_bottom

@@ -337,8 +337,8 @@ std::vector<DirectionalAlbedo> StackSolver::directional_albedo(const ModeResult&
       }
     }
     // Each slab absorbs the net flux into its top face less the net flux out of its bottom face, the beam's
-    // irradiance included.
-    for (std::size_t i = 0; i < count; ++i) {
+    // irradiance included. A single layer's is absorptance less the interfaces' share: not listed apart.
+    for (std::size_t i = 0; count > 1 && i < count; ++i) {
       const NodeField& slab = field.slabs[i];
       const double beam_in = beam_amplitude_[i].size() != 0 ? beam_amplitude_[i](col) : 0.0;
       const double beam_out = beam_in * beam_attenuation_[i](col);

@@ -1,10 +1,10 @@
-// The per-mode solve of a stack of layers (Material::below non-empty): the top interface and the bottom as for one
-// layer (core/interfaces/layer_interfaces.h), a rough interface between layers where the stack has one
-// (core/interfaces/internal_interface.h), each slab's homogeneous solutions and, where the open top's beam reaches it
-// unscattered, its particular solution, all coupled by one block system (core/solve/stack_boundary.h). Then out through
-// the top and the bottom as for one layer: through the top interface from the node field, or, without one, by
-// integrating the source function through each slab in turn (core/solve/boundary_solve.h's intensity interpolation),
-// face by face.
+// The per-mode solve of a stack of layers, one layer being a stack of one (the only solver of both): the top
+// interface and the bottom (core/interfaces/layer_interfaces.h), a rough interface between layers where the stack has
+// one (core/interfaces/internal_interface.h), each slab's homogeneous solutions and, where the open top's beam
+// reaches it unscattered, its particular solution, all coupled by one block system (core/solve/stack_boundary.h:
+// DISORT's multilayer composition; for one slab, its boundary system). Then out through the top and the bottom:
+// through the top interface from the node field, or, without one, by integrating the source function through each
+// slab in turn (core/solve/boundary_solve.h's intensity interpolation), face by face.
 //
 // The unscattered light: the caller evaluates it exactly where it crosses at most two rough interfaces
 // (UnscatteredLight of the material: without interfaces between the layers, that of one slab of the total depth)
@@ -29,9 +29,11 @@ namespace skinlayer {
 
 class StackSolver {
  public:
-  // As LayerSolver (core/solve/layer_solver.h): the top and bottom kernels come from the caller (its cache), for the
-  // material's geometry and outside directions; the internal interfaces' and the layers' phase kernels are built
-  // here, or taken from the cache.
+  // The top and bottom kernels come from the caller (its cache), for the material's geometry and outside directions
+  // (mu_in: light arrives along; mu_out: the tables leave along, none for fluxes only); the internal interfaces' and
+  // the layers' phase kernels are built here, or taken from the cache. exact_path: the unscattered path
+  // (UnscatteredPath) left out of the exit sums, because the caller evaluates it exactly; None keeps every path on
+  // the ordinates.
   StackSolver(const Material& material, const Resolution& resolution, std::shared_ptr<const InterfaceKernels> kernels,
               UnscatteredPath exact_path, SolveCache* cache, const ParallelFor& parallel_for);
 
@@ -44,7 +46,7 @@ class StackSolver {
   ModeResult solve_mode(int m, std::span<const double> albedos) const;
 
   // Energy fractions per incident direction (kernels built with these as mu_in) from mode 0 (solve_mode(0, ...)):
-  // the DirectionalAlbedo columns and, in layer_absorptance, what each slab absorbs.
+  // the DirectionalAlbedo columns and, for two layers or more, in layer_absorptance, what each slab absorbs.
   std::vector<DirectionalAlbedo> directional_albedo(const ModeResult& mode0) const;
 
   const InterfaceKernels& kernels() const { return *kernels_; }
