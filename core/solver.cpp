@@ -5,7 +5,6 @@
 #include <functional>
 #include <limits>
 #include <memory>
-#include <optional>
 
 #include "core/conventions.h"
 #include "core/interfaces/interface_albedo.h"
