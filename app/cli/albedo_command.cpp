@@ -1,6 +1,5 @@
 #include "app/cli/albedo_command.h"
 
-#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -14,7 +13,6 @@
 #include "app/cli/quoted.h"
 #include "app/process/parallel_for.h"
 #include "core/conventions.h"
-#include "core/solve/solve_cache.h"
 #include "core/solver.h"
 
 namespace skinlayer::cli {
@@ -140,17 +138,13 @@ int run_albedo_command(std::span<const std::string_view> arguments, std::ostream
       check_rows(albedos);
       return albedo_table(material, thetas_degrees, {&albedos});
     }
-    // One solve per distinct channel, each exactly the grey solve of that channel's material, through one cache.
+    // The distinct channels in one solve, sharing every albedo-independent step (core's directional_albedo).
     const DistinctChannels channels = distinct_channels(document);
-    SolveCache cache;
     SolveOptions options;
-    options.cache = &cache;
     options.parallel_for = parallel_for_threads;
-    std::vector<std::vector<DirectionalAlbedo>> distinct;
-    for (const Material& material : channels.materials) {
-      distinct.push_back(directional_albedo(material, thetas_radians, options));
-      check_rows(distinct.back());
-    }
+    const std::vector<std::vector<DirectionalAlbedo>> distinct =
+        directional_albedo(channels.materials, thetas_radians, options);
+    for (const std::vector<DirectionalAlbedo>& rows : distinct) check_rows(rows);
     return albedo_table(document.layer, thetas_degrees,
                         {&distinct[channels.index[0]], &distinct[channels.index[1]], &distinct[channels.index[2]]});
   }();
