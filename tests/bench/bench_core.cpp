@@ -5,6 +5,7 @@
 //               Carlo time to the solver's accuracy, and the tables' memory; tests/bench/benchmark_report.h)
 #include <benchmark/benchmark.h>
 
+#include <Eigen/Eigenvalues>
 #include <array>
 #include <cmath>
 #include <vector>
@@ -39,6 +40,23 @@ void BM_SolveDefault(benchmark::State& state) {
   state.counters["modes"] = solve(material).modes();
 }
 BENCHMARK(BM_SolveDefault)->Unit(benchmark::kMillisecond);
+
+// The machine's unit of dense linear algebra: the eigen-decomposition of one symmetric 64 x 64 matrix (Eigen's
+// SelfAdjointEigenSolver, eigenvalues and vectors), the size of the default solve's per-mode eigen-problem (2N = 48
+// rounded up). Solve times divided by it compare across machines better than milliseconds do.
+void BM_SymmetricEigen64(benchmark::State& state) {
+  constexpr int kSize = 64;
+  Eigen::MatrixXd matrix(kSize, kSize);
+  for (int i = 0; i < kSize; ++i) {
+    for (int j = 0; j < kSize; ++j) matrix(i, j) = std::cos(0.37 * (i + 1) * (j + 1)) + (i == j ? kSize : 0.0);
+  }
+  matrix = 0.5 * (matrix + matrix.transpose()).eval();
+  for (auto _ : state) {
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(matrix);
+    benchmark::DoNotOptimize(eigen.eigenvalues().data());
+  }
+}
+BENCHMARK(BM_SymmetricEigen64)->Unit(benchmark::kMillisecond);
 
 // A stack of n layers like the paper's default (sigma 0.5, eta 1.4, air below; total T 0.2, so n = 1 is the
 // default material), the depth shared equally, g 0.8, 0.7, 0.6 and RGB albedos (0.95, 0.7, 0.55), (0.99, 0.8,
