@@ -248,13 +248,11 @@ AlbedoPair integrate_slopes(double sx, double wz, double e, double sigma, double
       const double s = std::sqrt(1.0 + p * p + q * q);
       const double cos_i = along / s;
       const double common = along * row_density * std::exp(-p * p / sigma2);
-      const double fresnel = fresnel_dielectric(cos_i, e);
+      const auto [fresnel, cos_t] = fresnel_refraction(cos_i, e);
       AlbedoPair value;
       const double reflected_z = 2.0 * cos_i / s - wz;
       if (reflected_z > 0.0) value.reflectance = fresnel * smith_g1(reflected_z) * common;
-      const double sin2_t = (1.0 - cos_i * cos_i) / (e * e);
-      if (sin2_t < 1.0 && fresnel < 1.0) {
-        const double cos_t = std::sqrt(1.0 - sin2_t);
+      if (fresnel < 1.0) {
         const double transmitted_z = -wz / e + (cos_i / e - cos_t) / s;
         if (transmitted_z < 0.0) value.transmittance = (1.0 - fresnel) * smith_g1(transmitted_z) * common;
       }
