@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/conventions.h"
+#include "core/interfaces/interface_azimuth_sweep.h"
 
 namespace skinlayer {
 
@@ -57,9 +58,7 @@ FourierKernel interface_fourier(const RoughDielectric& interface, std::span<cons
   const auto kernel_for_pair = [&interface](const Vec3& wi, double cos_to) {
     const double g1_wi = smith_g1_beckmann(wi.z(), interface.sigma);
     const double g1_wo = smith_g1_beckmann(cos_to, interface.sigma);
-    return [&interface, wi, g1_wi, g1_wo](const Vec3& wo) {
-      return rough_dielectric_bsdf(interface, wi, wo, g1_wi, g1_wo);
-    };
+    return InterfaceAzimuthSweep(interface, wi, cos_to, g1_wi, g1_wo);
   };
   // The azimuths each pair's lobe can reach; grazing pairs, unresolved columns and a missing interface (eta 1, a
   // BSDF of 0) are sampled everywhere.

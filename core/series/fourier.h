@@ -66,7 +66,8 @@ Vec3 propagation_direction(double mu, double phi);
 //   K^m(to b, from a) = coefficients of  Delta phi -> kernel(omega_i = -d_a(0), omega_o = d_b(Delta phi)),
 // where the kernel is a BSDF-like function of graphics-convention directions. mu_from and mu_to are signed
 // propagation cosines. kernel_for_pair(wi, mu_to) returns the callable wo -> value for one pair of polar angles,
-// so that work depending only on the polar angles is done once per pair. support_for_pair(a, b) gives how many
+// so that work depending only on the polar angles is done once per pair; where that object has at_azimuth(cos, sin), a
+// function of Delta phi alone (core/interfaces/interface_azimuth_sweep.h), it is called instead. support_for_pair(a, b) gives how many
 // leading azimuth samples (phi_0 = 0, phi_1, ...) can hold a non-negligible value for the pair (mu_from[a],
 // mu_to[b]); the rest are taken as 0, neither evaluated nor projected, so a narrow lobe costs in proportion to its
 // azimuthal width. Returns one (to x from) matrix per mode.
@@ -91,10 +92,14 @@ FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, cons
   const auto sample_pair = [&](const Vec3& wi, int b, int count, auto&& column) {
     if (count == 0) return;
     const auto kernel = kernel_for_pair(wi, mu_to[b]);
-    const double sin_to = std::sqrt(std::max(0.0, 1.0 - mu_to[b] * mu_to[b]));
-    for (int k = 0; k < count; ++k) {
-      const Vec3 wo(sin_to * projector.cos_angle(k), sin_to * projector.sin_angle(k), mu_to[b]);
-      column(k) = kernel(wo);
+    if constexpr (requires { kernel.at_azimuth(1.0, 0.0); }) {  // a kernel of the azimuth alone: no direction built
+      for (int k = 0; k < count; ++k) column(k) = kernel.at_azimuth(projector.cos_angle(k), projector.sin_angle(k));
+    } else {
+      const double sin_to = std::sqrt(std::max(0.0, 1.0 - mu_to[b] * mu_to[b]));
+      for (int k = 0; k < count; ++k) {
+        const Vec3 wo(sin_to * projector.cos_angle(k), sin_to * projector.sin_angle(k), mu_to[b]);
+        column(k) = kernel(wo);
+      }
     }
   };
   const long long pairs = static_cast<long long>(n_from) * n_to;

@@ -1,21 +1,24 @@
 // The interface operators' projection skips the azimuths where a sharp lobe is negligible
 // (core/interfaces/interface_operators.cpp, lobe_azimuth_samples): the coefficients must be those of the projection of
-// every azimuth sample, which evaluates the BSDF everywhere and knows nothing of the half-vector bound.
+// every azimuth sample of the same sweep (interface_azimuth_sweep.h), which knows nothing of the half-vector bound.
 #include "core/interfaces/interface_operators.h"
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
+#include "core/interfaces/interface_azimuth_sweep.h"
 #include "core/series/quadrature.h"
 
 namespace skinlayer {
 namespace {
 
+// The same sweep as interface_fourier's (interface_azimuth_sweep.h), sampled at every azimuth.
 FourierKernel every_azimuth(const RoughDielectric& interface, std::span<const double> mu_from,
                             std::span<const double> mu_to, const CosineProjector& projector) {
-  const auto kernel_for_pair = [&interface](const Vec3& wi, double) {
-    return [&interface, wi](const Vec3& wo) { return rough_dielectric_bsdf(interface, wi, wo); };
+  const auto kernel_for_pair = [&interface](const Vec3& wi, double cos_to) {
+    return InterfaceAzimuthSweep(interface, wi, cos_to, smith_g1_beckmann(wi.z(), interface.sigma),
+                                 smith_g1_beckmann(cos_to, interface.sigma));
   };
   return project_propagation_kernel(kernel_for_pair, mu_from, mu_to, projector);
 }
