@@ -77,10 +77,31 @@ FourierKernel interface_fourier(const RoughDielectric& interface, std::span<cons
     }
     if (nearest > kUnresolvedSlopes2) std::fill_n(support.begin() + static_cast<std::ptrdiff_t>(a * n_to), n_to, n);
   }
+  // Reflection between a set of directions and its mirror (mu_to = -mu_from, as R21 and R23 between the nodes) is
+  // reciprocal, f(wi, wo) = f(wo, wi) at the same |Delta phi|, so K^m(b, a) = K^m(a, b): only the pairs b >= a are
+  // projected, each with the wider of the two supports, and the rest mirrored.
+  const bool mirrored = mu_from.size() == n_to && std::equal(mu_from.begin(), mu_from.end(), mu_to.begin(),
+                                                             [](double from, double to) { return to == -from; });
+  if (mirrored) {
+    for (std::size_t a = 0; a < n_to; ++a) {
+      for (std::size_t b = a; b < n_to; ++b) {
+        support[a * n_to + b] = std::max(support[a * n_to + b], support[b * n_to + a]);
+        if (b > a) support[b * n_to + a] = 0;
+      }
+    }
+  }
   const auto support_for_pair = [&support, n_to](int a, int b) {
     return support[static_cast<std::size_t>(a) * n_to + static_cast<std::size_t>(b)];
   };
-  return project_propagation_kernel(kernel_for_pair, support_for_pair, mu_from, mu_to, projector);
+  FourierKernel kernel = project_propagation_kernel(kernel_for_pair, support_for_pair, mu_from, mu_to, projector);
+  if (mirrored) {
+    for (Eigen::MatrixXd& mode : kernel) {
+      for (Eigen::Index a = 0; a < mode.cols(); ++a) {
+        for (Eigen::Index b = a + 1; b < mode.rows(); ++b) mode(a, b) = mode(b, a);
+      }
+    }
+  }
+  return kernel;
 }
 
 void apply_quadrature_weights(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights) {
