@@ -11,36 +11,12 @@
 #include "app/cli/numbers.h"
 #include "app/cli/numeric_table.h"
 #include "app/cli/quoted.h"
+#include "app/cli/theta_list.h"
 #include "app/process/parallel_for.h"
 #include "core/conventions.h"
 #include "core/solver.h"
 
 namespace skinlayer::cli {
-namespace {
-
-constexpr std::string_view kThetaFlag = "theta-i";
-constexpr std::string_view kDefaultThetas = "0,30,60,80";
-
-// The comma-separated list of incidence angles in degrees, each a number in [0, 90].
-std::vector<double> parse_theta_list(std::string_view list) {
-  std::vector<double> thetas;
-  for (const std::string_view item : split_list(list, ',')) {
-    const std::optional<double> value = parse_number(item);
-    if (!value) {
-      throw UsageError(std::string(kThetaFlag) + " = " + quoted(item) + " " + number_rejection(item) +
-                       "; give a comma-separated list of angles in [0, 90] degrees, as in "
-                       "--theta-i 0,30,60,80");
-    }
-    if (!(*value >= 0.0 && *value <= 90.0)) {
-      throw UsageError(std::string(kThetaFlag) + " = " + format_number(*value) +
-                       " is out of range; valid range is [0, 90] (degrees)");
-    }
-    thetas.push_back(*value);
-  }
-  return thetas;
-}
-
-}  // namespace
 
 std::string albedo_usage() {
   return "Usage: skinlayer albedo [material flags] [--albedo A | r,g,b] [--theta-i LIST]\n"
