@@ -1,5 +1,7 @@
 #include "app/cli/albedo_command.h"
 
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -11,9 +13,12 @@
 #include "app/cli/numbers.h"
 #include "app/cli/numeric_table.h"
 #include "app/cli/quoted.h"
+#include "app/cli/skin_flag.h"
 #include "app/cli/theta_list.h"
+#include "app/material/color_channels.h"
 #include "app/process/parallel_for.h"
 #include "core/conventions.h"
+#include "core/solve/solve_cache.h"
 #include "core/solver.h"
 
 namespace skinlayer::cli {
@@ -32,10 +37,14 @@ std::string albedo_usage() {
          "channel for what depends on colour: reflectance_surface, then reflectance_subsurface_r, _g, _b,\n"
          "reflectance_*, transmittance_*, absorptance_* (and a stack's absorptance_layerK_*), each with _r, _g and\n"
          "_b. Each channel is the grey solve with that channel's albedo. --albedo A makes any material grey.\n"
+         "A --skin writes the same RGB columns: each the spectrum's linear sRGB under D65 (CIE 1931 2-degree\n"
+         "observer), from one solve per wavelength, 400-700 nm in 10 nm steps; --wavelength NM gives one\n"
+         "wavelength's grey columns instead. `skinlayer spectrum` writes the spectrum itself.\n"
          "\n"
          "  --theta-i LIST\n"
          "      comma-separated incidence angles in degrees from the normal, each in [0, 90]; default " +
-         std::string(kDefaultThetas) + ".\n" + rgb_albedo_usage() + "\n" + material_flags_usage() +
+         std::string(kDefaultThetas) + ".\n" + rgb_albedo_usage() + "\n" + skin_flags_usage() + "\n" +
+         material_flags_usage() +
          "\n"
          "Example:\n"
          "  skinlayer albedo --albedo 0.9 --g 0.5 --bottom lambert:0.3 --theta-i 0,45,85\n"
@@ -90,12 +99,39 @@ NumericTable albedo_table(const Material& material, std::span<const double> thet
   return table;
 }
 
+
+// The solves' rows mixed into linear sRGB (color_channels.h): every field is linear in the solved values.
+std::vector<DirectionalAlbedo> mixed_rows(const std::vector<std::vector<DirectionalAlbedo>>& solved,
+                                          const Eigen::RowVectorXd& weights) {
+  std::vector<DirectionalAlbedo> mixed = solved.front();
+  for (std::size_t a = 0; a < mixed.size(); ++a) {
+    DirectionalAlbedo& row = mixed[a];
+    row.reflectance_subsurface = row.transmittance = row.absorptance = row.interface_loss = 0.0;
+    std::fill(row.layer_absorptance.begin(), row.layer_absorptance.end(), 0.0);
+    for (std::size_t k = 0; k < solved.size(); ++k) {
+      const double w = weights(static_cast<Eigen::Index>(k));
+      const DirectionalAlbedo& one = solved[k][a];
+      row.reflectance_subsurface += w * one.reflectance_subsurface;
+      row.transmittance += w * one.transmittance;
+      row.absorptance += w * one.absorptance;
+      row.interface_loss += w * one.interface_loss;
+      for (std::size_t i = 0; i < row.layer_absorptance.size(); ++i) {
+        row.layer_absorptance[i] += w * one.layer_absorptance[i];
+      }
+    }
+  }
+  return mixed;
+}
+
 }  // namespace
 
 int run_albedo_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  const std::vector<std::string_view> flag_names = material_flags_and({kThetaFlag});
+  const std::vector<std::string_view> flag_names = material_flags_and({kThetaFlag, kSkinFlag, kWavelengthFlag});
   const ParsedFlags flags = ParsedFlags::parse(arguments, flag_names, "skinlayer albedo");
-  const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  if (const std::optional<double> wavelength = wavelength_from_flags(flags)) {
+    document = document_at_wavelength(document, *wavelength);
+  }
   const std::vector<double> thetas_degrees = parse_theta_list(flags.value(kThetaFlag).value_or(kDefaultThetas));
 
   std::vector<double> thetas_radians;
@@ -114,15 +150,24 @@ int run_albedo_command(std::span<const std::string_view> arguments, std::ostream
       check_rows(albedos);
       return albedo_table(material, thetas_degrees, {&albedos});
     }
-    // The distinct channels in one solve, sharing every albedo-independent step (core's directional_albedo).
-    const DistinctChannels channels = distinct_channels(document);
+    const ColorChannels channels = color_channels(document);
     SolveOptions options;
     options.parallel_for = parallel_for_threads;
-    const std::vector<std::vector<DirectionalAlbedo>> distinct =
-        directional_albedo(channels.materials, thetas_radians, options);
-    for (const std::vector<DirectionalAlbedo>& rows : distinct) check_rows(rows);
-    return albedo_table(document.layer, thetas_degrees,
-                        {&distinct[channels.index[0]], &distinct[channels.index[1]], &distinct[channels.index[2]]});
+    std::vector<std::vector<DirectionalAlbedo>> solved;
+    if (document.skin) {  // one stack per wavelength, the interfaces cached
+      SolveCache cache;
+      options.cache = &cache;
+      for (const Material& material : channels.materials) {
+        solved.push_back(directional_albedo(material, thetas_radians, options));
+      }
+    } else {  // the distinct channels in one solve, sharing every albedo-independent step
+      solved = directional_albedo(channels.materials, thetas_radians, options);
+    }
+    for (const std::vector<DirectionalAlbedo>& rows : solved) check_rows(rows);
+    const std::array<std::vector<DirectionalAlbedo>, 3> rgb = {
+        mixed_rows(solved, channels.to_rgb.row(0)), mixed_rows(solved, channels.to_rgb.row(1)),
+        mixed_rows(solved, channels.to_rgb.row(2))};
+    return albedo_table(channels.materials.front(), thetas_degrees, {&rgb[0], &rgb[1], &rgb[2]});
   }();
   table.require_finite();
   table.write_csv(out);

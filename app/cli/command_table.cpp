@@ -10,6 +10,7 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_command.h"
 #include "app/cli/render_command.h"
+#include "app/cli/spectrum_command.h"
 #include "app/cli/validate_command.h"
 
 namespace skinlayer::cli {
@@ -22,6 +23,8 @@ const std::array kCommands{
             [](Arguments arguments, const CommandStreams& s) { return run_eval_command(arguments, s.in, s.out); }},
     Command{"albedo", albedo_usage,
             [](Arguments arguments, const CommandStreams& s) { return run_albedo_command(arguments, s.out); }},
+    Command{"spectrum", spectrum_usage,
+            [](Arguments arguments, const CommandStreams& s) { return run_spectrum_command(arguments, s.out); }},
     Command{"render", render_usage,
             [](Arguments arguments, const CommandStreams& s) { return run_render_command(arguments, s.out, s.err); }},
     Command{"material", material_usage,

@@ -10,6 +10,8 @@
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
 #include "app/cli/numeric_table.h"
+#include "app/cli/skin_flag.h"
+#include "app/material/color_channels.h"
 #include "app/process/parallel_for.h"
 #include "core/conventions.h"
 #include "core/models/subsurface_model.h"
@@ -33,10 +35,13 @@ std::string eval_usage() {
          "  theta_i,theta_o,phi,brdf_surface,brdf_subsurface_r,brdf_subsurface_g,brdf_subsurface_b,\n"
          "  brdf_r,brdf_g,brdf_b,btdf_r,btdf_g,btdf_b\n"
          "Each channel is the grey solve with that channel's albedo. --albedo A makes any material grey.\n"
+         "A --skin writes the same RGB columns: each is the spectrum's linear sRGB under D65 (CIE 1931 2-degree\n"
+         "observer), from one solve per wavelength, 400-700 nm in 10 nm steps; --wavelength NM gives one\n"
+         "wavelength's grey columns instead.\n"
          "--model picks the subsurface model (the surface term is the same): stam, the layer model (default);\n"
          "lambert, A/pi with the layer's albedo at normal incidence; hk, Hanrahan-Krueger single scattering.\n"
          "\n" +
-         rgb_albedo_usage() + "\n" + material_flags_usage() +
+         rgb_albedo_usage() + "\n" + skin_flags_usage() + "\n" + material_flags_usage() +
          "\n"
          "Example:\n"
          "  printf 'theta_i,theta_o,phi\\n30,30,180\\n' | skinlayer eval --sigma 0.3 --T 0.5 --bottom matched\n"
@@ -45,9 +50,9 @@ std::string eval_usage() {
 
 namespace {
 
-// Each channel's tables: one solve per distinct channel (channels of equal albedos share one), through one cache,
-// so the interface operators are built once.
-std::vector<LayerTables> solve_channels(const DistinctChannels& channels, SubsurfaceModel model) {
+// Each solve's tables (an RGB document's distinct channels, a skin's wavelengths), through one cache, so the
+// interface operators are built once.
+std::vector<LayerTables> solve_channels(const ColorChannels& channels, SubsurfaceModel model) {
   SolveCache cache;
   SolveOptions options;
   options.cache = &cache;
@@ -57,9 +62,10 @@ std::vector<LayerTables> solve_channels(const DistinctChannels& channels, Subsur
   return tables;
 }
 
-// An RGB material: the surface term, grey, then the subsurface BRDF, the BRDF and the BTDF per channel.
+// A colour material (RGB, or a skin's spectrum): the surface term, grey, then the subsurface BRDF, the BRDF and the
+// BTDF per channel, each the channels' weighted sum of the solves (color_channels.h).
 void write_rgb_rows(const MaterialDocument& document, SubsurfaceModel model, std::istream& in, std::ostream& out) {
-  const DistinctChannels channels = distinct_channels(document);
+  const ColorChannels channels = color_channels(document);
   const std::vector<LayerTables> solved = solve_channels(channels, model);
   const std::vector<AngleRow> rows = read_angle_rows(in);
   std::vector<std::string> columns = {"brdf_surface"};
@@ -68,17 +74,19 @@ void write_rgb_rows(const MaterialDocument& document, SubsurfaceModel model, std
     columns.insert(columns.end(), names.begin(), names.end());
   }
   NumericTable table({"theta_i", "theta_o", "phi"}, columns);
+  const auto count = static_cast<Eigen::Index>(solved.size());
+  Eigen::VectorXd subsurface_k(count), btdf_k(count);
   for (const AngleRow& row : rows) {
     const double theta_i = degrees_to_radians(row.theta_i);
     const double theta_o = degrees_to_radians(row.theta_o);
     const double phi = degrees_to_radians(row.phi);
     const double surface = brdf_surface(channels.materials.front(), theta_i, theta_o, phi);  // no albedo in it
-    std::array<double, 3> subsurface{}, btdf{};
-    for (std::size_t c = 0; c < 3; ++c) {
-      const LayerTables& tables = solved[channels.index[c]];
-      subsurface[c] = tables.brdf_subsurface(theta_i, theta_o, phi);
-      btdf[c] = tables.btdf(theta_i, theta_o, phi);
+    for (Eigen::Index k = 0; k < count; ++k) {
+      const LayerTables& tables = solved[static_cast<std::size_t>(k)];
+      subsurface_k(k) = tables.brdf_subsurface(theta_i, theta_o, phi);
+      btdf_k(k) = tables.btdf(theta_i, theta_o, phi);
     }
+    const Eigen::Vector3d subsurface = channels.to_rgb * subsurface_k, btdf = channels.to_rgb * btdf_k;
     table.add_row({row.theta_i, row.theta_o, row.phi, surface, subsurface[0], subsurface[1], subsurface[2],
                    surface + subsurface[0], surface + subsurface[1], surface + subsurface[2], btdf[0], btdf[1],
                    btdf[2]});
@@ -108,8 +116,12 @@ void write_grey_rows(const Material& material, SubsurfaceModel model, std::istre
 }  // namespace
 
 int run_eval_command(std::span<const std::string_view> arguments, std::istream& in, std::ostream& out) {
-  const ParsedFlags flags = ParsedFlags::parse(arguments, material_flags_and({kModelFlag}), "skinlayer eval");
-  const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  const ParsedFlags flags =
+      ParsedFlags::parse(arguments, material_flags_and({kModelFlag, kSkinFlag, kWavelengthFlag}), "skinlayer eval");
+  MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  if (const std::optional<double> wavelength = wavelength_from_flags(flags)) {
+    document = document_at_wavelength(document, *wavelength);
+  }
   const SubsurfaceModel model = model_from_flags(flags, document.model);
   if (document.grey()) {
     write_grey_rows(single_channel(document), model, in, out);

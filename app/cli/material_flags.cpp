@@ -7,6 +7,7 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/layer_flag.h"
+#include "app/cli/skin_flag.h"
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/material/exact_transparency.h"
@@ -176,6 +177,17 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
   if (const auto value = checked_number(flags, "bottom-sigma")) material.bottom.sigma = *value;
   if (const auto value = checked_number(flags, "bottom-eta")) material.bottom.eta = *value;
   if (const std::optional<int> ordinates = checked_ordinates(flags)) material.ordinates = ordinates;
+  if (const auto text = flags.value(kSkinFlag)) {
+    for (const std::string_view layer_flag : {"T", "tau", "albedo", "g", "layer", "bottom", "bottom-sigma",
+                                              "bottom-eta"}) {
+      if (flags.has(layer_flag)) {
+        throw UsageError("flag --" + std::string(layer_flag) +
+                         " sets a layer or the bottom, which --skin makes from the chromophores (an epidermis over a"
+                         " semi-infinite dermis); with --skin give only --sigma, --eta and --ordinates");
+      }
+    }
+    document.skin = parse_skin_spec(*text, document.skin.value_or(SkinParameters{}));
+  }
   validate(material);
   return document;
 }
@@ -183,6 +195,10 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
 Material material_from_flags(const ParsedFlags& flags) { return single_channel(material_document_from_flags(flags)); }
 
 Material single_channel(const MaterialDocument& document) {
+  if (document.skin) {
+    throw UsageError("the material is a spectral skin (--skin) and this command solves one grey material; give"
+                     " --wavelength NM for one wavelength's");
+  }
   if (!document.grey()) {
     throw UsageError("the material's albedo is RGB (" + format_shortest(document.albedo_rgb[0]) + ", " +
                      format_shortest(document.albedo_rgb[1]) + ", " + format_shortest(document.albedo_rgb[2]) +

@@ -6,7 +6,7 @@ namespace skinlayer {
 
 bool MaterialDocument::grey() const {
   const auto is_grey = [](const AlbedoRgb& rgb) { return rgb[0] == rgb[1] && rgb[1] == rgb[2]; };
-  return is_grey(albedo_rgb) && std::ranges::all_of(below_rgb, is_grey);
+  return !skin && is_grey(albedo_rgb) && std::ranges::all_of(below_rgb, is_grey);
 }
 
 Material MaterialDocument::channel(int c) const {

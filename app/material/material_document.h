@@ -11,6 +11,7 @@
 
 #include "core/material.h"
 #include "core/models/subsurface_model.h"
+#include "core/skin/skin_parameters.h"
 
 namespace skinlayer {
 
@@ -23,8 +24,11 @@ struct MaterialDocument {
   AlbedoRgb albedo_rgb = {1.0, 1.0, 1.0};
   std::vector<AlbedoRgb> below_rgb;      // a stack's layers 2..n, one per layer.below
   std::optional<SubsurfaceModel> model;  // unset: the command's default (stam)
+  // A biophysical skin (--skin): its layers per wavelength come from these parameters (core/skin/skin_optics.h),
+  // and `layer` keeps only the top interface (sigma, eta) and the ordinates. Unset: the layers above.
+  std::optional<SkinParameters> skin;
 
-  // Every layer's albedo is the same in the three channels.
+  // Every layer's albedo is the same in the three channels (never for a skin: it is spectral).
   bool grey() const;
   // The material of one channel (0 red, 1 green, 2 blue): every layer's albedo that channel's.
   Material channel(int c) const;

@@ -1,0 +1,123 @@
+// The biophysical skin on the command line (--skin, `spectrum`, --wavelength), on the real executable: the spectrum's
+// shape and energy, eval's and albedo's RGB columns as the linear-sRGB mix of the per-wavelength values that
+// `spectrum` and `eval --wavelength` write (with core's weights, which tests/core/color/spectral_color_test.cpp
+// checks against the CIE's published white point and the sRGB matrix), and every error as one line naming the key
+// and its range.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/color/spectral_color.h"
+#include "tests/app/csv_output.h"
+#include "tests/app/error_expectations.h"
+#include "tests/app/process_runner.h"
+
+namespace skinlayer::test {
+namespace {
+
+CsvOutput run_csv(const std::vector<std::string>& arguments, std::string_view stdin_text = "") {
+  const ProcessResult result = run_skinlayer(arguments, stdin_text);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  return parse_csv_output(result.out);
+}
+
+std::size_t column(const CsvOutput& csv, const std::string& name) {
+  for (std::size_t i = 0; i < csv.header.size(); ++i)
+    if (csv.header[i] == name) return i;
+  ADD_FAILURE() << "no column " << name;
+  return 0;
+}
+
+const std::string kSkin = "melanin=0.03,blood=0.01,oxygenation=0.9";
+
+TEST(SkinCommands, SpectrumCoversTheVisibleAndAccountsForEveryPhoton) {
+  const CsvOutput csv = run_csv({"spectrum", "--skin", kSkin, "--theta-i", "8,60"});
+  EXPECT_EQ(csv.header, (std::vector<std::string>{"theta_i", "wavelength_nm", "reflectance", "transmittance",
+                                                  "absorptance", "absorptance_layer1", "absorptance_layer2"}));
+  ASSERT_EQ(csv.rows.size(), 2u * 31u);
+  EXPECT_EQ(csv.rows.front()[1], 400.0);
+  EXPECT_EQ(csv.rows[30][1], 700.0);
+  EXPECT_EQ(csv.rows[31][0], 60.0);
+  for (const std::vector<double>& row : csv.rows) {
+    EXPECT_NEAR(row[2] + row[3] + row[4], 1.0, 1e-6);
+    EXPECT_LE(row[5] + row[6], row[4] + 1e-9);  // the media's share of the absorptance
+    EXPECT_GT(row[2], 0.0);
+  }
+}
+
+TEST(SkinCommands, AGreyMaterialHasAFlatSpectrumEqualToItsAlbedo) {
+  const CsvOutput spectrum = run_csv({"spectrum", "--albedo", "0.9", "--T", "0.5", "--theta-i", "30"});
+  const CsvOutput albedo = run_csv({"albedo", "--albedo", "0.9", "--T", "0.5", "--theta-i", "30"});
+  ASSERT_EQ(spectrum.rows.size(), 31u);
+  for (const std::vector<double>& row : spectrum.rows) {
+    EXPECT_EQ(row[2], albedo.rows[0][column(albedo, "reflectance")]);
+    EXPECT_EQ(row[3], albedo.rows[0][column(albedo, "transmittance")]);
+  }
+  const CsvOutput one = run_csv({"spectrum", "--albedo", "0.9", "--T", "0.5", "--theta-i", "30", "--wavelength", "555"});
+  ASSERT_EQ(one.rows.size(), 1u);
+  EXPECT_EQ(one.rows[0][2], spectrum.rows[0][2]);
+}
+
+// The RGB columns are the spectrum's linear sRGB: sum_k w_c(lambda_k) value(lambda_k).
+TEST(SkinCommands, AlbedoRgbIsTheSpectrumsColour) {
+  const CsvOutput spectrum = run_csv({"spectrum", "--skin", kSkin, "--theta-i", "8"});
+  const CsvOutput albedo = run_csv({"albedo", "--skin", kSkin, "--theta-i", "8"});
+  std::vector<double> wavelengths;
+  Eigen::VectorXd reflectance(static_cast<Eigen::Index>(spectrum.rows.size()));
+  for (std::size_t k = 0; k < spectrum.rows.size(); ++k) {
+    wavelengths.push_back(spectrum.rows[k][1]);
+    reflectance(static_cast<Eigen::Index>(k)) = spectrum.rows[k][2];
+  }
+  const Eigen::Vector3d rgb = linear_srgb_weights(wavelengths) * reflectance;
+  const char* const names[3] = {"reflectance_r", "reflectance_g", "reflectance_b"};
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(albedo.rows[0][column(albedo, names[c])], rgb(c), 1e-9) << names[c];
+  // Light skin is red over green over blue, and bright enough to be skin (NIST's forearms: 0.26-0.66 at 649 nm).
+  EXPECT_GT(rgb(0), rgb(1));
+  EXPECT_GT(rgb(1), rgb(2));
+  EXPECT_GT(rgb(0), 0.25);
+}
+
+TEST(SkinCommands, EvalRgbIsTheMixOfItsWavelengths) {
+  const std::string rows = "theta_i,theta_o,phi\n8,8,180\n40,20,90\n70,60,0\n";
+  const CsvOutput rgb = run_csv({"eval", "--skin", kSkin}, rows);
+  ASSERT_EQ(rgb.rows.size(), 3u);
+  std::vector<double> wavelengths;
+  for (double w = 400; w <= 700; w += 10) wavelengths.push_back(w);
+  const Eigen::Matrix<double, 3, Eigen::Dynamic> weights = linear_srgb_weights(wavelengths);
+  Eigen::MatrixXd subsurface(3, static_cast<Eigen::Index>(wavelengths.size()));
+  for (std::size_t k = 0; k < wavelengths.size(); ++k) {
+    const CsvOutput one = run_csv({"eval", "--skin", kSkin, "--wavelength", std::to_string(wavelengths[k])}, rows);
+    ASSERT_EQ(one.header[4], "brdf_subsurface");
+    for (int r = 0; r < 3; ++r) subsurface(r, static_cast<Eigen::Index>(k)) = one.rows[static_cast<std::size_t>(r)][4];
+    for (int r = 0; r < 3; ++r) EXPECT_EQ(one.rows[static_cast<std::size_t>(r)][3], rgb.rows[static_cast<std::size_t>(r)][3]);
+  }
+  const char* const names[3] = {"brdf_subsurface_r", "brdf_subsurface_g", "brdf_subsurface_b"};
+  for (int r = 0; r < 3; ++r) {
+    const Eigen::Vector3d mixed = weights * subsurface.row(r).transpose();
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(rgb.rows[static_cast<std::size_t>(r)][column(rgb, names[c])], mixed(c), 1e-9 * mixed(c));
+    }
+  }
+}
+
+TEST(SkinCommands, BadSkinValuesAreOneLineNamingTheKeyAndItsRange) {
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "blood=0.3"}), 2,
+                                   {"skin: blood = 0.3 is out of range", "[0, 0.2]"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--skin", "scattering=5"}), 2, {"scattering", "[0.25, 4]"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "melanine=0.1"}), 2,
+                                   {"unknown key 'melanine'", "melanin, eumelanin, blood"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "melanin=nan"}), 2, {"melanin", "[0, 0.5]"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "melanin=0.1,melanin=0.2"}), 2,
+                                   {"more than once"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"eval", "--skin", "melanin=0.1", "--T", "0.3"}), 2, {"--T", "--skin"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "melanin=0.1", "--wavelength", "900"}), 2,
+                                   {"wavelength = 900", "[360, 830]"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--preset", "skin-fair", "--wavelength", "500"}), 2,
+                                   {"RGB material has none"}));
+}
+
+}  // namespace
+}  // namespace skinlayer::test
