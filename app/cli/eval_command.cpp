@@ -15,6 +15,7 @@
 #include "app/process/parallel_for.h"
 #include "core/conventions.h"
 #include "core/models/subsurface_model.h"
+#include "core/solve/batch_solve.h"
 #include "core/solve/solve_cache.h"
 #include "core/solver.h"
 
@@ -57,6 +58,7 @@ std::vector<LayerTables> solve_channels(const ColorChannels& channels, Subsurfac
   SolveOptions options;
   options.cache = &cache;
   options.parallel_for = parallel_for_threads;
+  if (model == SubsurfaceModel::Stam) return solve_batch(channels.materials, options);  // whole solves side by side
   std::vector<LayerTables> tables;
   for (const Material& material : channels.materials) tables.push_back(solve_model(material, model, options));
   return tables;

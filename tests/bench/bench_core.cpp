@@ -18,6 +18,8 @@
 #include "core/medium/slab_eigen.h"
 #include "core/reference/monte_carlo.h"
 #include "core/series/quadrature.h"
+#include "core/skin/skin_optics.h"
+#include "core/solve/batch_solve.h"
 #include "core/solve/boundary_solve.h"
 #include "core/solve/solve_cache.h"
 #include "core/solver.h"
@@ -338,6 +340,45 @@ void BM_StageSplineTables(benchmark::State& state) {
   state.counters["modes"] = in.modes;
 }
 BENCHMARK(BM_StageSplineTables)->Unit(benchmark::kMillisecond);
+
+// A full spectral skin solve (issue 25, target <= 150 ms on 2 cores): the default skin's tables at 400-700 nm in
+// 10 nm steps, from cold (the first wavelength builds the interface operators, the other 30 re-solve with them
+// cached), each solve on both cores.
+void BM_SpectralSkinSolve(benchmark::State& state) {
+  const std::vector<double> wavelengths = wavelength_grid(400.0, 700.0, 10.0);
+  std::vector<Material> materials;
+  for (const double wavelength : wavelengths) materials.push_back(skin_material(SkinParameters{}, wavelength));
+  for (auto _ : state) {
+    SolveOptions options;
+    options.parallel_for = parallel_for_threads;
+    std::vector<LayerTables> tables = solve_batch(materials, options);
+    benchmark::DoNotOptimize(tables);
+  }
+  state.counters["wavelengths"] = static_cast<double>(wavelengths.size());
+}
+BENCHMARK(BM_SpectralSkinSolve)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// A skin slider step as a previewer could answer it (issue 25, target <= 30 ms): melanin changes, the cache is
+// warm, the preview resolution at 400-700 nm in 50 nm steps (7 wavelengths; refined to 10 nm when the slider stops).
+void BM_SkinSliderPreview(benchmark::State& state) {
+  const std::vector<double> wavelengths = wavelength_grid(400.0, 700.0, 50.0);
+  SolveCache cache;
+  SolveOptions options;
+  options.cache = &cache;
+  options.parallel_for = parallel_for_threads;
+  options.preview = true;
+  SkinParameters skin;
+  int step = 0;
+  for (auto _ : state) {
+    skin.melanin = 0.02 + 0.001 * (++step % 10);
+    std::vector<Material> materials;
+    for (const double wavelength : wavelengths) materials.push_back(skin_material(skin, wavelength));
+    std::vector<LayerTables> tables = solve_batch(materials, options);
+    benchmark::DoNotOptimize(tables);
+  }
+  state.counters["wavelengths"] = static_cast<double>(wavelengths.size());
+}
+BENCHMARK(BM_SkinSliderPreview)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Directional albedo at four incident angles (what `skinlayer albedo` computes).
 void BM_DirectionalAlbedo(benchmark::State& state) {

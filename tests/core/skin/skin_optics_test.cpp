@@ -10,6 +10,7 @@
 
 #include "core/color/spectral_color.h"
 #include "core/conventions.h"
+#include "core/reference/monte_carlo.h"
 #include "core/skin/skin_spectrum.h"
 
 namespace skinlayer {
@@ -126,6 +127,31 @@ TEST(SkinSpectrum, MelaninLowersBlueMoreThanRedAndLightSkinIsRedderThanBlue) {
   EXPECT_GT(fair(1), fair(2));
   EXPECT_LT(deep(2) / fair(2), deep(0) / fair(0));  // blue falls by the larger factor
   EXPECT_LT(deep(0), fair(0));
+}
+
+// The spectral stack against the independent Monte Carlo reference (core/reference/monte_carlo.h), where blood
+// absorbs strongly (420 nm, the Soret band) and weakly (560 nm, between the bands, a long random walk in the dermis).
+TEST(SkinSpectrum, AgreesWithMonteCarloAtStrongAndWeakAbsorption) {
+  SkinParameters skin;
+  skin.blood = 0.02;
+  for (const double wavelength : {420.0, 560.0}) {
+    const Material material = skin_material(skin, wavelength);
+    const double theta = degrees_to_radians(30.0);
+    MonteCarloOptions options;
+    options.paths = 300000;
+    options.seed = static_cast<std::uint64_t>(wavelength);
+    const MonteCarloResult mc = simulate_layer(material, theta, {}, options);
+    const double angles[] = {theta};
+    const DirectionalAlbedo solver = directional_albedo(material, angles).front();
+    const auto agrees = [&](const char* what, const MonteCarloEstimate& estimate, double value) {
+      EXPECT_LE(std::abs(estimate.value - value), 4.0 * estimate.standard_error + 0.003 * value)
+          << what << " at " << wavelength << " nm: Monte Carlo " << estimate.value << " +- "
+          << estimate.standard_error << ", solver " << value;
+    };
+    agrees("reflectance_surface", mc.reflectance_surface, solver.reflectance_surface);
+    agrees("reflectance_subsurface", mc.reflectance_subsurface, solver.reflectance_subsurface);
+    EXPECT_EQ(mc.truncated_paths, 0u);
+  }
 }
 
 }  // namespace
