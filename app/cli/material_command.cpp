@@ -5,6 +5,7 @@
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
+#include "app/cli/skin_flag.h"
 #include "app/cli/model_flag.h"
 #include "app/material/material_file.h"
 #include "app/material/material_json.h"
@@ -20,7 +21,7 @@ std::string material_usage() {
          "to FILE.json or to stdout. Start from --material FILE or --preset NAME and change values with flags, as in\n"
          "  skinlayer material --preset skin-fair --sigma 0.3 -o my-skin.json\n"
          "Any command then reads it back with --material my-skin.json.\n" +
-         rgb_albedo_usage() +
+         rgb_albedo_usage() + skin_flags_usage(false) +
          "  --model M            subsurface model stored in the file: stam (default), lambert or hk\n"
          "  --name N             the material's name (default: the file's or preset's)\n"
          "  --description D      a one-line description (default: the file's or preset's)\n"
@@ -30,7 +31,7 @@ std::string material_usage() {
 }
 
 int run_material_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  const std::vector<std::string_view> known = material_flags_and({kModelFlag, "name", "description", "output"});
+  const std::vector<std::string_view> known = material_flags_and({kModelFlag, kSkinFlag, "name", "description", "output"});
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer material");
   MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
   document.model = model_from_flags(flags, document.model);

@@ -178,15 +178,18 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
   if (const auto value = checked_number(flags, "bottom-eta")) material.bottom.eta = *value;
   if (const std::optional<int> ordinates = checked_ordinates(flags)) material.ordinates = ordinates;
   if (const auto text = flags.value(kSkinFlag)) {
+    document.skin = parse_skin_spec(*text, document.skin.value_or(SkinParameters{}));
+  }
+  if (document.skin) {
     for (const std::string_view layer_flag : {"T", "tau", "albedo", "g", "layer", "bottom", "bottom-sigma",
                                               "bottom-eta"}) {
       if (flags.has(layer_flag)) {
         throw UsageError("flag --" + std::string(layer_flag) +
-                         " sets a layer or the bottom, which --skin makes from the chromophores (an epidermis over a"
-                         " semi-infinite dermis); with --skin give only --sigma, --eta and --ordinates");
+                         " sets a layer or the bottom, which a skin makes from the chromophores (an epidermis over a"
+                         " semi-infinite dermis); with --skin or a skin material give only --sigma, --eta and"
+                         " --ordinates");
       }
     }
-    document.skin = parse_skin_spec(*text, document.skin.value_or(SkinParameters{}));
   }
   validate(material);
   return document;

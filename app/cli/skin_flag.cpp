@@ -97,7 +97,7 @@ MaterialDocument document_at_wavelength(const MaterialDocument& document, double
   return document;
 }
 
-std::string skin_flags_usage() {
+std::string skin_flags_usage(bool with_wavelength) {
   std::string text =
       "  --skin KEY=VALUE[,KEY=VALUE...]\n"
       "      a two-layer skin from its chromophores: an epidermis over a semi-infinite dermis under the top\n"
@@ -106,6 +106,7 @@ std::string skin_flags_usage() {
     text += "        " + std::string(info.flag) + std::string(12 - info.flag.size(), ' ') + std::string(info.description) +
             "; range " + range_text(info) + ", default " + format_shortest(info.default_value) + "\n";
   }
+  if (!with_wavelength) return text;
   text +=
       "  --wavelength NM\n"
       "      that one wavelength's values (grey columns), in [360, 830] nm: a --skin's layers there, or a grey\n"

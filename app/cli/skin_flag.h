@@ -31,7 +31,7 @@ std::optional<double> wavelength_from_flags(const ParsedFlags& flags);
 // is flat). An RGB document has no spectrum: UsageError.
 MaterialDocument document_at_wavelength(const MaterialDocument& document, double wavelength_nm);
 
-// The help lines of --skin and --wavelength, with every key's range and default.
-std::string skin_flags_usage();
+// The help lines of --skin (and of --wavelength where the command takes it), with every key's range and default.
+std::string skin_flags_usage(bool with_wavelength = true);
 
 }  // namespace skinlayer::cli

@@ -36,7 +36,15 @@ AlbedoRgb MaterialDocument::layer_albedo(std::size_t i) const {
   return {grey, grey, grey};
 }
 
+void require_layered(const MaterialDocument& document, std::string_view what) {
+  if (!document.skin) return;
+  throw MaterialFileError((document.name.empty() ? std::string("the material") : "material " + document.name) +
+                          " is a spectral skin (a \"skin\" block or --skin), which " + std::string(what) +
+                          " cannot take yet; spectrum, eval and albedo can");
+}
+
 DistinctChannels distinct_channels(const MaterialDocument& document) {
+  require_layered(document, "this command");
   DistinctChannels channels;
   for (std::size_t c = 0; c < 3; ++c) {
     const Material channel = document.channel(static_cast<int>(c));  // the channels differ in their albedos only

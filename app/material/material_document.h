@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/material.h"
@@ -45,6 +46,10 @@ struct DistinctChannels {
   std::array<std::size_t, 3> index{};
 };
 DistinctChannels distinct_channels(const MaterialDocument& document);
+
+// Throws MaterialFileError unless the document is a layered one: `what` (e.g. "render") does not take a spectral
+// skin yet; the message names the commands that do.
+void require_layered(const MaterialDocument& document, std::string_view what);
 
 // The document of a one-channel material: every layer's albedo the same in the three channels.
 MaterialDocument grey_document(const Material& material);

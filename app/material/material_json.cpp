@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/material/exact_transparency.h"
+#include "core/skin/skin_parameters.h"
 
 namespace skinlayer {
 namespace {
@@ -195,6 +196,16 @@ Json material_json(const MaterialDocument& document) {
   if (!document.description.empty()) json["description"] = document.description;
   const Material& m = document.layer;
   json["top"] = {{"sigma", m.sigma}, {"eta", m.eta}};
+  if (document.skin) {  // the skin makes the layers and the bottom
+    Json skin = Json::object();
+    for (const ParameterInfo& info : skin_parameter_table()) {
+      skin[std::string(info.flag)] = skin_parameter(*document.skin, info.flag);
+    }
+    json["skin"] = skin;
+    if (m.ordinates) json["ordinates"] = *m.ordinates;
+    if (document.model) json["model"] = subsurface_model_name(*document.model);
+    return json;
+  }
   Json layers = Json::array();
   const std::vector<StackedLayer> stack = stack_layers(m);
   for (std::size_t i = 0; i < stack.size(); ++i) {
@@ -250,6 +261,41 @@ MaterialDocument read_material_json(std::string_view text, std::string_view sour
   return material_from_json(json, source);
 }
 
+// The "layers" list and the "bottom" of a layered material.
+void read_layers_and_bottom(const DocumentReader& reader, const Json& json, MaterialDocument& document) {
+  const Json& layers =
+      reader.required(json, "", "layers", "a list of layers, each {\"T\" or \"tau\", \"albedo\", \"g\"}");
+  if (!layers.is_array()) reader.fail("layers", "must be a list of layers, not " + type_name(layers));
+  if (layers.empty()) reader.fail("layers", "holds 0 layers; a material has at least one");
+  for (std::size_t i = 0; i < layers.size(); ++i) read_layer(reader, layers[i], i, document);
+
+  read_bottom(reader, reader.required(json, "", "bottom", "{\"type\": \"air\" | \"matched\" | \"lambert\", ...}"),
+              document);
+}
+
+// A skin material's "skin" block: any of the parameters of core/skin/skin_parameters.h, the rest at their defaults.
+void read_skin(const DocumentReader& reader, const Json& block, MaterialDocument& document) {
+  reader.object(block, "skin");
+  std::vector<std::string_view> keys;
+  for (const ParameterInfo& info : skin_parameter_table()) keys.push_back(info.flag);
+  for (const auto& [key, value] : block.items()) {
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
+      std::string valid;
+      for (const std::string_view k : keys) {
+        if (!valid.empty()) valid += ", ";
+        valid.append(k);
+      }
+      reader.fail("skin." + key, "is not a skin parameter; valid keys are " + valid);
+    }
+  }
+  SkinParameters skin;
+  for (const ParameterInfo& info : skin_parameter_table()) {
+    const std::string key(info.flag);
+    if (block.contains(key)) skin_parameter(skin, info.flag) = reader.parameter(block[key], "skin." + key, info);
+  }
+  document.skin = skin;
+}
+
 MaterialDocument material_from_json(const Json& json, std::string_view source) {
   const DocumentReader reader(source);
   if (!json.is_object()) {
@@ -272,8 +318,8 @@ MaterialDocument material_from_json(const Json& json, std::string_view source) {
   }
   if (version.get<long long>() < 1)
     reader.fail("version", "must be 1, not " + std::to_string(version.get<long long>()));
-  reader.only_keys(json, "",
-                   {"format", "version", "name", "description", "top", "layers", "bottom", "ordinates", "model"});
+  reader.only_keys(json, "", {"format", "version", "name", "description", "top", "layers", "bottom", "skin",
+                              "ordinates", "model"});
 
   MaterialDocument document;
   if (json.contains("name")) document.name = reader.text(json["name"], "name");
@@ -284,15 +330,17 @@ MaterialDocument material_from_json(const Json& json, std::string_view source) {
   document.layer.sigma = reader.required_parameter(top, "top", "sigma", "sigma");
   document.layer.eta = reader.required_parameter(top, "top", "eta", "eta");
 
-  const Json& layers =
-      reader.required(json, "", "layers", "a list of layers, each {\"T\" or \"tau\", \"albedo\", \"g\"}");
-  if (!layers.is_array()) reader.fail("layers", "must be a list of layers, not " + type_name(layers));
-  if (layers.empty()) reader.fail("layers", "holds 0 layers; a material has at least one");
-  for (std::size_t i = 0; i < layers.size(); ++i) read_layer(reader, layers[i], i, document);
-
-  read_bottom(reader, reader.required(json, "", "bottom", "{\"type\": \"air\" | \"matched\" | \"lambert\", ...}"),
-              document);
-
+  if (json.contains("skin")) {
+    for (const char* made : {"layers", "bottom"}) {
+      if (json.contains(made)) {
+        reader.fail(made, "is given with \"skin\", which makes the layers and the bottom from the chromophores; give"
+                          " one of them");
+      }
+    }
+    read_skin(reader, json["skin"], document);
+  } else {
+    read_layers_and_bottom(reader, json, document);
+  }
   if (json.contains("ordinates")) {
     const double ordinates = reader.parameter(json["ordinates"], "ordinates", "ordinates");
     if (ordinates != std::floor(ordinates)) reader.fail("ordinates", "must be a whole number");

@@ -43,6 +43,7 @@ MaterialDocument material_document(const ColorMaterial& material) {
 }
 
 ColorMaterial color_material(const MaterialDocument& document) {
+  require_layered(document, "render, export and the previewer");
   return ColorMaterial{document.layer, document.albedo_rgb, document.below_rgb,
                        document.model.value_or(SubsurfaceModel::Stam)};
 }

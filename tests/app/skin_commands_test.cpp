@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <map>
 #include <string>
 #include <vector>
@@ -117,6 +119,21 @@ TEST(SkinCommands, BadSkinValuesAreOneLineNamingTheKeyAndItsRange) {
                                    {"wavelength = 900", "[360, 830]"}));
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--preset", "skin-fair", "--wavelength", "500"}), 2,
                                    {"RGB material has none"}));
+}
+
+// A skin material file (as `material --skin` writes it) reads back into the same spectrum; the commands that cannot
+// take one yet say so in one line.
+TEST(SkinCommands, ASkinMaterialFileGivesTheSameSpectrumAndRenderRefusesItPlainly) {
+  const ProcessResult written = run_skinlayer({"material", "--skin", kSkin, "--sigma", "0.35"});
+  ASSERT_EQ(written.exit_code, 0) << written.err;
+  const std::string path = ::testing::TempDir() + "skinlayer_skin_material.json";
+  std::ofstream(path) << written.out;
+  const CsvOutput from_file = run_csv({"spectrum", "--material", path, "--theta-i", "8"});
+  const CsvOutput from_flags = run_csv({"spectrum", "--skin", kSkin, "--sigma", "0.35", "--theta-i", "8"});
+  EXPECT_EQ(from_file.rows, from_flags.rows);
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"render", "--material", path, "-o", path + ".png"}), 2,
+                                   {"spectral skin", "render", "spectrum, eval and albedo"}));
+  std::remove(path.c_str());
 }
 
 }  // namespace

@@ -77,6 +77,38 @@ TEST(MaterialJson, WhatIsWrittenReadsBackBitForBit) {
   EXPECT_EQ(stack["layers"][2]["T"], 0.0);
 }
 
+// A skin material: its "skin" block in place of the layers and the bottom, every parameter explicit.
+TEST(MaterialJson, ASkinReadsBackWithEveryParameter) {
+  MaterialDocument document;
+  document.name = "freckled";
+  document.layer.sigma = 0.35;
+  document.layer.ordinates = 40;
+  SkinParameters skin;
+  skin.melanin = 0.123;
+  skin.eumelanin = 0.4;
+  skin.blood = 0.0375;
+  skin.oxygenation = 0.6;
+  skin.epidermis = 0.1;
+  skin.scattering = 1.3;
+  document.skin = skin;
+  const nlohmann::ordered_json json = material_json(document);
+  EXPECT_FALSE(json.contains("layers"));
+  EXPECT_FALSE(json.contains("bottom"));
+  EXPECT_EQ(json["skin"].size(), 6u);
+  const MaterialDocument back = read_material_json(material_json_text(document), "skin.json");
+  ASSERT_TRUE(back.skin.has_value());
+  EXPECT_EQ(*back.skin, skin);
+  EXPECT_EQ(back.layer.sigma, 0.35);
+  EXPECT_EQ(back.layer.ordinates, 40);
+  // Omitted keys take their defaults.
+  const MaterialDocument minimal = read_material_json(
+      R"({"format": "skinlayer-material", "version": 1, "top": {"sigma": 0.5, "eta": 1.4}, "skin": {"blood": 0.01}})",
+      "minimal.json");
+  SkinParameters expected;
+  expected.blood = 0.01;
+  EXPECT_EQ(*minimal.skin, expected);
+}
+
 TEST(MaterialJson, EveryValueIsExplicitAndTheBottomStatesItsInterface) {
   const nlohmann::ordered_json json = material_json(MaterialDocument{});
   EXPECT_EQ(json["format"], "skinlayer-material");
@@ -136,6 +168,13 @@ TEST(MaterialJson, EachKindOfErrorIsOneLineNamingTheFileAndTheKey) {
       {valid_with("\"version\": 1", "\"version\": 0"), {"\"version\"", "must be 1"}},
       {valid_with("\"skinlayer-material\"", "\"something-else\""), {"bad.json", "not a skinlayer material file"}},
       {valid_with("\"type\": \"air\"", "\"type\": \"wood\""), {"\"bottom.type\"", "wood", "matched"}},
+      {valid_with("\"version\": 1,", "\"version\": 1, \"skin\": {\"melanin\": 0.1},"), {"\"layers\"", "\"skin\"", "one of them"}},
+      {valid_with("  \"layers\": [{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}],\n  \"bottom\": {\"type\": \"air\", \"sigma\": 0.5, \"eta\": 1.4}",
+                  "  \"skin\": {\"blood\": 0.3}"),
+       {"bad.json", "\"skin.blood\"", "out of range", "[0, 0.2]"}},
+      {valid_with("  \"layers\": [{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}],\n  \"bottom\": {\"type\": \"air\", \"sigma\": 0.5, \"eta\": 1.4}",
+                  "  \"skin\": {\"freckles\": 1}"),
+       {"bad.json", "\"skin.freckles\"", "melanin, eumelanin"}},
       {valid_with("\"type\": \"air\", \"sigma\": 0.5, \"eta\": 1.4", "\"type\": \"lambert\""),
        {"\"bottom.albedo\"", "missing"}},
       {valid_with("\"type\": \"air\", \"sigma\": 0.5, \"eta\": 1.4", "\"type\": \"matched\", \"sigma\": 1"),

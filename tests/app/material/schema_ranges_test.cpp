@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/material.h"
+#include "core/skin/skin_parameters.h"
 
 namespace skinlayer {
 namespace {
@@ -35,6 +36,13 @@ TEST(MaterialSchema, RangesAreCoresParameterTable) {
   expect_range(air["eta"], "bottom-eta");
   expect_range(schema["properties"]["bottom"]["oneOf"][2]["properties"]["albedo"], "lambert");
   expect_range(schema["properties"]["ordinates"], "ordinates");
+  const nlohmann::json& skin = schema["properties"]["skin"]["properties"];
+  EXPECT_EQ(skin.size(), skin_parameter_table().size());
+  for (const ParameterInfo& info : skin_parameter_table()) {
+    const nlohmann::json& property = skin[std::string(info.flag)];
+    EXPECT_EQ(property["minimum"].get<double>(), info.min) << info.flag;
+    EXPECT_EQ(property["maximum"].get<double>(), info.max) << info.flag;
+  }
 }
 
 }  // namespace

@@ -26,7 +26,8 @@ def main() -> int:
     # What `skinlayer material` writes: every value explicit, for a few materials (RGB, tau, lambert, matched).
     for flags in (["--preset", "skin-fair"], ["--tau", "0.3333", "--bottom", "lambert:0.4"],
                   ["--T", "0", "--bottom", "matched", "--ordinates", "48", "--model", "hk"],
-                  ["--albedo", "0.9,0.5,0.25", "--bottom-sigma", "0.2", "--name", "x", "--description", "y"]):
+                  ["--albedo", "0.9,0.5,0.25", "--bottom-sigma", "0.2", "--name", "x", "--description", "y"],
+                  ["--skin", "melanin=0.1,blood=0.02", "--sigma", "0.35"]):
         written = subprocess.run([skinlayer, "material", *flags], check=True, capture_output=True, text=True)
         documents["skinlayer material " + " ".join(flags)] = json.loads(written.stdout)
     for name, document in documents.items():
@@ -42,6 +43,11 @@ def main() -> int:
         "a newer version": {**base, "version": 2},
         "an unknown bottom": {**base, "bottom": {"type": "wood"}},
         "two albedo channels": {**base, "layers": [{**base["layers"][0], "albedo": [1, 1]}]},
+        "a skin with layers": {**base, "skin": {"melanin": 0.1}},
+        "a skin out of range": {**{k: v for k, v in base.items() if k not in ("layers", "bottom")},
+                                "skin": {"blood": 0.5}},
+        "an unknown skin key": {**{k: v for k, v in base.items() if k not in ("layers", "bottom")},
+                                "skin": {"freckles": 1}},
     }
     for what, document in refused.items():
         if validator.is_valid(document):
