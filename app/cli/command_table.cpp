@@ -8,6 +8,7 @@
 #include "app/cli/export_command.h"
 #include "app/cli/figures_command.h"
 #include "app/cli/flag_parser.h"
+#include "app/cli/match_command.h"
 #include "app/cli/material_command.h"
 #include "app/cli/render_command.h"
 #include "app/cli/spectrum_command.h"
@@ -25,6 +26,8 @@ const std::array kCommands{
             [](Arguments arguments, const CommandStreams& s) { return run_albedo_command(arguments, s.out); }},
     Command{"spectrum", spectrum_usage,
             [](Arguments arguments, const CommandStreams& s) { return run_spectrum_command(arguments, s.out); }},
+    Command{"match", match_usage,
+            [](Arguments arguments, const CommandStreams& s) { return run_match_command(arguments, s.out, s.err); }},
     Command{"render", render_usage,
             [](Arguments arguments, const CommandStreams& s) { return run_render_command(arguments, s.out, s.err); }},
     Command{"material", material_usage,

@@ -31,7 +31,8 @@ std::string material_usage() {
 }
 
 int run_material_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  const std::vector<std::string_view> known = material_flags_and({kModelFlag, kSkinFlag, "name", "description", "output"});
+  const std::vector<std::string_view> known =
+      material_flags_and({kModelFlag, kSkinFlag, "name", "description", "output"});
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer material");
   MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
   document.model = model_from_flags(flags, document.model);

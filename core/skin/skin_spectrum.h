@@ -12,7 +12,8 @@
 namespace skinlayer {
 
 // One row list per wavelength (in order), one row per theta_i (radians), as directional_albedo. options.cache is
-// used when given, else a cache lives for this call.
+// used when given (and warmed), else a cache lives for this call; with options.parallel_for the wavelengths after
+// the first run side by side, in chunks with copies of the warm cache.
 std::vector<std::vector<DirectionalAlbedo>> skin_directional_albedo(const SkinParameters& skin,
                                                                     const Material& interfaces,
                                                                     std::span<const double> wavelengths_nm,

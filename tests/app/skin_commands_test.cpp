@@ -5,9 +5,11 @@
 // and its range.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <string>
 #include <vector>
@@ -58,7 +60,8 @@ TEST(SkinCommands, AGreyMaterialHasAFlatSpectrumEqualToItsAlbedo) {
     EXPECT_EQ(row[2], albedo.rows[0][column(albedo, "reflectance")]);
     EXPECT_EQ(row[3], albedo.rows[0][column(albedo, "transmittance")]);
   }
-  const CsvOutput one = run_csv({"spectrum", "--albedo", "0.9", "--T", "0.5", "--theta-i", "30", "--wavelength", "555"});
+  const CsvOutput one =
+      run_csv({"spectrum", "--albedo", "0.9", "--T", "0.5", "--theta-i", "30", "--wavelength", "555"});
   ASSERT_EQ(one.rows.size(), 1u);
   EXPECT_EQ(one.rows[0][2], spectrum.rows[0][2]);
 }
@@ -94,7 +97,8 @@ TEST(SkinCommands, EvalRgbIsTheMixOfItsWavelengths) {
     const CsvOutput one = run_csv({"eval", "--skin", kSkin, "--wavelength", std::to_string(wavelengths[k])}, rows);
     ASSERT_EQ(one.header[4], "brdf_subsurface");
     for (int r = 0; r < 3; ++r) subsurface(r, static_cast<Eigen::Index>(k)) = one.rows[static_cast<std::size_t>(r)][4];
-    for (int r = 0; r < 3; ++r) EXPECT_EQ(one.rows[static_cast<std::size_t>(r)][3], rgb.rows[static_cast<std::size_t>(r)][3]);
+    for (int r = 0; r < 3; ++r)
+      EXPECT_EQ(one.rows[static_cast<std::size_t>(r)][3], rgb.rows[static_cast<std::size_t>(r)][3]);
   }
   const char* const names[3] = {"brdf_subsurface_r", "brdf_subsurface_g", "brdf_subsurface_b"};
   for (int r = 0; r < 3; ++r) {
@@ -108,13 +112,15 @@ TEST(SkinCommands, EvalRgbIsTheMixOfItsWavelengths) {
 TEST(SkinCommands, BadSkinValuesAreOneLineNamingTheKeyAndItsRange) {
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "blood=0.3"}), 2,
                                    {"skin: blood = 0.3 is out of range", "[0, 0.2]"}));
-  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--skin", "scattering=5"}), 2, {"scattering", "[0.25, 4]"}));
+  EXPECT_TRUE(
+      failed_with_one_line(run_skinlayer({"albedo", "--skin", "scattering=5"}), 2, {"scattering", "[0.25, 4]"}));
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "melanine=0.1"}), 2,
                                    {"unknown key 'melanine'", "melanin, eumelanin, blood"}));
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "melanin=nan"}), 2, {"melanin", "[0, 0.5]"}));
-  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "melanin=0.1,melanin=0.2"}), 2,
-                                   {"more than once"}));
-  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"eval", "--skin", "melanin=0.1", "--T", "0.3"}), 2, {"--T", "--skin"}));
+  EXPECT_TRUE(
+      failed_with_one_line(run_skinlayer({"spectrum", "--skin", "melanin=0.1,melanin=0.2"}), 2, {"more than once"}));
+  EXPECT_TRUE(
+      failed_with_one_line(run_skinlayer({"eval", "--skin", "melanin=0.1", "--T", "0.3"}), 2, {"--T", "--skin"}));
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "melanin=0.1", "--wavelength", "900"}), 2,
                                    {"wavelength = 900", "[360, 830]"}));
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--preset", "skin-fair", "--wavelength", "500"}), 2,
@@ -134,6 +140,102 @@ TEST(SkinCommands, ASkinMaterialFileGivesTheSameSpectrumAndRenderRefusesItPlainl
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"render", "--material", path, "-o", path + ".png"}), 2,
                                    {"spectral skin", "render", "spectrum, eval and albedo"}));
   std::remove(path.c_str());
+}
+
+// The normal-incidence linear sRGB of a material as albedo writes it (surface and subsurface).
+Eigen::Vector3d normal_color(const std::vector<std::string>& material_flags) {
+  std::vector<std::string> arguments = {"albedo", "--theta-i", "0"};
+  arguments.insert(arguments.end(), material_flags.begin(), material_flags.end());
+  const CsvOutput csv = run_csv(arguments);
+  const auto& header = csv.header;
+  if (std::find(header.begin(), header.end(), "reflectance") != header.end()) {  // a grey material
+    return Eigen::Vector3d::Constant(csv.rows[0][column(csv, "reflectance")]);
+  }
+  return {csv.rows[0][column(csv, "reflectance_r")], csv.rows[0][column(csv, "reflectance_g")],
+          csv.rows[0][column(csv, "reflectance_b")]};
+}
+
+std::string linear_text(const Eigen::Vector3d& rgb) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%.17g,%.17g,%.17g", rgb(0), rgb(1), rgb(2));
+  return text;
+}
+
+class MatchCommand : public ::testing::Test {
+ protected:
+  std::string path(const std::string& name) const { return ::testing::TempDir() + "skinlayer_match_" + name; }
+};
+
+TEST_F(MatchCommand, ASkinColourRoundTripsWithinHalfAPercent) {
+  const std::vector<std::string> skins = {"melanin=0.01,blood=0.004,scattering=1.6", "melanin=0.2,blood=0.03",
+                                          "melanin=0.08,blood=0.06,scattering=0.6"};
+  for (const std::string& skin : skins) {
+    const Eigen::Vector3d target = normal_color({"--skin", skin});
+    const std::string out = path("round_trip.json");
+    const ProcessResult result =
+        run_skinlayer({"match", "--color", linear_text(target), "--linear", "--skin", "eumelanin=0.7", "-o", out});
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_EQ(result.err, "") << "a reachable colour says nothing";
+    const Eigen::Vector3d reached = normal_color({"--material", out});
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(reached(c), target(c), 0.005 * target(c)) << skin << " channel " << c;
+    std::remove(out.c_str());
+  }
+}
+
+TEST_F(MatchCommand, ALayeredMaterialGetsItsTopAlbedoPerChannel) {
+  const Eigen::Vector3d target(0.5, 0.3, 0.2);
+  const std::string out = path("wax.json");
+  const ProcessResult result =
+      run_skinlayer({"match", "--color", "0.5,0.3,0.2", "--linear", "--preset", "wax", "-o", out});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const Eigen::Vector3d reached = normal_color({"--material", out});
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(reached(c), target(c), 0.005 * target(c)) << "channel " << c;
+  // sRGB-encoded by default: #808080 is linear 0.2159.
+  const ProcessResult grey = run_skinlayer({"match", "--color", "#808080", "--preset", "wax", "-o", out});
+  ASSERT_EQ(grey.exit_code, 0) << grey.err;
+  const Eigen::Vector3d reached_grey = normal_color({"--material", out});
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(reached_grey(c), 0.21586, 0.005 * 0.21586);
+  std::remove(out.c_str());
+}
+
+TEST_F(MatchCommand, AnUnreachableColourGivesTheNearestAndOneLineWithTheDistance) {
+  const ProcessResult result = run_skinlayer({"match", "--color", "0.1,0.2,0.9", "--skin", "melanin=0.02"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("\"skin\""), std::string::npos);
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1);
+  EXPECT_NE(result.err.find("out of reach"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("CIEDE2000"), std::string::npos) << result.err;
+  // White is beyond any material with shadowing: the nearest is Omega = 1.
+  const ProcessResult white = run_skinlayer({"match", "--color", "1,1,1", "--preset", "wax"});
+  EXPECT_NE(white.err.find("out of reach"), std::string::npos) << white.err;
+}
+
+TEST_F(MatchCommand, ASpectrumOfTheModelIsFitClosely) {
+  const CsvOutput spectrum = run_csv({"spectrum", "--skin", "melanin=0.1,blood=0.02,epidermis=0.08", "--theta-i", "8"});
+  const std::string csv = path("spectrum.csv");
+  {
+    std::ofstream file(csv);
+    file << "wavelength_nm,reflectance\n";
+    for (const std::vector<double>& row : spectrum.rows)
+      file << row[1] << "," << std::setprecision(17) << row[2] << "\n";
+  }
+  const ProcessResult fit = run_skinlayer({"match", "--spectrum", csv});
+  ASSERT_EQ(fit.exit_code, 0) << fit.err;
+  EXPECT_NE(fit.out.find("\"skin\""), std::string::npos);
+  const std::size_t at = fit.err.find("RMS residual ");
+  ASSERT_NE(at, std::string::npos) << fit.err;
+  EXPECT_LT(std::stod(fit.err.substr(at + 13)), 2e-3) << fit.err;
+  std::remove(csv.c_str());
+}
+
+TEST_F(MatchCommand, BadRequestsAreOneLine) {
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"match", "--color", "#12345"}), 2, {"#RRGGBB"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"match", "--color", "1.2,0,0"}), 2, {"1.2", "[0, 1]"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"match", "--color", "0.5,0.5"}), 2, {"R,G,B"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"match"}), 2, {"--color", "--spectrum"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"match", "--spectrum", "/nonexistent.csv"}), 2, {"cannot be read"}));
+  EXPECT_TRUE(
+      failed_with_one_line(run_skinlayer({"match", "--color", "0.5,0.5,0.5", "--theta-i", "8"}), 2, {"--spectrum"}));
 }
 
 }  // namespace
