@@ -91,8 +91,9 @@ MaterialDocument document_at_wavelength(const MaterialDocument& document, double
     return grey;
   }
   if (!document.grey()) {
-    throw UsageError("flag --wavelength picks one wavelength of a spectrum, and an RGB material has none; give"
-                     " --skin, or --albedo A");
+    throw UsageError(
+        "flag --wavelength picks one wavelength of a spectrum, and an RGB material has none; give"
+        " --skin, or --albedo A");
   }
   return document;
 }
@@ -103,8 +104,9 @@ std::string skin_flags_usage(bool with_wavelength) {
       "      a two-layer skin from its chromophores: an epidermis over a semi-infinite dermis under the top\n"
       "      interface (--sigma, --eta), solved per wavelength over 400-700 nm in 10 nm steps. Keys:\n";
   for (const ParameterInfo& info : skin_parameter_table()) {
-    text += "        " + std::string(info.flag) + std::string(12 - info.flag.size(), ' ') + std::string(info.description) +
-            "; range " + range_text(info) + ", default " + format_shortest(info.default_value) + "\n";
+    text += "        " + std::string(info.flag) + std::string(12 - info.flag.size(), ' ') +
+            std::string(info.description) + "; range " + range_text(info) + ", default " +
+            format_shortest(info.default_value) + "\n";
   }
   if (!with_wavelength) return text;
   text +=

@@ -38,8 +38,8 @@ std::string spectrum_usage() {
 }
 
 int run_spectrum_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  const ParsedFlags flags = ParsedFlags::parse(arguments, material_flags_and({kThetaFlag, kSkinFlag, kWavelengthFlag}),
-                                               "skinlayer spectrum");
+  const ParsedFlags flags =
+      ParsedFlags::parse(arguments, material_flags_and({kThetaFlag, kSkinFlag, kWavelengthFlag}), "skinlayer spectrum");
   MaterialDocument document = material_document_from_flags(flags);
   const std::vector<double> thetas_degrees = parse_theta_list(flags.value(kThetaFlag).value_or(kDefaultThetas));
   std::vector<double> thetas;

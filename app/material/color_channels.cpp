@@ -19,8 +19,10 @@ ColorChannels color_channels(const MaterialDocument& document) {
   }
   const DistinctChannels distinct = distinct_channels(document);
   channels.materials = distinct.materials;
-  channels.to_rgb = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, static_cast<Eigen::Index>(distinct.materials.size()));
-  for (int c = 0; c < 3; ++c) channels.to_rgb(c, static_cast<Eigen::Index>(distinct.index[static_cast<std::size_t>(c)])) = 1.0;
+  channels.to_rgb =
+      Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, static_cast<Eigen::Index>(distinct.materials.size()));
+  for (int c = 0; c < 3; ++c)
+    channels.to_rgb(c, static_cast<Eigen::Index>(distinct.index[static_cast<std::size_t>(c)])) = 1.0;
   return channels;
 }
 

@@ -32,8 +32,8 @@ namespace skinlayer {
 inline constexpr double kSkinAnisotropy = 0.8;
 
 struct LayerOptics {
-  double absorption = 0.0;          // mu_a, 1/mm
-  double reduced_scattering = 0.0;  // mu_s', 1/mm
+  double absorption = 0.0;                                                            // mu_a, 1/mm
+  double reduced_scattering = 0.0;                                                    // mu_s', 1/mm
   double scattering() const { return reduced_scattering / (1.0 - kSkinAnisotropy); }  // mu_s, 1/mm
   double albedo() const { return scattering() / (scattering() + absorption); }        // Omega
 };

@@ -71,7 +71,7 @@ TEST(SpectralColor, TransferFunctionRoundTripsAndHasTheStandardConstants) {
   EXPECT_DOUBLE_EQ(srgb_encode(0.0), 0.0);
   EXPECT_NEAR(srgb_encode(1.0), 1.0, 1e-12);
   EXPECT_NEAR(srgb_encode(0.0031308), 0.04045, 1e-6);  // the two pieces meet
-  EXPECT_NEAR(srgb_encode(0.18), 0.4614, 1e-4);         // middle grey
+  EXPECT_NEAR(srgb_encode(0.18), 0.4614, 1e-4);        // middle grey
   for (double v : {0.0, 0.001, 0.01, 0.2, 0.5, 0.9, 1.0}) EXPECT_NEAR(srgb_decode(srgb_encode(v)), v, 1e-12);
 }
 

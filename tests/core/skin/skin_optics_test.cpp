@@ -145,8 +145,8 @@ TEST(SkinSpectrum, AgreesWithMonteCarloAtStrongAndWeakAbsorption) {
     const DirectionalAlbedo solver = directional_albedo(material, angles).front();
     const auto agrees = [&](const char* what, const MonteCarloEstimate& estimate, double value) {
       EXPECT_LE(std::abs(estimate.value - value), 4.0 * estimate.standard_error + 0.003 * value)
-          << what << " at " << wavelength << " nm: Monte Carlo " << estimate.value << " +- "
-          << estimate.standard_error << ", solver " << value;
+          << what << " at " << wavelength << " nm: Monte Carlo " << estimate.value << " +- " << estimate.standard_error
+          << ", solver " << value;
     };
     agrees("reflectance_surface", mc.reflectance_surface, solver.reflectance_surface);
     agrees("reflectance_subsurface", mc.reflectance_subsurface, solver.reflectance_subsurface);
