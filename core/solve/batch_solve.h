@@ -6,6 +6,7 @@
 // another with the modes split across the cores, which a stack's short per-mode work keeps from scaling.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -16,5 +17,11 @@ namespace skinlayer {
 // solve(materials[k], options) for every k, in order. options.cache is warmed and kept when given (an own cache
 // otherwise); options.cancelled is asked by every solve.
 std::vector<LayerTables> solve_batch(std::span<const Material> materials, const SolveOptions& options = {});
+
+// The schedule above for any per-item work: body(0, options') first, with options' = options and its cache (or an own
+// one), then body(k, chunk's options) for k = 1..count-1 in up to four chunks through options.parallel_for, each
+// chunk single-threaded with its own copy of the warm cache. body(k, ...) runs once for every k.
+void for_each_with_warm_cache(std::size_t count, const SolveOptions& options,
+                              const std::function<void(std::size_t k, const SolveOptions& options)>& body);
 
 }  // namespace skinlayer
