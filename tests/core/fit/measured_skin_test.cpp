@@ -57,11 +57,16 @@ TEST(MeasuredSkin, TheNistSpectraAreFitWithinTheTargets) {
   const MeasuredSpectra nist = read_nist();
   ASSERT_EQ(nist.subjects.size(), 50u);
   ASSERT_EQ(nist.wavelengths.size(), 207u);
+  // Every other row (6 nm steps) halves the cost, which matters under the sanitizers; the README's figures use all.
+  std::vector<double> wavelengths;
+  for (std::size_t k = 0; k < nist.wavelengths.size(); k += 2) wavelengths.push_back(nist.wavelengths[k]);
   std::vector<double> rms;
   for (std::size_t s = 0; s < nist.subjects.size(); s += 10) {
-    const SkinSpectrumFit fit = fit_skin_spectrum(nist.wavelengths, nist.reflectance[s], degrees_to_radians(8.0), 400.0,
-                                                  700.0, Material{}, two_threads);
-    EXPECT_EQ(fit.wavelengths_nm.size(), 101u);  // 400-700 nm in the file's 3 nm steps
+    std::vector<double> measured;
+    for (std::size_t k = 0; k < nist.wavelengths.size(); k += 2) measured.push_back(nist.reflectance[s][k]);
+    const SkinSpectrumFit fit =
+        fit_skin_spectrum(wavelengths, measured, degrees_to_radians(8.0), 400.0, 700.0, Material{}, two_threads);
+    EXPECT_GE(fit.wavelengths_nm.size(), 50u);  // 400-700 nm in 6 nm steps
     EXPECT_LE(fit.rms, 0.05) << nist.subjects[s];
     rms.push_back(fit.rms);
   }
