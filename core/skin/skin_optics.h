@@ -4,7 +4,9 @@
 // Absorption:
 //   baseline (bloodless, melanin-free tissue; Jacques 1998, OMLC "Skin optics", in 1/mm):
 //     mu_a,base = 0.0244 + 8.53 exp(-(lambda - 154) / 66.2);
-//   melanin (the power laws of Donner & Jensen 2006, in 1/mm, lambda in nm):
+//   melanin (the power laws of Donner & Jensen 2006 as implementations citing them write them; the paper's text was
+//   not available to check them, and Jacques 2013 eq. 8's melanosome law, 51.9 (lambda/500)^-3 1/mm, is of the same
+//   size: 52 against eumelanin's 68 at 500 nm), in 1/mm, lambda in nm:
 //     mu_a,eu = 6.6e10 lambda^-3.33,   mu_a,pheo = 2.9e14 lambda^-4.75;
 //   whole blood (Prahl's tabulated molar extinction epsilon in cm^-1/M, core/data/hemoglobin_prahl.csv, at
 //   150 g/L of hemoglobin of 64,500 g/mol; Jacques 2013 eq. 6):
