@@ -7,9 +7,9 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/layer_flag.h"
-#include "app/cli/skin_flag.h"
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/cli/skin_flag.h"
 #include "app/material/exact_transparency.h"
 #include "app/material/material_file.h"
 #include "app/material/presets.h"

@@ -40,7 +40,7 @@ void require_layered(const MaterialDocument& document, std::string_view what) {
   if (!document.skin) return;
   throw MaterialFileError((document.name.empty() ? std::string("the material") : "material " + document.name) +
                           " is a spectral skin (a \"skin\" block or --skin), which " + std::string(what) +
-                          " cannot take yet; spectrum, eval and albedo can");
+                          " cannot take yet; spectrum, eval, albedo, match and material can");
 }
 
 DistinctChannels distinct_channels(const MaterialDocument& document) {

@@ -261,6 +261,8 @@ MaterialDocument read_material_json(std::string_view text, std::string_view sour
   return material_from_json(json, source);
 }
 
+namespace {
+
 // The "layers" list and the "bottom" of a layered material.
 void read_layers_and_bottom(const DocumentReader& reader, const Json& json, MaterialDocument& document) {
   const Json& layers =
@@ -295,6 +297,8 @@ void read_skin(const DocumentReader& reader, const Json& block, MaterialDocument
   }
   document.skin = skin;
 }
+
+}  // namespace
 
 MaterialDocument material_from_json(const Json& json, std::string_view source) {
   const DocumentReader reader(source);

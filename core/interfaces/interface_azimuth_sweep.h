@@ -18,8 +18,8 @@
 // cosine-weighted; 0 at eta = 1.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
-#include <span>
 
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"

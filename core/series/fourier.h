@@ -66,11 +66,11 @@ Vec3 propagation_direction(double mu, double phi);
 //   K^m(to b, from a) = coefficients of  Delta phi -> kernel(omega_i = -d_a(0), omega_o = d_b(Delta phi)),
 // where the kernel is a BSDF-like function of graphics-convention directions. mu_from and mu_to are signed
 // propagation cosines. kernel_for_pair(wi, mu_to) returns the callable wo -> value for one pair of polar angles,
-// so that work depending only on the polar angles is done once per pair; where that object has at_azimuth(cos, sin), a
-// function of Delta phi alone (core/interfaces/interface_azimuth_sweep.h), it is called instead. support_for_pair(a, b) gives how many
-// leading azimuth samples (phi_0 = 0, phi_1, ...) can hold a non-negligible value for the pair (mu_from[a],
-// mu_to[b]); the rest are taken as 0, neither evaluated nor projected, so a narrow lobe costs in proportion to its
-// azimuthal width. Returns one (to x from) matrix per mode.
+// so that work depending only on the polar angles is done once per pair; where that object has at_azimuth(cos, sin),
+// a function of Delta phi alone (core/interfaces/interface_azimuth_sweep.h), it is called instead.
+// support_for_pair(a, b) gives how many leading azimuth samples (phi_0 = 0, phi_1, ...) can hold a non-negligible
+// value for the pair (mu_from[a], mu_to[b]); the rest are taken as 0, neither evaluated nor projected, so a narrow
+// lobe costs in proportion to its azimuthal width. Returns one (to x from) matrix per mode.
 template <class PairKernel, class PairSupport>
 FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, const PairSupport& support_for_pair,
                                          std::span<const double> mu_from, std::span<const double> mu_to,

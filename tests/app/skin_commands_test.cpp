@@ -138,7 +138,7 @@ TEST(SkinCommands, ASkinMaterialFileGivesTheSameSpectrumAndRenderRefusesItPlainl
   const CsvOutput from_flags = run_csv({"spectrum", "--skin", kSkin, "--sigma", "0.35", "--theta-i", "8"});
   EXPECT_EQ(from_file.rows, from_flags.rows);
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"render", "--material", path, "-o", path + ".png"}), 2,
-                                   {"spectral skin", "render", "spectrum, eval and albedo"}));
+                                   {"spectral skin", "render", "spectrum, eval, albedo, match and material"}));
   std::remove(path.c_str());
 }
 
