@@ -30,6 +30,13 @@ std::string joined(std::initializer_list<std::string_view> names) {
   return text;
 }
 
+// A key as the file spells it, safe in a one-line message: control characters (a newline inside a key) become '?'.
+std::string printable(std::string key) {
+  std::replace_if(
+      key.begin(), key.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, '?');
+  return key;
+}
+
 // Reads one document, naming the file and the key path ("layers[0].g") in every error.
 class DocumentReader {
  public:
@@ -42,7 +49,7 @@ class DocumentReader {
   void only_keys(const Json& object, const std::string& path, std::initializer_list<std::string_view> valid) const {
     for (const auto& [key, value] : object.items()) {
       if (std::find(valid.begin(), valid.end(), key) == valid.end()) {
-        throw MaterialFileError(source_ + ": unknown key \"" + join(path, key) + "\"; valid keys " +
+        throw MaterialFileError(source_ + ": unknown key \"" + printable(join(path, key)) + "\"; valid keys " +
                                 (path.empty() ? "at the top level" : "in \"" + path + "\"") + ": " + joined(valid));
       }
     }
@@ -322,8 +329,8 @@ MaterialDocument material_from_json(const Json& json, std::string_view source) {
   }
   if (version.get<long long>() < 1)
     reader.fail("version", "must be 1, not " + std::to_string(version.get<long long>()));
-  reader.only_keys(json, "", {"format", "version", "name", "description", "top", "layers", "bottom", "skin",
-                              "ordinates", "model"});
+  reader.only_keys(
+      json, "", {"format", "version", "name", "description", "top", "layers", "bottom", "skin", "ordinates", "model"});
 
   MaterialDocument document;
   if (json.contains("name")) document.name = reader.text(json["name"], "name");
@@ -337,8 +344,9 @@ MaterialDocument material_from_json(const Json& json, std::string_view source) {
   if (json.contains("skin")) {
     for (const char* made : {"layers", "bottom"}) {
       if (json.contains(made)) {
-        reader.fail(made, "is given with \"skin\", which makes the layers and the bottom from the chromophores; give"
-                          " one of them");
+        reader.fail(made,
+                    "is given with \"skin\", which makes the layers and the bottom from the chromophores; give"
+                    " one of them");
       }
     }
     read_skin(reader, json["skin"], document);

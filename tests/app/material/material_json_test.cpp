@@ -159,6 +159,8 @@ TEST(MaterialJson, EachKindOfErrorIsOneLineNamingTheFileAndTheKey) {
       {valid_with("\"sigma\": 0.5, \"eta\": 1.4}", "\"sigma\": 0.5, \"etaa\": 1.4}"),
        {"bad.json", "unknown key \"top.etaa\"", "sigma, eta"}},
       {valid_with("\"version\": 1,", "\"version\": 1, \"colour\": 3,"), {"unknown key \"colour\"", "layers"}},
+      // A newline inside a key (found by the mutation test): printed as '?', so the message stays one line.
+      {valid_with("\"version\": 1,", "\"version\": 1, \"na\\nme\": 3,"), {"unknown key \"na?me\"", "layers"}},
       {valid_with("\"g\": 0.8", "\"g\": \"0.8\""), {"bad.json", "\"layers[0].g\"", "must be a number", "a string"}},
       {valid_with("\"g\": 0.8", "\"g\": 1.2"), {"bad.json", "\"layers[0].g\"", "out of range", "[-0.95, 0.95]"}},
       {valid_with(", \"g\": 0.8", ""), {"bad.json", "\"layers[0].g\"", "missing"}},
