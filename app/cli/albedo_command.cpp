@@ -100,29 +100,6 @@ NumericTable albedo_table(const Material& material, std::span<const double> thet
 }
 
 
-// The solves' rows mixed into linear sRGB (color_channels.h): every field is linear in the solved values.
-std::vector<DirectionalAlbedo> mixed_rows(const std::vector<std::vector<DirectionalAlbedo>>& solved,
-                                          const Eigen::RowVectorXd& weights) {
-  std::vector<DirectionalAlbedo> mixed = solved.front();
-  for (std::size_t a = 0; a < mixed.size(); ++a) {
-    DirectionalAlbedo& row = mixed[a];
-    row.reflectance_subsurface = row.transmittance = row.absorptance = row.interface_loss = 0.0;
-    std::fill(row.layer_absorptance.begin(), row.layer_absorptance.end(), 0.0);
-    for (std::size_t k = 0; k < solved.size(); ++k) {
-      const double w = weights(static_cast<Eigen::Index>(k));
-      const DirectionalAlbedo& one = solved[k][a];
-      row.reflectance_subsurface += w * one.reflectance_subsurface;
-      row.transmittance += w * one.transmittance;
-      row.absorptance += w * one.absorptance;
-      row.interface_loss += w * one.interface_loss;
-      for (std::size_t i = 0; i < row.layer_absorptance.size(); ++i) {
-        row.layer_absorptance[i] += w * one.layer_absorptance[i];
-      }
-    }
-  }
-  return mixed;
-}
-
 }  // namespace
 
 int run_albedo_command(std::span<const std::string_view> arguments, std::ostream& out) {
@@ -164,9 +141,12 @@ int run_albedo_command(std::span<const std::string_view> arguments, std::ostream
       solved = directional_albedo(channels.materials, thetas_radians, options);
     }
     for (const std::vector<DirectionalAlbedo>& rows : solved) check_rows(rows);
-    const std::array<std::vector<DirectionalAlbedo>, 3> rgb = {
-        mixed_rows(solved, channels.to_rgb.row(0)), mixed_rows(solved, channels.to_rgb.row(1)),
-        mixed_rows(solved, channels.to_rgb.row(2))};
+    std::array<std::vector<DirectionalAlbedo>, 3> rgb;
+    std::vector<DirectionalAlbedo> at_angle(solved.size());
+    for (std::size_t a = 0; a < thetas_radians.size(); ++a) {
+      for (std::size_t k = 0; k < solved.size(); ++k) at_angle[k] = solved[k][a];
+      for (int c = 0; c < 3; ++c) rgb[c].push_back(mixed_albedo(at_angle, channels.to_rgb.row(c)));
+    }
     return albedo_table(channels.materials.front(), thetas_degrees, {&rgb[0], &rgb[1], &rgb[2]});
   }();
   table.require_finite();

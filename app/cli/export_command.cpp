@@ -14,6 +14,7 @@
 #include "app/cli/model_flag.h"
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/cli/skin_flag.h"
 #include "app/export/color_export.h"
 #include "app/material/atomic_file.h"
 #include "app/process/parallel_for.h"
@@ -40,9 +41,10 @@ std::string export_usage() {
          rgb_albedo_usage() +
          "  --model M            subsurface model: stam (default), lambert or hk\n"
          "  -o, --output FILE    the file to write (required; written whole or not at all)\n"
-         "Progress goes to stderr.\n"
+         "Progress goes to stderr. A --skin exports its spectrum's linear sRGB (CIE 1931 2-degree, D65), as eval\n"
+         "writes it; --wavelength NM exports one wavelength's grey material instead.\n"
          "\n" +
-         material_flags_usage();
+         skin_flags_usage() + "\n" + material_flags_usage();
 }
 
 namespace {
@@ -60,7 +62,8 @@ int parse_nodes(std::optional<std::string_view> text) {
 }  // namespace
 
 int run_export_command(std::span<const std::string_view> arguments, std::ostream& out, std::ostream& progress) {
-  const std::vector<std::string_view> known = material_flags_and({kModelFlag, "format", "output", "nodes"});
+  const std::vector<std::string_view> known =
+      material_flags_and({kModelFlag, kSkinFlag, kWavelengthFlag, "format", "output", "nodes"});
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer export");
   const std::optional<std::string_view> format = flags.value("format");
   if (!format) throw UsageError("export needs --format bsdf or --format merl (the format to write)");
@@ -76,7 +79,10 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   if (!folder.empty() && !std::filesystem::is_directory(folder)) {
     throw std::runtime_error("cannot write " + std::string(*output) + ": no folder " + folder.string());
   }
-  const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  if (const std::optional<double> wavelength = wavelength_from_flags(flags)) {
+    document = document_at_wavelength(document, *wavelength);
+  }
   ColorMaterial material = color_material(document);
   material.model = model_from_flags(flags, document.model);
 

@@ -12,6 +12,7 @@
 #include "app/cli/model_flag.h"
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/cli/skin_flag.h"
 #include "app/gl/osmesa_context.h"
 #include "app/material/atomic_file.h"
 #include "app/material/picture_metadata.h"
@@ -68,15 +69,22 @@ std::string render_usage() {
          "  --exposure E         linear exposure before the exponential tone map, in (0, 1000] (default 1)\n"
          "  --scale S            lobe radius linear or log (3 decades) (default linear)\n"
          "  -o, --output FILE    the picture to write (required): .png, or .hdr for linear radiance\n" +
-         lighting_flags_usage() + "\n" + material_flags_usage();
+         lighting_flags_usage() + "\n" +
+         "A --skin renders its spectrum's linear sRGB (CIE 1931 2-degree, D65); --wavelength NM one wavelength's\n"
+         "grey material.\n" +
+         skin_flags_usage() + "\n" + material_flags_usage();
 }
 
 int run_render_command(std::span<const std::string_view> arguments, std::ostream& out, std::ostream& progress) {
   std::vector<std::string_view> known =
-      material_flags_and({kModelFlag, "light-theta", "light-phi", "view", "size", "exposure", "scale", "output"});
+      material_flags_and({kModelFlag, kSkinFlag, kWavelengthFlag, "light-theta", "light-phi", "view", "size",
+                          "exposure", "scale", "output"});
   for (std::string_view name : lighting_flag_names()) known.push_back(name);
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer render");
-  const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  if (const std::optional<double> wavelength = wavelength_from_flags(flags)) {
+    document = document_at_wavelength(document, *wavelength);
+  }
   ColorMaterial material = color_material(document);
   material.model = model_from_flags(flags, document.model);
   const std::optional<std::string_view> output = flags.value("output");

@@ -74,6 +74,7 @@ std::vector<float> truncated(const std::vector<double>& series, int channels, do
 }  // namespace
 
 std::optional<ColorMaterial> upside_down(const ColorMaterial& material) {
+  if (material.skin) return std::nullopt;  // its dermis is semi-infinite: no light comes from below
   std::optional<Material> layer = skinlayer::upside_down(material.layer);
   if (!layer) return std::nullopt;
   std::vector<std::array<double, 3>> albedos = {material.albedo_rgb};

@@ -7,9 +7,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <span>
 #include <vector>
 
 #include "app/material/material_document.h"
+#include "core/solver.h"
 
 namespace skinlayer {
 
@@ -22,7 +24,16 @@ struct ColorChannels {
 // The spectral grid of a skin's colour: 400-700 nm in 10 nm steps.
 std::vector<double> skin_color_wavelengths();
 
-// The document's solves and weights (a grey document: one material, every channel its value).
-ColorChannels color_channels(const MaterialDocument& document);
+// The coarser grid of a skin's colour while a slider moves (the previewer's preview phase): 400-700 nm in 50 nm steps.
+std::vector<double> skin_preview_wavelengths();
+
+// The document's solves and weights (a grey document: one material, every channel its value). `preview`: a skin on
+// skin_preview_wavelengths() instead of skin_color_wavelengths().
+ColorChannels color_channels(const MaterialDocument& document, bool preview = false);
+
+// One colour channel's directional albedo, sum_k weights(k) per_solve[k] field by field (each is linear in the solved
+// values); the surface reflectance, the same in every solve, is per_solve[0]'s. per_solve[k] is ColorChannels'
+// materials[k] at one incident angle, and weights a row of to_rgb.
+DirectionalAlbedo mixed_albedo(std::span<const DirectionalAlbedo> per_solve, const Eigen::RowVectorXd& weights);
 
 }  // namespace skinlayer

@@ -40,11 +40,11 @@ void require_layered(const MaterialDocument& document, std::string_view what) {
   if (!document.skin) return;
   throw MaterialFileError((document.name.empty() ? std::string("the material") : "material " + document.name) +
                           " is a spectral skin (a \"skin\" block or --skin), which " + std::string(what) +
-                          " cannot take yet; spectrum, eval, albedo, match and material can");
+                          " cannot take: it has no channels of its own, only a spectrum (color_channels)");
 }
 
 DistinctChannels distinct_channels(const MaterialDocument& document) {
-  require_layered(document, "this command");
+  require_layered(document, "distinct_channels");
   DistinctChannels channels;
   for (std::size_t c = 0; c < 3; ++c) {
     const Material channel = document.channel(static_cast<int>(c));  // the channels differ in their albedos only

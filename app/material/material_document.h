@@ -47,8 +47,9 @@ struct DistinctChannels {
 };
 DistinctChannels distinct_channels(const MaterialDocument& document);
 
-// Throws MaterialFileError unless the document is a layered one: `what` (e.g. "render") does not take a spectral
-// skin yet; the message names the commands that do.
+// Throws MaterialFileError unless the document is a layered one: `what` (a function that works on a document's
+// layers, as distinct_channels) cannot take a spectral skin, whose colour is solved per wavelength instead
+// (app/material/color_channels.h).
 void require_layered(const MaterialDocument& document, std::string_view what);
 
 // The document of a one-channel material: every layer's albedo the same in the three channels.

@@ -1,8 +1,10 @@
 // A material as the previewer shows it: the layer parameters with an RGB single-scattering albedo (skin is not
-// grey), solved one channel per distinct albedo value.
+// grey), solved one channel per distinct albedo value; or a biophysical skin, solved per wavelength and mixed into
+// linear sRGB (app/material/color_channels.h).
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "app/material/material_document.h"
@@ -18,6 +20,8 @@ struct ColorMaterial {
   std::array<double, 3> albedo_rgb = {1.0, 1.0, 1.0};
   std::vector<std::array<double, 3>> below_rgb;   // a stack's layers 2..n, one per layer.below
   SubsurfaceModel model = SubsurfaceModel::Stam;  // the comparison models share the surface term (one layer only)
+  // Set: a spectral skin (core/skin/skin_optics.h) under layer's top interface, and the albedos above are unused.
+  std::optional<SkinParameters> skin;
 };
 
 // The material as a file holds it (app/material), and back; a ColorMaterial has no name or description.
@@ -32,7 +36,9 @@ struct ColorTables {
   double solve_seconds = 0.0;
 };
 
-// Validates the material (every channel) and solves each distinct channel (its layers' albedos) once; also the
+// Validates the material (every channel) and solves each distinct channel (its layers' albedos) once; a skin at each
+// wavelength of color_channels' grid (the coarser one under options.preview), all on one table grid, each channel
+// the weighted sum of the wavelengths' tables and albedos (core/series/weighted_tables.h). Also the
 // directional albedo at theta_i (radians): the layer's from the solver, or for a comparison model its tables integrated
 // over the hemisphere (with the same surface reflectance). Throws ParameterError for invalid parameters. `options` pass
 // the caller's cache and parallel-for through to core (SolveOptions).

@@ -12,11 +12,13 @@ namespace skinlayer {
 TableTextureData make_table_textures(const ColorTables& tables) {
   TableTextureData data;
   for (const LayerTables& channel : tables.channels) data.modes = std::max(data.modes, channel.modes());
-  std::vector<int> distinct_channels;  // channels with equal albedos (every layer's) share one refined table
+  // Channels with equal albedos (every layer's) share one refined table; a skin's channels are its spectrum's
+  // weighted sums, each its own.
+  std::vector<int> distinct_channels;
   std::array<std::size_t, 3> source{};
   const MaterialDocument document = material_document(tables.material);
   for (int c = 0; c < 3; ++c) {
-    const bool same = c > 0 && document.channel(c) == document.channel(c - 1);
+    const bool same = c > 0 && !document.skin && document.channel(c) == document.channel(c - 1);
     if (!same) distinct_channels.push_back(c);
     source[c] = distinct_channels.size() - 1;
   }

@@ -123,13 +123,13 @@ TEST(SkinCommands, BadSkinValuesAreOneLineNamingTheKeyAndItsRange) {
       failed_with_one_line(run_skinlayer({"eval", "--skin", "melanin=0.1", "--T", "0.3"}), 2, {"--T", "--skin"}));
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--skin", "melanin=0.1", "--wavelength", "900"}), 2,
                                    {"wavelength = 900", "[360, 830]"}));
-  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--preset", "skin-fair", "--wavelength", "500"}), 2,
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--preset", "paper-skin", "--wavelength", "500"}), 2,
                                    {"RGB material has none"}));
 }
 
-// A skin material file (as `material --skin` writes it) reads back into the same spectrum; the commands that cannot
-// take one yet say so in one line.
-TEST(SkinCommands, ASkinMaterialFileGivesTheSameSpectrumAndRenderRefusesItPlainly) {
+// A skin material file (as `material --skin` writes it) reads back into the same spectrum; render and export take it,
+// and the exported .bsdf carries the skin, which reads back into the same spectrum again.
+TEST(SkinCommands, ASkinMaterialFileGivesTheSameSpectrumAndRendersAndExports) {
   const ProcessResult written = run_skinlayer({"material", "--skin", kSkin, "--sigma", "0.35"});
   ASSERT_EQ(written.exit_code, 0) << written.err;
   const std::string path = ::testing::TempDir() + "skinlayer_skin_material.json";
@@ -137,9 +137,16 @@ TEST(SkinCommands, ASkinMaterialFileGivesTheSameSpectrumAndRenderRefusesItPlainl
   const CsvOutput from_file = run_csv({"spectrum", "--material", path, "--theta-i", "8"});
   const CsvOutput from_flags = run_csv({"spectrum", "--skin", kSkin, "--sigma", "0.35", "--theta-i", "8"});
   EXPECT_EQ(from_file.rows, from_flags.rows);
-  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"render", "--material", path, "-o", path + ".png"}), 2,
-                                   {"spectral skin", "render", "spectrum, eval, albedo, match and material"}));
-  std::remove(path.c_str());
+
+  const ProcessResult rendered = run_skinlayer({"render", "--material", path, "--size", "64x64", "-o", path + ".png"});
+  EXPECT_EQ(rendered.exit_code, 0) << rendered.err;
+  EXPECT_GT(std::ifstream(path + ".png", std::ios::binary | std::ios::ate).tellg(), 100);
+  const ProcessResult exported =
+      run_skinlayer({"export", "--format", "bsdf", "--nodes", "12", "--material", path, "-o", path + ".bsdf"});
+  EXPECT_EQ(exported.exit_code, 0) << exported.err;
+  const CsvOutput from_bsdf = run_csv({"spectrum", "--material", path + ".bsdf", "--theta-i", "8"});
+  EXPECT_EQ(from_bsdf.rows, from_flags.rows);
+  for (const std::string& file : {path, path + ".png", path + ".bsdf"}) std::remove(file.c_str());
 }
 
 // The normal-incidence linear sRGB of a material as albedo writes it (surface and subsurface).

@@ -48,7 +48,12 @@ std::vector<Case> cases() {
   surface_only.layer.sigma = 0.2;
   surface_only.layer.eta = 2.0;
   surface_only.layer.bottom = parse_bottom("matched");
+  ColorMaterial spectral;  // a biophysical skin: its channels are weighted sums of 31 wavelengths' tables
+  spectral.layer.sigma = 0.35;
+  spectral.skin = SkinParameters{};
+  spectral.skin->melanin = 0.08;
   return {{paper, degrees_to_radians(45.0), kPi},
+          {spectral, degrees_to_radians(40.0), 2.8},
           {skin, degrees_to_radians(30.0), 0.5},
           {lambert, 1.2, 2.0},
           {surface_only, degrees_to_radians(35.0), 2.5}};
