@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/cli/errors.h"
@@ -15,13 +16,12 @@
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
+#include "app/material/color_match.h"
 #include "app/material/material_file.h"
 #include "app/material/material_json.h"
 #include "app/process/parallel_for.h"
-#include "core/color/ciede2000.h"
 #include "core/color/spectral_color.h"
 #include "core/conventions.h"
-#include "core/fit/albedo_color_match.h"
 #include "core/fit/skin_fit.h"
 
 namespace skinlayer::cli {
@@ -151,28 +151,11 @@ int match_color(const ParsedFlags& flags, MaterialDocument document, std::ostrea
     target(c) =
         flags.has(kLinearSwitch) ? given[static_cast<std::size_t>(c)] : srgb_decode(given[static_cast<std::size_t>(c)]);
   }
-  Eigen::Vector3d reached;
-  if (document.skin) {
-    const SkinColorMatch match = match_skin_color(target, document.layer, *document.skin, parallel_for_threads);
-    document.skin = match.skin;
-    reached = match.color;
-  } else {
-    std::array<Material, 3> channels;
-    for (int c = 0; c < 3; ++c) channels[static_cast<std::size_t>(c)] = document.channel(c);
-    const AlbedoColorMatch match = match_top_albedo(channels, {target(0), target(1), target(2)});
-    document.set_layer_albedo(0, match.albedo);
-    reached = Eigen::Vector3d(match.reflectance[0], match.reflectance[1], match.reflectance[2]);
-  }
-  // Reachable: within 0.5% in every channel (and a black target within 1e-4).
-  bool reachable = true;
-  for (int c = 0; c < 3; ++c) {
-    reachable = reachable && std::abs(reached(c) - target(c)) <= std::max(5e-3 * target(c), 1e-4);
-  }
-  write_document(document, flags, out);
-  if (!reachable) {
-    const double distance = ciede2000(linear_srgb_to_lab(target), linear_srgb_to_lab(reached));
+  const DocumentColorMatch match = match_document_color(std::move(document), target, parallel_for_threads);
+  write_document(match.document, flags, out);
+  if (!match.reachable) {
     err << "skinlayer: match: the colour " << color_text(target) << " is out of reach; the nearest reachable one is "
-        << color_text(reached) << " (sRGB), CIEDE2000 " << fixed_text(distance, 2) << " away\n";
+        << color_text(match.reached) << " (sRGB), CIEDE2000 " << fixed_text(match.delta_e, 2) << " away\n";
   }
   return kExitSuccess;
 }

@@ -241,6 +241,10 @@ bool material_controls(ColorMaterial& material, bool unicode) {
   bool changed = false;
   changed |= slider_row(spec_from_table("sigma", unicode), layer.sigma);
   changed |= slider_row(spec_from_table("eta", unicode), layer.eta);
+  if (material.skin) {  // its layers come from the chromophores (the Skin section)
+    ImGui::TextColored(ImVec4(0.7f, 0.7f, 0.7f, 1.0f), "layers: a skin's, from its chromophores (Skin, below)");
+    return changed;
+  }
   changed |= layers_controls(material, unicode);
   changed |= bottom_controls(layer, unicode);
   changed |= ordinates_controls(layer, unicode);

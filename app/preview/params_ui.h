@@ -14,7 +14,8 @@
 namespace skinlayer {
 
 // unicode: label with the table's symbols (σ, η, Ω, …) rather than the flag names, when the font has the glyphs.
-// Each returns true when it changed a value this frame.
+// Each returns true when it changed a value this frame. A skin's material shows its top interface only (its layers
+// are in the Skin section, app/preview/skin_ui.h).
 bool material_controls(ColorMaterial& material, bool unicode);
 bool light_controls(LightState& light, bool unicode);
 bool view_controls(ViewOptions& view);

@@ -3,6 +3,7 @@
 // polar angle, at which the directional albedo is reported).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -68,6 +69,7 @@ struct PreviewState {
   LightingState lighting;
   ComparisonState comparison;
   bool show_help = false;  // the F1 overlay
+  std::array<float, 3> match_color = {0.8f, 0.6f, 0.5f};  // the "Match colour..." picker's colour, sRGB-encoded
 };
 
 inline constexpr double kMaxLightThetaDegrees = 89.9;  // as `skinlayer render --light-theta`

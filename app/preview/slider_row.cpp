@@ -51,7 +51,8 @@ bool slider_row(const SliderSpec& spec, double& value) {
   // otherwise follow the mouse while the button is held).
   const ImGuiID slider_id = ImGui::GetID("##slider");
   ImGuiStorage* storage = ImGui::GetStateStorage();
-  constexpr ImGuiSliderFlags flags = ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp;
+  const ImGuiSliderFlags flags = ImGuiSliderFlags_NoInput | ImGuiSliderFlags_AlwaysClamp |
+                                 (spec.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
   ImGui::SliderScalar("##slider", ImGuiDataType_Double, &value, &spec.min, &spec.max, spec.format, flags);
   if (ImGui::IsItemActivated() && ImGui::GetIO().KeyCtrl) storage->SetBool(slider_id, true);
   if (storage->GetBool(slider_id, false)) {

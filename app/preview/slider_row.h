@@ -15,6 +15,7 @@ struct SliderSpec {
   double max = 1.0;
   double default_value = 0.0;
   const char* format = "%.3f";
+  bool logarithmic = false;  // the slider's travel is logarithmic (for ranges where small values matter most)
 };
 
 // The row of a material parameter (core's parameter_table()); unicode: labelled with its symbol.

@@ -3,9 +3,10 @@
 namespace skinlayer {
 
 bool same_request(const SolveRequest& a, const SolveRequest& b) {
-  // layer.albedo (and each stacked layer's) is not solved; the RGB albedos are.
+  // layer.albedo (and each stacked layer's) is not solved; the RGB albedos are, or a skin's parameters.
   return differ_only_in_albedos(a.material.layer, b.material.layer) && a.material.albedo_rgb == b.material.albedo_rgb &&
          a.material.below_rgb == b.material.below_rgb && a.material.model == b.material.model &&
+         a.material.skin == b.material.skin &&
          a.theta_i == b.theta_i && a.compare == b.compare && a.plot_model == b.plot_model;
 }
 

@@ -19,7 +19,7 @@ struct SolveRequest {
 std::array<bool, 3> needed_models(const SolveRequest& request);
 
 // True when a and b ask for the same solve: every field of the layer (layer.albedo excepted: albedo_rgb is used),
-// the RGB albedo, the models, theta_i and the comparison flag compare equal.
+// the RGB albedo, a skin's parameters, the models, theta_i and the comparison flag compare equal.
 bool same_request(const SolveRequest& a, const SolveRequest& b);
 
 }  // namespace skinlayer

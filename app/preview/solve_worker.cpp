@@ -6,6 +6,7 @@
 
 #include "app/process/parallel_for.h"
 #include "app/render/scene.h"
+#include "core/skin/skin_parameters.h"
 
 namespace skinlayer {
 
@@ -39,9 +40,14 @@ SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation,
 
 namespace {
 
-// Whether the request gets a preview phase; an invalid material does not (its full solve reports the error).
+// Whether the request gets a preview phase; an invalid material does not (its full solve reports the error). A
+// skin always does: its preview solves fewer wavelengths (skin_preview_wavelengths).
 bool wants_preview(const SolveRequest& request) {
   try {
+    if (request.material.skin) {
+      validate(*request.material.skin);
+      return true;
+    }
     return preview_is_coarser(request.material.layer);
   } catch (const ParameterError&) {
     return false;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "app/preview/params_ui.h"
+#include "app/preview/skin_ui.h"
 #include "core/conventions.h"
 
 namespace skinlayer {
@@ -167,6 +168,11 @@ PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelSta
   if (ImGui::CollapsingHeader("Material", ImGuiTreeNodeFlags_DefaultOpen)) {
     material_controls(state.material, status.unicode);
     actions.reset_material = ImGui::Button("Reset to the paper's default (R)");
+  }
+  if (ImGui::CollapsingHeader("Skin", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const SkinSectionResult skin =
+        skin_section(state.material, state.match_color, SkinSectionInput{status.matching, status.match_outcome});
+    actions.match_srgb = skin.match_srgb;
   }
   if (ImGui::CollapsingHeader("Light and view", ImGuiTreeNodeFlags_DefaultOpen)) {
     light_controls(state.light, status.unicode);

@@ -2,6 +2,8 @@
 // controls (params_ui), the energy readout at the light's angle, the screenshot settings, and the status line.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 
 #include "app/preview/preview_state.h"
@@ -20,6 +22,8 @@ struct PanelStatus {
   bool unicode = false;                // the font has Greek letters and symbols
   int environment_samples = 0;         // the environment estimate's samples per pixel so far
   std::string environment_error;       // why the chosen environment could not be loaded
+  bool matching = false;               // a "Match colour..." runs (app/window/match_job.h)
+  std::string match_outcome;           // the last match's outcome; empty: none
 };
 
 struct PanelActions {
@@ -30,6 +34,7 @@ struct PanelActions {
   bool pin = false;        // Pin as B: the shown material becomes the A/B comparison's B
   bool unpin = false;      // Unpin B
   FileSectionResult file;  // the File section: open, save, presets, recent, undo, redo
+  std::optional<std::array<double, 3>> match_srgb;  // "Match colour...": the target, sRGB-encoded
 };
 
 // Draws the panel in rect (ImGui must be inside a frame) and edits state.

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/flag_parser.h"
 #include "app/gl/gl_api.h"
 #include "app/material/material_file.h"
 #include "app/material/material_json.h"
@@ -32,12 +33,14 @@
 #include "app/window/file_panel.h"
 #include "app/window/glfw_window.h"
 #include "app/window/help_overlay.h"
+#include "app/window/match_job.h"
 #include "app/window/material_files.h"
 #include "app/window/screenshot.h"
 #include "app/window/shortcuts.h"
 #include "app/window/ui_context.h"
 #include "app/window/view_overlays.h"
 #include "core/conventions.h"
+#include "core/skin/skin_parameters.h"
 
 namespace skinlayer {
 namespace {
@@ -105,6 +108,7 @@ class Previewer {
       out_ << *outcome << "\n" << std::flush;
       activity = true;
     }
+    activity |= take_match();
     const std::array<int, 2> framebuffer = window_.framebuffer_size();
     if (framebuffer[0] < 1 || framebuffer[1] < 1) return kIdleWaitSeconds;  // minimized: nothing to draw
     update_scene();
@@ -123,6 +127,7 @@ class Previewer {
     if (panel.unpin) unpin(edited);
     if (panel.export_bsdf) start_export(ExportFormat::Bsdf);
     if (panel.export_merl) start_export(ExportFormat::Merl);
+    if (panel.match_srgb) start_match(edited.material, *panel.match_srgb);
     bool reset = panel.reset_material;
     bool undo = panel.file.undo, redo = panel.file.redo;
     std::vector<FileCommand> file_commands;
@@ -257,7 +262,9 @@ class Previewer {
                        export_job_.progress(),
                        imgui_.unicode_labels(),
                        environment_.samples(),
-                       environment_error_};
+                       environment_error_,
+                       match_job_.running(),
+                       match_outcome_};
   }
 
   // The scene of the shown result under the current light and view; the lobe scale (a CPU pass over the BSDF) is
@@ -396,6 +403,27 @@ class Previewer {
     if (!export_job_.start(format, shown_->tables(), path)) last_export_ = "an export is already running";
   }
 
+  // "Match colour...": the material as it is when pressed, matched on the match's own thread (match_job.h).
+  void start_match(const ColorMaterial& material, const std::array<double, 3>& srgb) {
+    if (!match_job_.start(material_document(material), Eigen::Vector3d(srgb[0], srgb[1], srgb[2]))) {
+      match_outcome_ = "a match is already running";
+    }
+  }
+
+  // A finished match sets its parameters at once, so that they are one undo step; returns true if there was one.
+  bool take_match() {
+    std::optional<MatchOutcome> outcome = match_job_.take_outcome();
+    if (!outcome) return false;
+    match_outcome_ = outcome->line;
+    out_ << "match: " << outcome->line << "\n" << std::flush;
+    if (outcome->document) {
+      const SubsurfaceModel model = state_.material.model;
+      state_.material = color_material(*outcome->document);
+      state_.material.model = model;
+    }
+    return true;
+  }
+
   // Saves a region of the back buffer; failures are shown in the panel (and thrown in capture mode).
   void export_picture(const Viewport& region, const std::string& path) {
     try {
@@ -446,7 +474,7 @@ class Previewer {
   // is solved and committed as its own undo step, as a person's would be.
   void run_test_action(std::vector<FileCommand>& commands, bool& undo, bool& redo) {
     const FileDialog::Kind dialog = files_.dialog().kind;
-    if (test_actions_.empty() || !shown_ || solving() || dialog == FileDialog::Kind::Open ||
+    if (test_actions_.empty() || !shown_ || solving() || match_job_.running() || dialog == FileDialog::Kind::Open ||
         dialog == FileDialog::Kind::SaveAs) {
       return;
     }
@@ -490,6 +518,18 @@ class Previewer {
       } else {
         throw std::runtime_error("test action: unknown layer action '" + what + "'");
       }
+    } else if (verb == "skin") {  // the Skin section's buttons: "skin on" (Make it a skin), "skin off"
+      if (argument == "on") {
+        state_.material.skin = SkinParameters{};
+        state_.material.model = SubsurfaceModel::Stam;
+      } else {
+        state_.material.skin.reset();
+      }
+    } else if (verb == "match") {  // "match R,G,B": Match colour... with that sRGB-encoded colour
+      const std::vector<std::string_view> channels = cli::split_list(argument, ',');
+      if (channels.size() != 3) throw std::runtime_error("test action: match needs R,G,B");
+      start_match(state_.material, {std::stod(std::string(channels[0])), std::stod(std::string(channels[1])),
+                                    std::stod(std::string(channels[2]))});
     } else if (verb == "pin") {
       pin_shown(state_);
     } else if (verb == "unpin") {
@@ -516,7 +556,9 @@ class Previewer {
       const std::string name = argument.substr(0, gap);
       const double value = std::stod(argument.substr(gap + 1));
       Material& layer = state_.material.layer;
-      if (name == "sigma") {
+      if (state_.material.skin && name != "sigma" && name != "eta") {  // a skin slider, by its key
+        skin_parameter(*state_.material.skin, name) = value;
+      } else if (name == "sigma") {
         layer.sigma = value;
       } else if (name == "eta") {
         layer.eta = value;
@@ -561,7 +603,7 @@ class Previewer {
   // --capture: once the shown result answers the final parameters and a few frames have shown it, save the whole
   // window through the same export path as the S key, and finish.
   void capture_if_ready(std::array<int, 2> framebuffer) {
-    if (!capture_path_ || !test_actions_.empty() || export_job_.running()) return;
+    if (!capture_path_ || !test_actions_.empty() || export_job_.running() || match_job_.running()) return;
     const bool final_result = submitted_ && !worker_.settling();
     if (final_result && !error_.empty()) throw std::runtime_error(error_);
     if (!final_result || !shown_ || shown_->preview || !same_request(shown_->request, *submitted_)) return;
@@ -610,6 +652,8 @@ class Previewer {
   std::string failed_environment_;  // that source, not retried until another is chosen
   int capture_samples_ = 0;         // --capture under an environment waits for this many samples per pixel
   ExportJob export_job_;
+  MatchJob match_job_;
+  std::string match_outcome_;  // the last match's outcome, for the Skin section
   SolveWorker worker_;  // last: destroyed (joined) first, while GLFW, which it wakes, is still initialized
 };
 

@@ -6,6 +6,7 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
+#include "app/cli/skin_flag.h"
 #include "core/solver.h"
 
 namespace skinlayer {
@@ -16,7 +17,8 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
     options.help = true;
     return options;
   }
-  std::vector<std::string_view> known = cli::material_flags_and({"capture", "view", cli::kModelFlag, "test-actions"});
+  std::vector<std::string_view> known =
+      cli::material_flags_and({"capture", "view", cli::kModelFlag, cli::kSkinFlag, "test-actions"});
   for (std::string_view name : cli::lighting_flag_names()) known.push_back(name);
   const cli::ParsedFlags flags = cli::ParsedFlags::parse(arguments, known, "skinlayer");
   options.lighting = cli::lighting_from_flags(flags);
@@ -62,8 +64,9 @@ std::string window_usage() {
          "                       VALUE, undo, redo, drop PATH, save PATH, preset NAME, quit, discard, title,\n"
          "                       layer add, layer remove|up|down I, export-merl PATH,\n"
          "                       export-bsdf PATH, lighting env|env-rotate|env-ev|light VALUE, pin, unpin,\n"
-         "                       split FRACTION)\n" +
-         cli::lighting_flags_usage() + "\n" + cli::material_flags_usage();
+         "                       split FRACTION, skin on|off, match R,G,B; with a skin, set KEY VALUE sets\n"
+         "                       a skin slider)\n" +
+         cli::lighting_flags_usage() + "\n" + cli::skin_flags_usage(false) + "\n" + cli::material_flags_usage();
 }
 
 }  // namespace skinlayer

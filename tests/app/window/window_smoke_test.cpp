@@ -5,12 +5,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <memory>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -190,6 +193,58 @@ TEST(WindowSmoke, TheLayersPanelAddsReordersAndUndoesLayers) {
   Scripted coat = run_scripted("preset clear-coat-red", dir / "config");
   ASSERT_EQ(coat.run.exit_code, 0) << coat.run.err;
   EXPECT_NE(coat.material.find("\"interface\""), std::string::npos) << coat.material;
+  std::filesystem::remove_all(dir);
+}
+
+// The Skin section (issue 25) through the same hook: a skin's slider, then "Match colour..." with a colour that a
+// skin reaches (another skin's, from `albedo`), which sets melanin, blood and scattering as one undo step.
+TEST(WindowSmoke, TheSkinSectionsSlidersAndMatchColourAreLiveAndUndoable) {
+  if (!find_in_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::filesystem::path dir = temporary_png("skinlayer-window-skin").replace_extension("");
+  std::filesystem::create_directories(dir);
+  // The target: the normal-incidence colour of a darker skin, sRGB-encoded here (IEC 61966-2-1).
+  const ProcessResult albedo = run_process({SKINLAYER_EXECUTABLE, "albedo", "--skin",
+                                            "melanin=0.12,blood=0.02,scattering=1.5", "--theta-i", "0"});
+  ASSERT_EQ(albedo.exit_code, 0) << albedo.err;
+  const auto reflectance = [](const std::string& csv) {  // reflectance_r, _g, _b of the one row
+    std::istringstream lines(csv);
+    std::string header, row;
+    std::getline(lines, header);
+    std::getline(lines, row);
+    std::vector<std::string> names, values;
+    for (std::istringstream h(header); std::getline(h, names.emplace_back(), ',');) {}
+    for (std::istringstream r(row); std::getline(r, values.emplace_back(), ',');) {}
+    std::array<double, 3> rgb{};
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      for (int c = 0; c < 3; ++c) {
+        if (names[i] == std::string("reflectance_") + "rgb"[c]) rgb[c] = std::stod(values[i]);
+      }
+    }
+    return rgb;
+  };
+  const std::array<double, 3> target = reflectance(albedo.out);
+  std::string srgb;
+  for (int c = 0; c < 3; ++c) {
+    const double v = target[c] <= 0.0031308 ? 12.92 * target[c] : 1.055 * std::pow(target[c], 1.0 / 2.4) - 0.055;
+    if (c > 0) srgb += ',';
+    srgb += std::to_string(v);
+  }
+  const std::string slid = (dir / "slid.json").string(), matched = (dir / "matched.json").string();
+  Scripted skin = run_scripted(
+      "skin on;set melanin 0.2;save " + slid + ";match " + srgb + ";save " + matched + ";undo", dir / "config");
+  ASSERT_EQ(skin.run.exit_code, 0) << skin.run.err;
+  EXPECT_NE(skin.run.out.find("match: matched"), std::string::npos) << skin.run.out;
+  const ProcessResult slid_file = run_process({SKINLAYER_EXECUTABLE, "material", "--material", slid});
+  EXPECT_NE(slid_file.out.find("\"melanin\": 0.2"), std::string::npos) << slid_file.out;
+  // The matched material gives the target within 0.5% per channel.
+  const ProcessResult matched_albedo =
+      run_process({SKINLAYER_EXECUTABLE, "albedo", "--material", matched, "--theta-i", "0"});
+  ASSERT_EQ(matched_albedo.exit_code, 0) << matched_albedo.err;
+  const std::array<double, 3> reached = reflectance(matched_albedo.out);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(reached[c], target[c], 5e-3 * target[c]) << "channel " << c;
+  // One undo takes the whole match back: the capture shows the slid skin.
+  EXPECT_NE(skin.material.find("\"melanin\": 0.2"), std::string::npos) << skin.material;
+  EXPECT_NE(skin.material.find("\"blood\": 0.005"), std::string::npos) << skin.material;
   std::filesystem::remove_all(dir);
 }
 
