@@ -75,8 +75,8 @@ TEST_F(MaterialCommands, FlagsGivenNextToAFileOverrideItsValues) {
   ASSERT_EQ(overridden.exit_code, 0) << overridden.err;
   EXPECT_EQ(overridden.out, direct.out) << "the file's sigma 0.3 (top and its explicit bottom), the flag's g";
   // A preset, with a grey albedo over its RGB one, and a different top roughness.
-  const ProcessResult preset = eval_with({"--preset", "skin-fair", "--albedo", "0.5", "--sigma", "0.2"});
-  const ProcessResult spelled = eval_with({"--sigma", "0.2", "--eta", "1.4", "--T", "0.02", "--albedo", "0.5", "--g",
+  const ProcessResult preset = eval_with({"--preset", "paper-skin", "--albedo", "0.5", "--sigma", "0.2"});
+  const ProcessResult spelled = eval_with({"--sigma", "0.2", "--eta", "1.4", "--T", "0.05", "--albedo", "0.5", "--g",
                                            "0.8", "--bottom-sigma", "0.35", "--bottom-eta", "1.4"});
   ASSERT_EQ(preset.exit_code, 0) << preset.err;
   EXPECT_EQ(preset.out, spelled.out);
@@ -94,13 +94,13 @@ TEST_F(MaterialCommands, ARenderedPngCarriesItsMaterial) {
   EXPECT_EQ(from_png.out, eval_with(flags).out);
   // An RGB picture reads back into `material` with its three channels and the settings it was drawn with.
   ASSERT_EQ(run_skinlayer(
-                {"render", "--size", "32x32", "--preset", "skin-dark", "--light-theta", "30", "-o", path("rgb.png")})
+                {"render", "--size", "32x32", "--preset", "paper-skin", "--light-theta", "30", "-o", path("rgb.png")})
                 .exit_code,
             0);
   const ProcessResult material = run_skinlayer({"material", "--material", path("rgb.png")});
   ASSERT_EQ(material.exit_code, 0) << material.err;
-  EXPECT_NE(material.out.find("\"name\": \"skin-dark\""), std::string::npos) << material.out;
-  EXPECT_NE(material.out.find("0.82"), std::string::npos) << material.out;
+  EXPECT_NE(material.out.find("\"name\": \"paper-skin\""), std::string::npos) << material.out;
+  EXPECT_NE(material.out.find("0.55"), std::string::npos) << material.out;
 }
 
 TEST_F(MaterialCommands, PresetsListsNameAndDescription) {

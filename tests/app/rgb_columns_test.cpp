@@ -108,7 +108,7 @@ void expect_channels_match(const CsvOutput& rgb, const std::vector<CsvOutput>& g
 // The RGB materials: flags, a preset, a stack's albedo=r:g:b, a preset stack, two equal channels, another model.
 const std::vector<std::vector<std::string>> kRgbMaterials = {
     {"--albedo", "0.9,0.6,0.3", "--sigma", "0.3", "--T", "0.4", "--g", "0.5", "--bottom", "matched"},
-    {"--preset", "skin-fair"},
+    {"--preset", "paper-skin"},
     {"--preset", "leaf"},  // its channels' albedos straddle the table-size rule (a shared solve differs by 0.1%)
     {"--layer", "T=0.5,albedo=0.95:0.8:0.6,g=0.7", "--layer", "T=0.3,albedo=0.7:0.9:0.99,g=0.2,sigma=0.3,eta=1.1",
      "--bottom", "lambert:0.4"},
@@ -173,14 +173,14 @@ TEST_F(RgbColumns, AlbedoWritesEachChannelAsTheGreySolveOfItsAlbedo) {
 // --albedo A over a file's or preset's RGB albedo makes it grey again: today's columns, and the values of the
 // material spelled out in grey.
 TEST_F(RgbColumns, AGreyAlbedoFlagOverridesAnRgbFile) {
-  const ProcessResult over_preset = run_skinlayer({"eval", "--preset", "skin-fair", "--albedo", "0.5"}, kRows);
+  const ProcessResult over_preset = run_skinlayer({"eval", "--preset", "paper-skin", "--albedo", "0.5"}, kRows);
   ASSERT_EQ(over_preset.exit_code, 0) << over_preset.err;
   EXPECT_EQ(parse_csv_output(over_preset.out).header, kGreyEvalHeader);
-  nlohmann::json material = material_json({"--preset", "skin-fair"});
+  nlohmann::json material = material_json({"--preset", "paper-skin"});
   material.at("layers").at(0).at("albedo") = 0.5;
   std::ofstream(path("grey.json")) << material.dump(2);
   EXPECT_EQ(over_preset.out, run_skinlayer({"eval", "--material", path("grey.json")}, kRows).out);
-  const ProcessResult albedo = run_skinlayer({"albedo", "--preset", "skin-fair", "--albedo", "0.5"});
+  const ProcessResult albedo = run_skinlayer({"albedo", "--preset", "paper-skin", "--albedo", "0.5"});
   ASSERT_EQ(albedo.exit_code, 0) << albedo.err;
   EXPECT_EQ(albedo.out, run_skinlayer({"albedo", "--material", path("grey.json")}).out);
   EXPECT_TRUE(parse_csv_output(albedo.out).header.size() == 6u) << albedo.out;
@@ -193,8 +193,8 @@ TEST(RgbColumnsErrors, BadRgbAlbedosAreOneLineNamingTheParameterAndItsRange) {
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--albedo", "0.9,nan,0.1"}), 2, {"albedo", "nan"}));
 }
 
-// Every preset: eval and albedo write finite numbers (RGB columns where the preset is RGB), render draws it and
-// export writes it.
+// Every preset: eval and albedo write finite numbers (RGB columns where the preset is RGB or a spectral skin), render
+// draws it and export writes it.
 class EveryPreset : public ScratchFolderTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(EveryPreset, RunsThroughEvalAlbedoRenderAndExport) {
@@ -210,9 +210,9 @@ TEST_P(EveryPreset, RunsThroughEvalAlbedoRenderAndExport) {
   }
   const ProcessResult material = run_skinlayer({"material", "--preset", name});
   ASSERT_EQ(material.exit_code, 0) << material.err;
-  bool rgb = false;
   const nlohmann::json parsed = nlohmann::json::parse(material.out);
-  for (const nlohmann::json& layer : parsed.at("layers")) {
+  bool rgb = parsed.contains("skin");  // a spectral skin writes its colour in RGB
+  for (const nlohmann::json& layer : parsed.value("layers", nlohmann::json::array())) {
     rgb = rgb || layer.at("albedo").is_array();
   }
   EXPECT_EQ(eval.header == kRgbEvalHeader, rgb);

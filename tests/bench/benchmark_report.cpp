@@ -192,7 +192,7 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
                     ms / r.ms("BM_SolveStack/1/real_time"), layers == 3 ? ".\n" : ",");
   }
   md << formatted(
-      "\n## Export\n\n`skinlayer export --format bsdf` of the default material with skin-fair's RGB albedo at the "
+      "\n## Export\n\n`skinlayer export --format bsdf` of the default material with the RGB albedo (0.99, 0.9, 0.82) at the "
       "default 64 nodes per hemisphere, from cold on both cores (solve, upside-down solve, tabulation, encoding; "
       "`BM_ExportBsdf`, target of issue 13: under 2 s and 20 MB): **%.0f ms**, %.2f MB.\n",
       r.ms("BM_ExportBsdf/real_time"), r.counter("BM_ExportBsdf/real_time", "bytes") / 1e6);

@@ -97,7 +97,7 @@ class MerlExport : public ::testing::Test {
 };
 
 TEST_F(MerlExport, EveryBinIsTheBrdfAtItsCentreAndAReaderFindsIt) {
-  const std::vector<std::string> material = {"--preset", "skin-fair", "--sigma", "0.3"};
+  const std::vector<std::string> material = {"--preset", "paper-skin", "--sigma", "0.3"};
   std::vector<std::string> command = {"export", "--format", "merl", "-o", path_.string()};
   command.insert(command.end(), material.begin(), material.end());
   const ProcessResult exported = run_skinlayer(command);
@@ -130,8 +130,8 @@ TEST_F(MerlExport, EveryBinIsTheBrdfAtItsCentreAndAReaderFindsIt) {
   }
   EXPECT_GT(below, 0);
   ASSERT_GE(sampled.size(), 500u);
-  // eval solves one channel: each channel's albedo in turn (skin-fair's RGB albedo, 0.99 / 0.9 / 0.82).
-  const std::array<const char*, 3> albedos = {"0.99", "0.9", "0.82"};
+  // eval solves one channel: each channel's albedo in turn (paper-skin's RGB albedo, 0.95 / 0.7 / 0.55).
+  const std::array<const char*, 3> albedos = {"0.95", "0.7", "0.55"};
   for (int c = 0; c < 3; ++c) {
     std::vector<std::string> eval = {"eval", "--albedo", albedos[c]};
     eval.insert(eval.end(), material.begin(), material.end());

@@ -289,7 +289,7 @@ TEST(ScatfunExample, TheScriptWritesTheFileThePbrtSceneNames) {
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.err.find("pbrt-v3 is not on PATH"), std::string::npos) << run.err;
   const ScatfunFile file = read_scatfun(copy / "skin.bsdf");
-  EXPECT_EQ(file.n_channels, 3u) << "skin-fair's albedo is RGB";
+  EXPECT_EQ(file.n_channels, 3u) << "skin-fair's colour is RGB";
   fs::remove_all(copy);
 }
 
