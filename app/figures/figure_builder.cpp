@@ -12,6 +12,7 @@
 #include "app/cli/numbers.h"
 #include "app/figures/model_spheres.h"
 #include "app/figures/polar_plot.h"
+#include "app/figures/skin_figures.h"
 #include "app/material/picture_metadata.h"
 #include "core/conventions.h"
 #include "core/interfaces/microfacet.h"
@@ -150,6 +151,9 @@ const LayerTables& SolveCache::tables(const LayerParams& params, SubsurfaceModel
 
 FigureSize build_figure(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, SolveCache& cache,
                   int size) {
+  if (spec.kind == FigureKind::SkinSpectra || spec.kind == FigureKind::SkinSpheres) {
+    return build_skin_figure(spec, dir, font, size);
+  }
   std::vector<Lobe> lobes;
   if (spec.kind == FigureKind::ModelSpheres) {
     // The data behind the spheres: each model's lobes per color channel (Omega = that channel's albedo).

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <initializer_list>
 
 namespace skinlayer::figures {
@@ -56,6 +57,81 @@ Material LayerParams::material() const {
   m.below = below;
   return m;
 }
+
+namespace {
+
+// The spectral skin (issue 25): spectra against melanin and against blood at the integrating sphere's 8 degrees, and
+// a row of spheres across the pigmentation ranges, all under the skin presets' top (sigma 0.35, eta 1.4); every
+// other skin parameter at its default.
+// A fraction as a label: 0.035 -> "3.5%".
+std::string percent(double fraction) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g%%", 100.0 * fraction);
+  return text;
+}
+
+void append_skin_figures(std::vector<FigureSpec>& set) {
+  LayerParams top;
+  top.sigma = 0.35;
+  const auto skin_curve = [&](const std::string& key, double value, const std::string& label) {
+    FigureCurve curve{label, shortest(value), top};
+    curve.theta_i_deg = 8.0;
+    curve.skin = SkinParameters{};
+    skin_parameter(*curve.skin, key) = value;
+    return curve;
+  };
+  FigureSpec melanin;
+  melanin.name = "skin-spectra-melanin";
+  melanin.title = "Skin reflectance at 8° against epidermal melanin (blood 0.5%)";
+  melanin.subtitle = "blood 0.5% · oxygenation 75% · epidermis 0.06 mm · σ 0.35 · η 1.4 · θi 8°";
+  melanin.parameter = "melanin";
+  melanin.kind = FigureKind::SkinSpectra;
+  for (const double m : {0.01, 0.035, 0.135, 0.30, 0.43}) {
+    melanin.curves.push_back(skin_curve("melanin", m, "melanin " + percent(m)));
+  }
+  melanin.caption = "The spectral skin's directional-hemispherical reflectance at 8° (surface and subsurface) from "
+                    "400 to 700 nm as the epidermal melanin fraction rises from 1% to 43%, across Jacques' (1998) "
+                    "ranges for light (1.3-6.3%), moderately (11-16%) and darkly (18-43%) pigmented adults. Melanin "
+                    "absorbs most at short wavelengths, so it lowers blue more than red; hemoglobin's dips at 542 "
+                    "and 577 nm fade as less light reaches the dermis.";
+  set.push_back(melanin);
+
+  FigureSpec blood;
+  blood.name = "skin-spectra-blood";
+  blood.title = "Skin reflectance at 8° against dermal blood (melanin 3.5%)";
+  blood.subtitle = "melanin 3.5% · oxygenation 75% · epidermis 0.06 mm · σ 0.35 · η 1.4 · θi 8°";
+  blood.parameter = "blood";
+  blood.kind = FigureKind::SkinSpectra;
+  for (const double b : {0.002, 0.005, 0.02, 0.05, 0.1}) {
+    FigureCurve curve = skin_curve("blood", b, "blood " + percent(b));
+    curve.skin->melanin = 0.035;
+    blood.curves.push_back(curve);
+  }
+  blood.caption = "The same at melanin 3.5% (the skin-fair preset) as the dermal blood volume fraction rises from "
+                  "0.2% to 10%: the oxy- and deoxyhemoglobin bands (the W between 540 and 580 nm, and the Soret "
+                  "band below 450 nm) deepen, and the rise past 600 nm, where hemoglobin hardly absorbs, stays.";
+  set.push_back(blood);
+
+  FigureSpec spheres;
+  spheres.name = "skin-spheres";
+  spheres.title = "Skin from chromophores: melanin 1% to 43%";
+  spheres.subtitle = "blood 0.5% · σ 0.35 · η 1.4 · linear sRGB under D65 · light 45° from the left";
+  spheres.parameter = "melanin";
+  spheres.kind = FigureKind::SkinSpheres;
+  for (const double m : {0.01, 0.035, 0.135, 0.30, 0.43}) {
+    FigureCurve curve = skin_curve("melanin", m, "melanin " + percent(m));
+    curve.theta_i_deg = 45.0;
+    spheres.curves.push_back(curve);
+  }
+  spheres.caption = "Spheres of the spectral skin across the pigmentation ranges (3.5%, 13.5% and 30% are the "
+                    "skin-fair, skin-medium and skin-dark presets), each solved at 31 wavelengths and shown in "
+                    "linear sRGB under D65 with skinlayer render's renderer. The CSV holds each skin's colour at "
+                    "normal incidence (the sphere's centre under a white furnace), which `skinlayer albedo --skin` "
+                    "reproduces.";
+  set.push_back(spheres);
+}
+
+}  // namespace
 
 std::vector<FigureSpec> figure_set() {
   std::vector<FigureSpec> set;
@@ -185,6 +261,7 @@ std::vector<FigureSpec> figure_set() {
                     "channel; the same surface term on each. Rendered with skinlayer render's OSMesa renderer. The "
                     "CSV holds each model's subsurface BRDF per channel in the plane of incidence at θi 45°.";
   set.push_back(spheres);
+  append_skin_figures(set);
   return set;
 }
 

@@ -4,11 +4,13 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/material.h"
 #include "core/models/subsurface_model.h"
+#include "core/skin/skin_parameters.h"
 
 namespace skinlayer::figures {
 
@@ -29,6 +31,8 @@ enum class FigureKind {
   SurfaceLobes,     // the top interface alone: brdf_surface (R) and the interface's microfacet BTDF into the layer (T)
   SubsurfaceLobes,  // the subsurface BRDF (R) and the layer's BTDF (T) of the chosen model
   ModelSpheres,     // lit spheres of Lambert, Hanrahan-Krueger and Stam side by side
+  SkinSpectra,      // a spectral skin's directional-hemispherical reflectance against wavelength (skin_figures.h)
+  SkinSpheres,      // lit spheres of spectral skins side by side, in linear sRGB under D65
 };
 
 struct FigureCurve {
@@ -38,6 +42,7 @@ struct FigureCurve {
   double theta_i_deg = 45.0;
   SubsurfaceModel model = SubsurfaceModel::Stam;
   std::array<double, 3> albedo_rgb = {1.0, 1.0, 1.0};  // ModelSpheres only: per-channel Omega
+  std::optional<SkinParameters> skin = std::nullopt;  // SkinSpectra and SkinSpheres: the skin under params' top
 };
 
 struct FigureSpec {
@@ -45,7 +50,7 @@ struct FigureSpec {
   std::string title;      // the picture's first line
   std::string subtitle;   // the picture's second line: the fixed parameters
   std::string caption;    // index.html's caption
-  std::string parameter;  // the varied parameter's flag name (sigma, eta, theta_i, g, albedo, T) or "model"
+  std::string parameter;  // the varied parameter's flag name (sigma, eta, theta_i, g, albedo, T, a skin key) or "model"
   FigureKind kind = FigureKind::SubsurfaceLobes;
   bool rescale_to_peak = false;  // each curve divided by its own peak before plotting
   int log_decades = 0;           // 0: linear radial scale; n: log10 over n decades (polar_plot.h)

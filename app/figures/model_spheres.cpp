@@ -26,7 +26,7 @@ Image draw_model_spheres(const FigureSpec& spec, const Font& font, int sphere_si
   for (std::size_t k = 0; k < spec.curves.size(); ++k) {
     const FigureCurve& curve = spec.curves[k];
     const ColorTables tables = solve_color(
-        ColorMaterial{curve.params.material(), curve.albedo_rgb, {}, curve.model, std::nullopt}, light_theta);
+        ColorMaterial{curve.params.material(), curve.albedo_rgb, {}, curve.model, curve.skin}, light_theta);
     renderer.upload(make_table_textures(tables));
     const Scene scene = make_scene(tables, ViewKind::Sphere, light_theta, light_phi, 1.0, false);
     target.bind();

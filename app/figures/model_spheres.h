@@ -8,8 +8,8 @@
 
 namespace skinlayer::figures {
 
-// One sphere per curve of spec (its model, params and albedo_rgb), each sphere_size px square, light 45 degrees from
-// the view direction on the left. The image is curves x sphere_size wide.
+// One sphere per curve of spec (its model, params and albedo_rgb, or its spectral skin), each sphere_size px square,
+// light 45 degrees from the view direction on the left. The image is curves x sphere_size wide.
 Image draw_model_spheres(const FigureSpec& spec, const Font& font, int sphere_size);
 
 }  // namespace skinlayer::figures

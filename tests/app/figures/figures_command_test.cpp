@@ -22,7 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::size_t kFigureCount = 11;
+constexpr std::size_t kFigureCount = 14;
+constexpr std::size_t kSkinFigureCount = 3;  // the spectral skin's: checked against spectrum and albedo
 constexpr std::size_t kRowsPerFile = 20;
 constexpr double kRelativeTolerance = 1e-9;
 
@@ -155,6 +156,7 @@ TEST_F(FiguresCommand, CsvValuesEqualEvalAtThosePoints) {
   std::size_t compared = 0;
   for (const StatedPng& figure : stated_) {
     const Csv csv = read_csv(dir_ / (figure.name + ".csv"));
+    if (csv.column.contains("skin")) continue;  // SkinCsvValuesEqualSpectrumAndAlbedo
     for (const char* name : {"curve", "parameter", "value", "theta_i", "theta_o", "phi", "side", "quantity", "f",
                              "model", "sigma", "eta", "T", "albedo", "g", "layers"}) {
       ASSERT_TRUE(csv.column.contains(name)) << figure.name << ".csv has no column " << name;
@@ -209,7 +211,71 @@ TEST_F(FiguresCommand, CsvValuesEqualEvalAtThosePoints) {
       }
     }
   }
-  EXPECT_GE(compared, kFigureCount * kRowsPerFile * 3 / 4);
+  EXPECT_GE(compared, (kFigureCount - kSkinFigureCount) * kRowsPerFile * 3 / 4);
+}
+
+// The spectral skin's CSVs: every reflectance on the 10 nm grid equals `skinlayer spectrum --skin ... --theta-i ...`
+// at its wavelength (the spectra), or `skinlayer albedo --skin ... --theta-i 0`'s RGB reflectance (the spheres), with the recorded skin
+// and top interface.
+TEST_F(FiguresCommand, SkinCsvValuesEqualSpectrumAndAlbedo) {
+  std::size_t skin_figures = 0, compared = 0;
+  for (const StatedPng& figure : stated_) {
+    const Csv csv = read_csv(dir_ / (figure.name + ".csv"));
+    if (!csv.column.contains("skin")) continue;
+    ++skin_figures;
+    const auto field = [&](const std::vector<std::string>& row, const char* name) {
+      return row.at(csv.column.at(name));
+    };
+    const bool spectra = csv.column.contains("wavelength_nm");
+    std::map<std::vector<std::string>, std::vector<const std::vector<std::string>*>> groups;  // one run per skin
+    for (const std::vector<std::string>& row : csv.rows) {
+      std::string skin = field(row, "skin");
+      std::replace(skin.begin(), skin.end(), ';', ',');
+      groups[{spectra ? "spectrum" : "albedo", "--skin", skin, "--sigma", field(row, "sigma"), "--eta",
+              field(row, "eta"), "--theta-i", field(row, "theta_i")}]
+          .push_back(&row);
+    }
+    for (const auto& [flags, rows] : groups) {
+      const ProcessResult run = run_skinlayer(flags);
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+      std::istringstream lines(run.out);
+      std::string line;
+      std::getline(lines, line);
+      const std::vector<std::string> header = split(line, ',');
+      const auto at = [&](const std::vector<std::string>& values, const std::string& name) {
+        const auto column = std::find(header.begin(), header.end(), name);
+        EXPECT_NE(column, header.end()) << name;
+        return std::stod(values.at(static_cast<std::size_t>(column - header.begin())));
+      };
+      std::map<std::string, std::vector<std::string>> by_wavelength;  // spectrum's rows by wavelength
+      std::vector<std::string> albedo_row;
+      while (std::getline(lines, line)) {
+        const std::vector<std::string> values = split(line, ',');
+        if (spectra) {
+          by_wavelength[values.at(1)] = values;
+        } else {
+          albedo_row = values;
+        }
+      }
+      for (const auto* row : rows) {
+        if (spectra) {  // the figure's 5 nm grid: every other row is on spectrum's 10 nm grid
+          if (!by_wavelength.contains(field(*row, "wavelength_nm"))) continue;
+          const double expected = at(by_wavelength.at(field(*row, "wavelength_nm")), "reflectance");
+          EXPECT_NEAR(std::stod(field(*row, "reflectance")), expected, kRelativeTolerance * expected)
+              << figure.name << " " << field(*row, "curve") << " at " << field(*row, "wavelength_nm");
+        } else {
+          for (const char* channel : {"reflectance_r", "reflectance_g", "reflectance_b"}) {
+            const double expected = at(albedo_row, channel);
+            EXPECT_NEAR(std::stod(field(*row, channel)), expected, kRelativeTolerance * expected)
+                << figure.name << " " << field(*row, "curve") << " " << channel;
+          }
+        }
+        ++compared;
+      }
+    }
+  }
+  EXPECT_EQ(skin_figures, kSkinFigureCount);
+  EXPECT_GE(compared, 2u * 5u * 31u + 5u);
 }
 
 // The rescaled figure: plotted is f over the curve's peak, so each curve's largest plotted value is 1.

@@ -1,0 +1,129 @@
+#include "app/figures/skin_figures.h"
+
+#include <algorithm>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/cli/numbers.h"
+#include "app/cli/skin_flag.h"
+#include "app/figures/model_spheres.h"
+#include "app/figures/xy_plot.h"
+#include "app/material/picture_metadata.h"
+#include "app/process/parallel_for.h"
+#include "app/render/material_solve.h"
+#include "core/conventions.h"
+#include "core/skin/skin_spectrum.h"
+
+namespace skinlayer::figures {
+namespace {
+
+// The --skin value of a curve, with ';' for ',' so that it is one CSV field.
+std::string skin_field(const SkinParameters& skin) {
+  std::string spec = cli::format_skin_spec(skin);
+  std::replace(spec.begin(), spec.end(), ',', ';');
+  return spec;
+}
+
+std::string material_fields(const FigureCurve& curve) {
+  return skin_field(*curve.skin) + "," + cli::format_shortest(curve.params.sigma) + "," +
+         cli::format_shortest(curve.params.eta);
+}
+
+// The first curve's skin as the picture's material, and the values the figure varies.
+PngText skin_metadata(const FigureSpec& spec) {
+  const FigureCurve& first = spec.curves.front();
+  MaterialDocument material;
+  material.layer = first.params.material();
+  material.skin = first.skin;
+  material.name = spec.name;
+  material.description = spec.title + " (the first curve's material)";
+  nlohmann::ordered_json values = nlohmann::ordered_json::array();
+  for (const FigureCurve& curve : spec.curves) values.push_back(curve.value);
+  const nlohmann::ordered_json settings = {{"command", "figures"},
+                                           {"figure", spec.name},
+                                           {"parameter", spec.parameter},
+                                           {"values", values},
+                                           {"light_theta", first.theta_i_deg}};
+  return picture_metadata(material, settings);
+}
+
+std::ofstream open_csv(const std::filesystem::path& path) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+  return out;
+}
+
+void close_csv(std::ofstream& out, const std::filesystem::path& path) {
+  if (!out.flush()) throw std::runtime_error("cannot write " + path.string());
+}
+
+FigureSize build_spectra(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, int size) {
+  const std::vector<double> wavelengths = wavelength_grid(400.0, 700.0, 5.0);
+  XyPlot plot;
+  plot.title = spec.title;  // the subtitle's fixed parameters are in the CSV and the index's caption
+  plot.x_label = "wavelength, nm";
+  plot.y_label = "reflectance";
+  plot.x_min = 400.0;
+  plot.x_max = 700.0;
+  plot.x_tick = 50.0;
+  plot.width = size * 2;
+  plot.height = size;
+  const std::filesystem::path csv_path = dir / (spec.name + ".csv");
+  std::ofstream csv = open_csv(csv_path);
+  csv << "curve,parameter,value,theta_i,wavelength_nm,reflectance,skin,sigma,eta\n";
+  SolveOptions options;
+  options.parallel_for = parallel_for_threads;
+  for (std::size_t k = 0; k < spec.curves.size(); ++k) {
+    const FigureCurve& curve = spec.curves[k];
+    const double theta[1] = {degrees_to_radians(curve.theta_i_deg)};
+    const std::vector<std::vector<DirectionalAlbedo>> rows =
+        skin_directional_albedo(*curve.skin, curve.params.material(), wavelengths, theta, options);
+    XySeries series{curve.label, curve_color(k), {}, {}, {}};
+    for (std::size_t w = 0; w < wavelengths.size(); ++w) {
+      const double reflectance = rows[w].front().reflectance();
+      series.curve.push_back({wavelengths[w], reflectance});
+      csv << curve.label << ',' << spec.parameter << ',' << curve.value << ','
+          << cli::format_shortest(curve.theta_i_deg) << ',' << cli::format_shortest(wavelengths[w]) << ','
+          << cli::format_number(reflectance) << ',' << material_fields(curve) << '\n';
+    }
+    plot.series.push_back(std::move(series));
+  }
+  close_csv(csv, csv_path);
+  const Image image = draw_xy_plot(plot, font);
+  write_png(image, (dir / (spec.name + ".png")).string(), {skin_metadata(spec)});
+  return {image.width, image.height};
+}
+
+FigureSize build_spheres(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, int size) {
+  const std::filesystem::path csv_path = dir / (spec.name + ".csv");
+  std::ofstream csv = open_csv(csv_path);
+  csv << "curve,parameter,value,theta_i,reflectance_r,reflectance_g,reflectance_b,skin,sigma,eta\n";
+  SolveOptions options;
+  options.parallel_for = parallel_for_threads;
+  for (const FigureCurve& curve : spec.curves) {  // the colour at the sphere's centre under a white furnace
+    ColorMaterial material{curve.params.material(), {1.0, 1.0, 1.0}, {}, SubsurfaceModel::Stam, curve.skin};
+    const ColorTables tables = solve_color(material, 0.0, options);
+    csv << curve.label << ',' << spec.parameter << ',' << curve.value << ",0";
+    for (int c = 0; c < 3; ++c) csv << ',' << cli::format_number(tables.albedo[c].reflectance());
+    csv << ',' << material_fields(curve) << '\n';
+  }
+  close_csv(csv, csv_path);
+  const Image image = draw_model_spheres(spec, font, std::max(size * 7 / 16, 64));
+  write_png(image, (dir / (spec.name + ".png")).string(), {skin_metadata(spec)});
+  return {image.width, image.height};
+}
+
+}  // namespace
+
+FigureSize build_skin_figure(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, int size) {
+  for (const FigureCurve& curve : spec.curves) {
+    if (!curve.skin) throw std::invalid_argument("figure " + spec.name + ": curve " + curve.label + " has no skin");
+  }
+  return spec.kind == FigureKind::SkinSpectra ? build_spectra(spec, dir, font, size)
+                                              : build_spheres(spec, dir, font, size);
+}
+
+}  // namespace skinlayer::figures
