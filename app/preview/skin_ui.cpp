@@ -63,7 +63,7 @@ SkinSectionResult skin_section(ColorMaterial& material, std::array<float, 3>& pi
   if (material.skin) {
     result.changed = skin_sliders(*material.skin);
     if (ImGui::Button("Use layers instead")) {
-      material.skin.reset();  // the layers the material had before it became a skin, under its top interface
+      material.skin.reset();  // the layers kept under it: those it had before it became a skin, or the defaults
       result.changed = true;
     }
   } else {
