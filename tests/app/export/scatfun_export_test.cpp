@@ -259,7 +259,9 @@ TEST_F(ScatfunExport, BadRequestsAreOneLineAndLeaveNoFile) {
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"export", "--format", "merl", "--nodes", "64", "-o", out}), 2,
                                    {"--nodes", "bsdf"}));
   EXPECT_TRUE(
-      failed_with_one_line(run_skinlayer({"export", "--format", "tensor", "-o", out}), 2, {"tensor", "bsdf, merl"}));
+      failed_with_one_line(run_skinlayer({"export", "--format", "tensor", "-o", out}), 2, {"tensor", "bsdf, merl, rgl"}));
+  EXPECT_TRUE(
+      failed_with_one_line(run_skinlayer({"export", "--format", "bsdf", "--rgb", "-o", out}), 2, {"--rgb", "rgl"}));
   EXPECT_TRUE(
       failed_with_one_line(run_skinlayer({"export", "--format", "bsdf", "--eta", "3", "-o", out}), 2, {"eta = 3"}));
   EXPECT_FALSE(fs::exists(path_));
