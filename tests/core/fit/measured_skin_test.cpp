@@ -8,11 +8,11 @@
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "core/conventions.h"
 #include "core/fit/skin_fit.h"
+#include "tests/core/two_threads.h"
 
 namespace skinlayer {
 namespace {
@@ -45,13 +45,7 @@ MeasuredSpectra read_nist() {
   return spectra;
 }
 
-void two_threads(int count, const std::function<void(int)>& body) {
-  std::thread other([&] {
-    for (int i = 1; i < count; i += 2) body(i);
-  });
-  for (int i = 0; i < count; i += 2) body(i);
-  other.join();
-}
+using test::two_threads;
 
 TEST(MeasuredSkin, TheNistSpectraAreFitWithinTheTargets) {
   const MeasuredSpectra nist = read_nist();

@@ -5,23 +5,17 @@
 
 #include <gtest/gtest.h>
 
-#include <thread>
 #include <vector>
 
 #include "core/skin/skin_optics.h"
 #include "core/solve/solve_cache.h"
+#include "tests/core/two_threads.h"
 
 namespace skinlayer {
 namespace {
 
 // Two threads, as the app's parallel-for gives on the 2-core machine.
-void two_threads(int count, const std::function<void(int)>& body) {
-  std::thread other([&] {
-    for (int i = 1; i < count; i += 2) body(i);
-  });
-  for (int i = 0; i < count; i += 2) body(i);
-  other.join();
-}
+using test::two_threads;
 
 TEST(BatchSolve, EqualsOneSolvePerMaterial) {
   std::vector<Material> materials;
