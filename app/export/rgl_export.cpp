@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -76,12 +77,12 @@ std::string rgl_rgb_file(const ColorTables& tables, const RglOptions& options, c
     }
   }
   std::vector<float> theta_nodes(static_cast<std::size_t>(thetas));
-  // Denser toward grazing, where the VNDF changes fastest with theta_o and the readers blend neighbouring slices:
+  // Denser toward grazing, where the VNDF changes fastest with theta_o:
   // theta_k = (pi/2) sin((pi/2) k / T), k = 0..T-1 (the last at 89.9 degrees for T = 32).
   for (int k = 0; k < thetas; ++k) theta_nodes[k] = static_cast<float>(0.5 * kPi * std::sin(0.5 * kPi * k / thetas));
   const std::size_t vndf_slice = static_cast<std::size_t>(nd) * nd, sample_slice = static_cast<std::size_t>(n) * n;
   std::vector<float> vndf(thetas * vndf_slice), luminance(thetas * sample_slice), rgb(thetas * 3 * sample_slice);
-  int done = 0;
+  std::atomic<int> done = 0;  // slices finished, counted from the parallel-for's threads
   parallel_for_threads(thetas, [&](int k) {
     const double theta_o = theta_nodes[k];
     const Vec3 wo = direction(theta_o, 0.0);
@@ -116,7 +117,7 @@ std::string rgl_rgb_file(const ColorTables& tables, const RglOptions& options, c
             static_cast<float>(0.2126 * value[0] + 0.7152 * value[1] + 0.0722 * value[2]);
       }
     }
-    if (progress) progress(++done, thetas);  // (the count is approximate under threads; it only reports)
+    if (progress) progress(++done, thetas);
   });
   // Isotropic: two azimuth slices, 0 and pi, both the same.
   const auto twice = [](const std::vector<float>& v) {
