@@ -128,17 +128,20 @@ PngText figure_metadata(const FigureSpec& spec) {
   material.description = spec.title + " (the first curve's material)";
   if (spec.kind == FigureKind::ModelSpheres) material.set_layer_albedo(0, first.albedo_rgb);
   material.model = first.model;
-  nlohmann::ordered_json values = nlohmann::ordered_json::array();
-  for (const FigureCurve& curve : spec.curves) values.push_back(curve.value);
-  const nlohmann::ordered_json settings = {{"command", "figures"},
-                                           {"figure", spec.name},
-                                           {"parameter", spec.parameter},
-                                           {"values", values},
-                                           {"light_theta", first.theta_i_deg}};
-  return picture_metadata(material, settings);
+  return picture_metadata(material, figure_settings(spec));
 }
 
 }  // namespace
+
+nlohmann::ordered_json figure_settings(const FigureSpec& spec) {
+  nlohmann::ordered_json values = nlohmann::ordered_json::array();
+  for (const FigureCurve& curve : spec.curves) values.push_back(curve.value);
+  return {{"command", "figures"},
+          {"figure", spec.name},
+          {"parameter", spec.parameter},
+          {"values", values},
+          {"light_theta", spec.curves.front().theta_i_deg}};
+}
 
 const LayerTables& SolveCache::tables(const LayerParams& params, SubsurfaceModel model) {
   const Material material = params.material();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 #include "app/figures/figure_set.h"
@@ -38,6 +39,10 @@ struct FigureSize {
   int width = 0;
   int height = 0;
 };
+// How a figure was drawn, for its PNG's metadata: the command, the figure, the parameter it varies and its values, and
+// the first curve's incident angle (degrees).
+nlohmann::ordered_json figure_settings(const FigureSpec& spec);
+
 FigureSize build_figure(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, SolveCache& cache,
                   int size);
 

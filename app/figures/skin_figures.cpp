@@ -40,14 +40,7 @@ PngText skin_metadata(const FigureSpec& spec) {
   material.skin = first.skin;
   material.name = spec.name;
   material.description = spec.title + " (the first curve's material)";
-  nlohmann::ordered_json values = nlohmann::ordered_json::array();
-  for (const FigureCurve& curve : spec.curves) values.push_back(curve.value);
-  const nlohmann::ordered_json settings = {{"command", "figures"},
-                                           {"figure", spec.name},
-                                           {"parameter", spec.parameter},
-                                           {"values", values},
-                                           {"light_theta", first.theta_i_deg}};
-  return picture_metadata(material, settings);
+  return picture_metadata(material, figure_settings(spec));
 }
 
 std::ofstream open_csv(const std::filesystem::path& path) {
