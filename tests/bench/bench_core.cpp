@@ -361,13 +361,15 @@ void BM_SpectralSkinSolve(benchmark::State& state) {
 }
 BENCHMARK(BM_SpectralSkinSolve)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// The same skin as the previewer's full answer after the slider stops: solve_color at 10 nm (31 tables and albedos,
-// mixed to RGB) with the cache warm, and the tables in the GPU layout.
-void BM_SkinColorSolve(benchmark::State& state) {
+// One skin slider step as the previewer's worker answers it: melanin changes with the cache warm, then solve_color
+// (the preview, or the full 31-wavelength solve) and the tables in the GPU layout (make_table_textures), on both
+// cores.
+void skin_slider_step(benchmark::State& state, bool preview) {
   SolveCache cache;
   SolveOptions options;
   options.cache = &cache;
   options.parallel_for = parallel_for_threads;
+  options.preview = preview;
   ColorMaterial material;
   material.layer.sigma = 0.35;
   material.skin = SkinParameters{};
@@ -378,27 +380,16 @@ void BM_SkinColorSolve(benchmark::State& state) {
     benchmark::DoNotOptimize(make_table_textures(solve_color(material, 0.785, options)));
   }
 }
+
+// The previewer's full answer after the slider stops: 31 tables and albedos, mixed to RGB.
+void BM_SkinColorSolve(benchmark::State& state) { skin_slider_step(state, false); }
 BENCHMARK(BM_SkinColorSolve)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// A skin slider step as the previewer's worker answers it (issue 25, target <= 30 ms): melanin changes, the cache is
-// warm, solve_color's preview (app/render/material_solve.h: the preview resolution, tables at 400-700 nm in 50 nm
-// steps scaled to the colour of all 31 wavelengths' albedos; refined to 10 nm when the slider stops) and the
-// tables in the GPU layout (make_table_textures), on both cores.
+// A skin slider step while the slider moves (issue 25, target <= 30 ms): solve_color's preview
+// (app/render/material_solve.h: the preview resolution, tables at 400-700 nm in 50 nm steps scaled to the colour of
+// all 31 wavelengths' albedos; refined to 10 nm when the slider stops).
 void BM_SkinSliderPreview(benchmark::State& state) {
-  SolveCache cache;
-  SolveOptions options;
-  options.cache = &cache;
-  options.parallel_for = parallel_for_threads;
-  options.preview = true;
-  ColorMaterial material;
-  material.layer.sigma = 0.35;
-  material.skin = SkinParameters{};
-  benchmark::DoNotOptimize(solve_color(material, 0.785, options));
-  int step = 0;
-  for (auto _ : state) {
-    material.skin->melanin = 0.02 + 0.001 * (++step % 10);
-    benchmark::DoNotOptimize(make_table_textures(solve_color(material, 0.785, options)));
-  }
+  skin_slider_step(state, true);
   state.counters["tabulated"] = static_cast<double>(skin_preview_wavelengths().size());
 }
 BENCHMARK(BM_SkinSliderPreview)->Unit(benchmark::kMillisecond)->UseRealTime();
