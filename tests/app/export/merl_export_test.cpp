@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -146,7 +147,7 @@ TEST_F(MerlExport, EveryBinIsTheBrdfAtItsCentreAndAReaderFindsIt) {
       std::vector<double> fields;
       std::istringstream split(line);
       std::string field;
-      while (std::getline(split, field, ',')) fields.push_back(std::stod(field));
+      while (std::getline(split, field, ',')) fields.push_back(std::strtod(field.c_str(), nullptr));
       const double expected = fields.at(5);
       const double stored = merl.values[c * kBins + index] * kScale[c];
       EXPECT_GE(stored, 0.0);

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -120,7 +121,7 @@ std::vector<double> eval_values(const std::vector<std::string>& flags, const std
     std::vector<double> fields;
     std::istringstream split(line);
     std::string field;
-    while (std::getline(split, field, ',')) fields.push_back(std::stod(field));
+    while (std::getline(split, field, ',')) fields.push_back(std::strtod(field.c_str(), nullptr));
     values.push_back(fields.at(transmission ? 6 : 5));
   }
   EXPECT_EQ(values.size(), queries.size());
