@@ -1,10 +1,10 @@
 #include "app/export/rgl_export.h"
 
 #include <algorithm>
-#include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "app/export/tensor_file.h"
@@ -21,6 +21,9 @@ namespace {
 double theta_of_u(double u) { return 0.5 * kPi * u * u; }
 double u_of_theta(double theta) { return std::sqrt(2.0 * theta / kPi); }
 double phi_of_u(double u) { return 2.0 * kPi * (u - 0.5); }
+
+// The node placement's shares (rgl_export.h): surface lobe, cosine floor, uniform on the u square.
+constexpr double kPlaceLobe = 0.5, kPlaceCosine = 0.2, kPlaceUniform = 0.3;
 
 // A bilinear table on [0,1]^2 (x fastest), as the readers interpolate `ndf` and `sigma`.
 struct Table2 {
@@ -59,83 +62,117 @@ double projected_area(double theta, double sigma, double floor) {
   return sum;
 }
 
+// A table that depends on u(theta) only, on an n x n grid.
+Table2 radial_table(int n, const std::function<double(double theta)>& value) {
+  Table2 table{n, n, std::vector<float>(static_cast<std::size_t>(n) * n)};
+  for (int i = 0; i < n; ++i) {
+    const float v = static_cast<float>(value(theta_of_u(static_cast<double>(i) / (n - 1))));
+    for (int j = 0; j < n; ++j) table.values[static_cast<std::size_t>(j) * n + i] = v;
+  }
+  return table;
+}
+
+// The node placement density on the u square (rgl_export.h), the same for every theta_o.
+std::vector<double> placement(int n, double sigma) {
+  std::vector<double> density(static_cast<std::size_t>(n) * n);
+  for (int i = 0; i < n; ++i) {
+    const double u = static_cast<double>(i) / (n - 1), theta_m = theta_of_u(u), c = std::cos(theta_m);
+    const double jacobian = 2.0 * kPi * kPi * u * std::sin(theta_m);
+    const double value =
+        kPlaceLobe * jacobian * c * beckmann_ndf(c, sigma) + kPlaceCosine * jacobian * c / kPi + kPlaceUniform;
+    for (int j = 0; j < n; ++j) density[static_cast<std::size_t>(j) * n + i] = value;
+  }
+  return density;
+}
+
+// Both readers need the stored floats to be what the writer warped with.
+std::vector<float> as_floats(const std::vector<double>& values) { return {values.begin(), values.end()}; }
+std::vector<double> as_doubles(const std::vector<float>& values) { return {values.begin(), values.end()}; }
+
+// Isotropic: two azimuth slices, 0 and pi, both the same.
+std::vector<float> twice(const std::vector<float>& v) {
+  std::vector<float> both(v);
+  both.insert(both.end(), v.begin(), v.end());
+  return both;
+}
+
 }  // namespace
 
-std::string rgl_rgb_file(const ColorTables& tables, const RglOptions& options, const std::string& description,
-                         const std::function<void(int, int)>& progress) {
-  const double sigma = tables.material.layer.sigma, floor = options.floor;
-  const int nd = options.ndf_size, n = options.samples, thetas = options.thetas;
-  Table2 ndf_table{nd, nd, std::vector<float>(static_cast<std::size_t>(nd) * nd)};
-  Table2 sigma_table{nd, nd, std::vector<float>(static_cast<std::size_t>(nd) * nd)};
-  for (int i = 0; i < nd; ++i) {
-    const double theta = theta_of_u(static_cast<double>(i) / (nd - 1));
-    const float d = static_cast<float>(ndf(std::cos(theta), sigma, floor));
-    const float s = static_cast<float>(projected_area(std::min(theta, 0.5 * kPi), sigma, floor));
-    for (int j = 0; j < nd; ++j) {
-      ndf_table.values[static_cast<std::size_t>(j) * nd + i] = d;
-      sigma_table.values[static_cast<std::size_t>(j) * nd + i] = s;
-    }
+std::string rgl_file(const RglChannels& channels, const RglOptions& options, const std::string& description,
+                     const std::function<void(int, int)>& progress) {
+  const bool spectral = !channels.wavelengths.empty();
+  const int k_channels = spectral ? static_cast<int>(channels.wavelengths.size()) : 3;
+  if (static_cast<int>(channels.luminance_weights.size()) != k_channels || !channels.brdf) {
+    throw std::invalid_argument("rgl_file: one luminance weight per channel, and a BRDF");
   }
+  if (options.samples < RglOptions::kMinSamples || options.samples > RglOptions::kMaxSamples) {
+    throw std::invalid_argument("rgl_file: samples out of range");
+  }
+  const double sigma = channels.top_sigma, floor = options.floor;
+  const int n = options.samples, thetas = options.thetas, nv = options.vndf_size;
+  const Table2 ndf_table = radial_table(options.ndf_size, [&](double t) { return ndf(std::cos(t), sigma, floor); });
+  const Table2 sigma_table =
+      radial_table(options.ndf_size, [&](double t) { return projected_area(std::min(t, 0.5 * kPi), sigma, floor); });
+  // theta_k = (pi/4) (sin((pi/2) k / T) + k / (T - 1)), k = 0..T-1: from 0 to 89.95 degrees, about 2.5 times as
+  // dense at grazing as at the normal (the BRDF changes fastest with theta_o there).
   std::vector<float> theta_nodes(static_cast<std::size_t>(thetas));
-  // Denser toward grazing, where the VNDF changes fastest with theta_o:
-  // theta_k = (pi/2) sin((pi/2) k / T), k = 0..T-1 (the last at 89.9 degrees for T = 32).
-  for (int k = 0; k < thetas; ++k) theta_nodes[k] = static_cast<float>(0.5 * kPi * std::sin(0.5 * kPi * k / thetas));
-  const std::size_t vndf_slice = static_cast<std::size_t>(nd) * nd, sample_slice = static_cast<std::size_t>(n) * n;
-  std::vector<float> vndf(thetas * vndf_slice), luminance(thetas * sample_slice), rgb(thetas * 3 * sample_slice);
+  for (int k = 0; k < thetas; ++k) {
+    theta_nodes[k] = static_cast<float>(0.25 * kPi * (std::sin(0.5 * kPi * k / thetas) + k / (thetas - 1.0)));
+  }
+  const std::vector<float> vndf_slice = as_floats(placement(nv, sigma));
+  const PiecewiseLinear2D warp(as_doubles(vndf_slice), nv, nv);
+  const std::size_t plane = static_cast<std::size_t>(n) * n;
+  std::vector<float> luminance(thetas * plane), values(static_cast<std::size_t>(thetas) * k_channels * plane);
   std::atomic<int> done = 0;  // slices finished, counted from the parallel-for's threads
   parallel_for_threads(thetas, [&](int k) {
     const double theta_o = theta_nodes[k];
     const Vec3 wo = direction(theta_o, 0.0);
-    std::vector<double> slice(vndf_slice);
-    for (int j = 0; j < nd; ++j) {    // y: u(phi_m - phi_o)
-      for (int i = 0; i < nd; ++i) {  // x: u(theta_m)
-        const double u = static_cast<double>(i) / (nd - 1), theta_m = theta_of_u(u);
-        const Vec3 m = direction(theta_m, phi_of_u(static_cast<double>(j) / (nd - 1)));
-        const float value = static_cast<float>(2.0 * kPi * kPi * u * std::sin(theta_m) * std::max(0.0, wo.dot(m)) *
-                                               ndf(std::cos(theta_m), sigma, floor));
-        vndf[k * vndf_slice + static_cast<std::size_t>(j) * nd + i] = value;
-        slice[static_cast<std::size_t>(j) * nd + i] = value;  // the readers warp with the stored floats
-      }
-    }
-    const PiecewiseLinear2D warp(slice, nd, nd);
     const double sigma_o = sigma_table.at(u_of_theta(theta_o), 0.5);
+    std::vector<double> node(static_cast<std::size_t>(k_channels));
     for (int j = 0; j < n; ++j) {
       for (int i = 0; i < n; ++i) {
         const PiecewiseLinear2D::Sample s =
             warp.sample({static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1)});
         const Vec3 m = direction(theta_of_u(s.u[0]), phi_of_u(s.u[1]));
         const Vec3 wi = 2.0 * wo.dot(m) * m - wo;
-        std::array<double, 3> value{};
+        std::fill(node.begin(), node.end(), 0.0);
         if (wi.z() > 0.0) {
           const double theta_i = std::acos(std::min(wi.z(), 1.0)), phi = -std::atan2(wi.y(), wi.x());
+          channels.brdf(theta_i, theta_o, phi, node);
           const double scale = wi.z() * 4.0 * sigma_o / ndf_table.at(s.u[0], s.u[1]);
-          for (int c = 0; c < 3; ++c) value[c] = brdf_total(tables, c, theta_i, theta_o, phi) * scale;
+          for (double& v : node) v *= scale;
         }
-        const std::size_t node = static_cast<std::size_t>(j) * n + i;
-        for (int c = 0; c < 3; ++c) rgb[(k * 3 + c) * sample_slice + node] = static_cast<float>(value[c]);
-        luminance[k * sample_slice + node] =
-            static_cast<float>(0.2126 * value[0] + 0.7152 * value[1] + 0.0722 * value[2]);
+        const std::size_t at = static_cast<std::size_t>(j) * n + i;
+        double y = 0.0;
+        for (int c = 0; c < k_channels; ++c) {
+          values[(static_cast<std::size_t>(k) * k_channels + c) * plane + at] = static_cast<float>(node[c]);
+          y += channels.luminance_weights[c] * node[c];
+        }
+        luminance[k * plane + at] = static_cast<float>(std::max(y, 0.0));
       }
     }
     if (progress) progress(++done, thetas);
   });
-  // Isotropic: two azimuth slices, 0 and pi, both the same.
-  const auto twice = [](const std::vector<float>& v) {
-    std::vector<float> both(v);
-    both.insert(both.end(), v.begin(), v.end());
-    return both;
-  };
+  std::vector<float> vndf;
+  for (int k = 0; k < thetas; ++k) vndf.insert(vndf.end(), vndf_slice.begin(), vndf_slice.end());
   const std::uint64_t t = static_cast<std::uint64_t>(thetas), un = static_cast<std::uint64_t>(n),
-                      ud = static_cast<std::uint64_t>(nd);
+                      uv = static_cast<std::uint64_t>(nv), ud = static_cast<std::uint64_t>(options.ndf_size),
+                      uk = static_cast<std::uint64_t>(k_channels);
   const std::vector<float> phi_nodes = {0.0f, static_cast<float>(kPi)};
   const std::vector<std::uint8_t> text(description.begin(), description.end()), jacobian = {1};
-  const std::vector<TensorField> fields = {
-      uint8_field("description", {text.size()}, text),     uint8_field("jacobian", {1}, jacobian),
-      float32_field("theta_i", {t}, theta_nodes),          float32_field("phi_i", {2}, phi_nodes),
-      float32_field("ndf", {ud, ud}, ndf_table.values),    float32_field("sigma", {ud, ud}, sigma_table.values),
-      float32_field("vndf", {2, t, ud, ud}, twice(vndf)),  float32_field("luminance", {2, t, un, un}, twice(luminance)),
-      float32_field("rgb", {2, t, 3, un, un}, twice(rgb)),
+  std::vector<TensorField> fields = {
+      uint8_field("description", {text.size()}, text),    uint8_field("jacobian", {1}, jacobian),
+      float32_field("theta_i", {t}, theta_nodes),         float32_field("phi_i", {2}, phi_nodes),
+      float32_field("ndf", {ud, ud}, ndf_table.values),   float32_field("sigma", {ud, ud}, sigma_table.values),
+      float32_field("vndf", {2, t, uv, uv}, twice(vndf)), float32_field("luminance", {2, t, un, un}, twice(luminance)),
   };
+  if (spectral) {
+    const std::vector<float> nm(channels.wavelengths.begin(), channels.wavelengths.end());
+    fields.push_back(float32_field("wavelengths", {uk}, nm));
+    fields.push_back(float32_field("spectra", {2, t, uk, un, un}, twice(values)));
+  } else {
+    fields.push_back(float32_field("rgb", {2, t, 3, un, un}, twice(values)));
+  }
   return encode_tensor_file(fields);
 }
 

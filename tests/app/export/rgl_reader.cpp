@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <stdexcept>
 
 namespace skinlayer::test {
@@ -37,7 +38,8 @@ std::pair<std::size_t, double> bracket(const std::vector<float>& nodes, double v
 }
 
 // Bilinear value of one ny x nx slice (x fastest) at (ux, uy) in [0,1]^2.
-double bilinear(const float* slice, std::size_t nx, std::size_t ny, double ux, double uy) {
+template <typename T>
+double bilinear(const T* slice, std::size_t nx, std::size_t ny, double ux, double uy) {
   const double px = std::clamp(ux, 0.0, 1.0) * static_cast<double>(nx - 1);
   const double py = std::clamp(uy, 0.0, 1.0) * static_cast<double>(ny - 1);
   const std::size_t x = std::min(static_cast<std::size_t>(px), nx - 2),
@@ -47,50 +49,150 @@ double bilinear(const float* slice, std::size_t nx, std::size_t ny, double ux, d
   return (1 - b) * ((1 - a) * v(x, y) + a * v(x + 1, y)) + b * ((1 - a) * v(x, y + 1) + a * v(x + 1, y + 1));
 }
 
-// The inverse of the VNDF's sampling warp at u_m, for the slices around (phi_o, theta_o): each slice normalized to a
-// density on the unit square with its row and marginal CDFs, the neighbouring slices blended linearly.
-std::array<double, 2> invert_vndf(const RglFile& file, double phi_o, double theta_o, double ux, double uy) {
-  const RglField& vndf = file.at("vndf");
-  const std::size_t p = vndf.shape[0], t = vndf.shape[1], ny = vndf.shape[2], nx = vndf.shape[3];
+// The slices of a field around the parameters (phi_o, theta_o), each ny x nx (x fastest), blended linearly as both
+// readers blend them. `normalize`: each slice is first divided by its integral over the square (trapezoids in grid
+// units, a cell 1 x 1), and its row and marginal CDFs are kept, for the warp; otherwise the raw values.
+struct Blended {
+  std::size_t nx = 0, ny = 0;
+  std::vector<double> data, rows, marginal;
+
+  double bilinear_at(double ux, double uy) const { return bilinear(data.data(), nx, ny, ux, uy); }
+  // The density on the unit square (normalized slices only).
+  double density(double ux, double uy) const { return static_cast<double>((nx - 1) * (ny - 1)) * bilinear_at(ux, uy); }
+  double row_total(std::size_t y) const { return rows[y * nx + nx - 1]; }
+  // The warp's inverse at u: the xi it comes from, and the density there.
+  std::pair<std::array<double, 2>, double> invert(double ux, double uy) const {
+    const double px = std::clamp(ux, 0.0, 1.0) * static_cast<double>(nx - 1);
+    const double py = std::clamp(uy, 0.0, 1.0) * static_cast<double>(ny - 1);
+    const std::size_t x = std::min(static_cast<std::size_t>(px), nx - 2),
+                      y = std::min(static_cast<std::size_t>(py), ny - 2);
+    const double s = px - static_cast<double>(x), r = py - static_cast<double>(y);
+    const std::size_t i0 = y * nx + x, i1 = i0 + nx;
+    const double c0 = (1 - r) * data[i0] + r * data[i1], c1 = (1 - r) * data[i0 + 1] + r * data[i1 + 1];
+    // Within the cell the density in x runs linearly from c0 to c1: its integral up to s is s (c0 + s (c1 - c0) / 2).
+    double xi_x = s * (c0 + 0.5 * s * (c1 - c0)) + (1 - r) * rows[i0] + r * rows[i1];
+    const double row0 = row_total(y), row1 = row_total(y + 1);
+    xi_x /= (1 - r) * row0 + r * row1;
+    const double xi_y = r * (row0 + 0.5 * r * (row1 - row0)) + marginal[y];
+    return {{xi_x, xi_y}, density(ux, uy)};
+  }
+  // The warp: xi to u, through the marginal in y and then the conditional in x, each inverted within its cell.
+  std::pair<std::array<double, 2>, double> sample(double xi_x, double xi_y) const {
+    // t in [0, 1] with start + t (a + t (b - a) / 2) = target: the integral of a density linear from a to b.
+    const auto within = [](double start, double a, double b, double target) {
+      const double c = start - target, half = 0.5 * (b - a);
+      const double root = std::sqrt(std::max(a * a - 4.0 * half * c, 0.0));
+      return a + root > 0.0 ? std::clamp(-2.0 * c / (a + root), 0.0, 1.0) : 0.0;
+    };
+    std::size_t y = 0;
+    while (y + 2 < ny && marginal[y + 1] <= xi_y) ++y;
+    const double r = within(marginal[y], row_total(y), row_total(y + 1), xi_y);
+    const double target = xi_x * ((1 - r) * row_total(y) + r * row_total(y + 1));
+    const auto conditional = [&](std::size_t x) { return (1 - r) * rows[y * nx + x] + r * rows[(y + 1) * nx + x]; };
+    std::size_t x = 0;
+    while (x + 2 < nx && conditional(x + 1) <= target) ++x;
+    const double c0 = (1 - r) * data[y * nx + x] + r * data[(y + 1) * nx + x];
+    const double c1 = (1 - r) * data[y * nx + x + 1] + r * data[(y + 1) * nx + x + 1];
+    const double s = within(conditional(x), c0, c1, target);
+    const double ux = (static_cast<double>(x) + s) / static_cast<double>(nx - 1),
+                 uy = (static_cast<double>(y) + r) / static_cast<double>(ny - 1);
+    return {{ux, uy}, density(ux, uy)};
+  }
+};
+
+// A field of shape [phi, theta, ny, nx] blended at (phi_o, theta_o), each slice normalized first.
+Blended blend(const RglFile& file, const std::string& name, double phi_o, double theta_o) {
+  const RglField& field = file.at(name);
+  const std::size_t p = field.shape[0], t = field.shape[1];
+  Blended b;
+  b.ny = field.shape[2];
+  b.nx = field.shape[3];
+  const std::size_t plane = b.nx * b.ny;
+  b.data.assign(plane, 0.0);
+  b.rows.assign(plane, 0.0);
+  b.marginal.assign(b.ny, 0.0);
   const auto [pi, pw] = bracket(file.at("phi_i").floats, phi_o);
   const auto [ti, tw] = bracket(file.at("theta_i").floats, theta_o);
-  // Per neighbouring slice: its normalized data, row CDFs and marginal; then the weighted sums.
-  std::vector<double> data(nx * ny, 0.0), rows(nx * ny, 0.0), marginal(ny, 0.0);
   for (int a = 0; a < 2; ++a) {
-    for (int b = 0; b < 2; ++b) {
-      const double w = (a ? pw : 1 - pw) * (b ? tw : 1 - tw);
-      const std::size_t ps = std::min(pi + a, p - 1), ts = std::min(ti + b, t - 1);
+    for (int c = 0; c < 2; ++c) {
+      const double w = (a ? pw : 1 - pw) * (c ? tw : 1 - tw);
       if (w == 0.0) continue;
-      const float* d = vndf.floats.data() + (ps * t + ts) * nx * ny;
-      std::vector<double> c(nx * ny, 0.0), m(ny, 0.0);
-      for (std::size_t y = 0; y < ny; ++y) {
-        for (std::size_t x = 1; x < nx; ++x) {
-          c[y * nx + x] = c[y * nx + x - 1] + 0.5 * (static_cast<double>(d[y * nx + x - 1]) + d[y * nx + x]);
+      const std::size_t ps = std::min(pi + a, p - 1), ts = std::min(ti + c, t - 1);
+      const float* d = field.floats.data() + (ps * t + ts) * plane;
+      std::vector<double> cdf(plane, 0.0), m(b.ny, 0.0);
+      for (std::size_t y = 0; y < b.ny; ++y) {
+        for (std::size_t x = 1; x < b.nx; ++x) {
+          cdf[y * b.nx + x] =
+              cdf[y * b.nx + x - 1] + 0.5 * (static_cast<double>(d[y * b.nx + x - 1]) + d[y * b.nx + x]);
         }
       }
-      for (std::size_t y = 1; y < ny; ++y) m[y] = m[y - 1] + 0.5 * (c[y * nx - 1] + c[(y + 1) * nx - 1]);
-      const double total = m[ny - 1];
-      for (std::size_t i = 0; i < nx * ny; ++i) {
-        data[i] += w * d[i] / total;
-        rows[i] += w * c[i] / total;
+      for (std::size_t y = 1; y < b.ny; ++y) m[y] = m[y - 1] + 0.5 * (cdf[y * b.nx - 1] + cdf[(y + 1) * b.nx - 1]);
+      const double total = m[b.ny - 1];
+      for (std::size_t i = 0; i < plane; ++i) {
+        b.data[i] += w * d[i] / total;
+        b.rows[i] += w * cdf[i] / total;
       }
-      for (std::size_t y = 0; y < ny; ++y) marginal[y] += w * m[y] / total;
+      for (std::size_t y = 0; y < b.ny; ++y) b.marginal[y] += w * m[y] / total;
     }
   }
-  const double px = std::clamp(ux, 0.0, 1.0) * static_cast<double>(nx - 1);
-  const double py = std::clamp(uy, 0.0, 1.0) * static_cast<double>(ny - 1);
-  const std::size_t x = std::min(static_cast<std::size_t>(px), nx - 2),
-                    y = std::min(static_cast<std::size_t>(py), ny - 2);
-  const double s = px - static_cast<double>(x), r = py - static_cast<double>(y);
-  const std::size_t i0 = y * nx + x, i1 = i0 + nx;
-  const double c0 = (1 - r) * data[i0] + r * data[i1], c1 = (1 - r) * data[i0 + 1] + r * data[i1 + 1];
-  // Within the cell the density in x runs linearly from c0 to c1: its integral up to s is s (c0 + s (c1 - c0) / 2).
-  double xi_x = s * (c0 + 0.5 * s * (c1 - c0)) + (1 - r) * rows[i0] + r * rows[i1];
-  const double row0 = rows[(y + 1) * nx - 1], row1 = rows[(y + 2) * nx - 1];
-  xi_x /= (1 - r) * row0 + r * row1;
-  const double xi_y = r * (row0 + 0.5 * r * (row1 - row0)) + marginal[y];
-  return {xi_x, xi_y};
+  return b;
 }
+
+// A raw field of shape [phi, theta, k, ny, nx] at (phi_o, theta_o), the k-parameter and xi: the blend of the
+// neighbouring slices' bilinear values.
+double value_at(const RglFile& file, const std::string& name, double phi_o, double theta_o,
+                const std::vector<float>& k_nodes, double k_value, const std::array<double, 2>& xi) {
+  const RglField& field = file.at(name);
+  const std::size_t p = field.shape[0], t = field.shape[1], k = field.shape[2], ny = field.shape[3],
+                    nx = field.shape[4];
+  const auto [pi, pw] = bracket(file.at("phi_i").floats, phi_o);
+  const auto [ti, tw] = bracket(file.at("theta_i").floats, theta_o);
+  const auto [ki, kw] = bracket(k_nodes, k_value);
+  double value = 0.0;
+  for (int a = 0; a < 2; ++a) {
+    for (int c = 0; c < 2; ++c) {
+      for (int e = 0; e < 2; ++e) {
+        const double w = (a ? pw : 1 - pw) * (c ? tw : 1 - tw) * (e ? kw : 1 - kw);
+        if (w == 0.0) continue;
+        const std::size_t ps = std::min(pi + a, p - 1), ts = std::min(ti + c, t - 1), ks = std::min(ki + e, k - 1);
+        value += w * bilinear(field.floats.data() + ((ps * t + ts) * k + ks) * nx * ny, nx, ny, xi[0], xi[1]);
+      }
+    }
+  }
+  return value;
+}
+
+double u_theta(double theta) { return std::sqrt(2.0 * theta / kPi); }
+double u_phi(double phi) { return (phi + kPi) / (2.0 * kPi); }
+
+}  // namespace
+
+struct RglCamera::Tables {
+  double theta_o = 0.0, phi_o = 0.0, sigma_o = 0.0;
+  Blended vndf, luminance;
+};
+
+RglCamera::RglCamera(const RglFile& file, const Direction& wo)
+    : file_(file), wo_(wo), tables_(std::make_unique<Tables>()) {
+  tables_->theta_o = std::acos(std::clamp(wo[2], -1.0, 1.0));
+  tables_->phi_o = std::atan2(wo[1], wo[0]);
+  tables_->vndf = blend(file, "vndf", tables_->phi_o, tables_->theta_o);
+  tables_->luminance = blend(file, "luminance", tables_->phi_o, tables_->theta_o);
+  const RglField& sigma = file.at("sigma");
+  tables_->sigma_o =
+      bilinear(sigma.floats.data(), sigma.shape[1], sigma.shape[0], u_theta(tables_->theta_o), u_phi(tables_->phi_o));
+}
+
+RglCamera::~RglCamera() = default;
+
+namespace {
+
+// What every reading of a pair needs: the half vector's point u_m on the square, its xi and the VNDF density there,
+// and D~(u_m) / (4 sigma~(u_o)).
+struct Lookup {
+  std::array<double, 2> u_m{}, xi{};
+  double vndf_pdf = 0.0, jacobian_factor = 0.0, sin_theta_m = 0.0, wo_dot_m = 0.0;
+};
 
 }  // namespace
 
@@ -135,52 +237,93 @@ RglFile read_rgl(const std::filesystem::path& path) {
   // The BSDF's fields and their shapes.
   const std::size_t t = file.at("theta_i").floats.size(), p = file.at("phi_i").floats.size();
   const RglField& vndf = file.at("vndf");
-  const RglField& rgb = file.at("rgb");
   const RglField& luminance = file.at("luminance");
+  const bool spectral = file.spectral();
+  const RglField& values = file.at(spectral ? "spectra" : "rgb");
+  const std::size_t channels = spectral ? file.at("wavelengths").floats.size() : 3;
+  if (spectral && file.fields.contains("rgb")) throw std::runtime_error("both rgb and spectra");
   const bool shapes = file.at("ndf").shape.size() == 2 && file.at("sigma").shape.size() == 2 &&
-                      vndf.shape.size() == 4 && vndf.shape[0] == p && vndf.shape[1] == t && rgb.shape.size() == 5 &&
-                      rgb.shape[0] == p && rgb.shape[1] == t && rgb.shape[2] == 3 && luminance.shape.size() == 4 &&
-                      luminance.shape[2] == rgb.shape[3] && luminance.shape[3] == rgb.shape[4] &&
-                      file.at("jacobian").bytes.size() == 1 && file.at("description").dtype == 1;
+                      vndf.shape.size() == 4 && vndf.shape[0] == p && vndf.shape[1] == t && values.shape.size() == 5 &&
+                      values.shape[0] == p && values.shape[1] == t && values.shape[2] == channels &&
+                      luminance.shape.size() == 4 && luminance.shape[0] == p && luminance.shape[1] == t &&
+                      luminance.shape[2] == values.shape[3] && luminance.shape[3] == values.shape[4] &&
+                      file.at("jacobian").bytes.size() == 1 && file.at("description").dtype == 1 && p >= 2 && t >= 2;
   if (!shapes) throw std::runtime_error("misshapen BSDF fields");
   return file;
 }
 
-std::array<double, 3> rgl_brdf(const RglFile& file, const std::array<double, 3>& wo, const std::array<double, 3>& wi) {
-  if (wo[2] <= 0.0 || wi[2] <= 0.0) return {0.0, 0.0, 0.0};
+namespace {
+
+std::optional<Lookup> look_up(const RglFile& file, const Blended& vndf, double phi_o, const Direction& wo,
+                              const Direction& wi, double sigma_o) {
+  if (wo[2] <= 0.0 || wi[2] <= 0.0) return std::nullopt;
   std::array<double, 3> m = {wo[0] + wi[0], wo[1] + wi[1], wo[2] + wi[2]};
   const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+  if (length == 0.0) return std::nullopt;
   for (double& c : m) c /= length;
-  const double theta_o = std::acos(std::clamp(wo[2], -1.0, 1.0)), phi_o = std::atan2(wo[1], wo[0]);
+  Lookup l;
   const double theta_m = std::acos(std::clamp(m[2], -1.0, 1.0)), phi_m = std::atan2(m[1], m[0]);
-  const auto u_theta = [](double theta) { return std::sqrt(2.0 * theta / kPi); };
-  const auto u_phi = [](double phi) { return (phi + kPi) / (2.0 * kPi); };
   double um_y = u_phi(phi_m - phi_o);  // isotropic: the half vector's azimuth from the camera's
   um_y -= std::floor(um_y);
-  const double um_x = u_theta(theta_m);
-  const std::array<double, 2> xi = invert_vndf(file, phi_o, theta_o, um_x, um_y);
+  l.u_m = {u_theta(theta_m), um_y};
+  const auto [xi, pdf] = vndf.invert(l.u_m[0], l.u_m[1]);
+  l.xi = xi;
+  l.vndf_pdf = pdf;
   const RglField& ndf = file.at("ndf");
-  const RglField& sigma = file.at("sigma");
-  const double d = bilinear(ndf.floats.data(), ndf.shape[1], ndf.shape[0], um_x, um_y);
-  const double s = bilinear(sigma.floats.data(), sigma.shape[1], sigma.shape[0], u_theta(theta_o), u_phi(phi_o));
-  const RglField& rgb = file.at("rgb");
-  const std::size_t p = rgb.shape[0], t = rgb.shape[1], n_y = rgb.shape[3], n_x = rgb.shape[4];
-  const auto [pi, pw] = bracket(file.at("phi_i").floats, phi_o);
-  const auto [ti, tw] = bracket(file.at("theta_i").floats, theta_o);
-  std::array<double, 3> f{};
-  for (std::size_t c = 0; c < 3; ++c) {
-    double value = 0.0;
-    for (int a = 0; a < 2; ++a) {
-      for (int b = 0; b < 2; ++b) {
-        const double w = (a ? pw : 1 - pw) * (b ? tw : 1 - tw);
-        if (w == 0.0) continue;
-        const std::size_t ps = std::min(pi + a, p - 1), ts = std::min(ti + b, t - 1);
-        value += w * bilinear(rgb.floats.data() + ((ps * t + ts) * 3 + c) * n_x * n_y, n_x, n_y, xi[0], xi[1]);
-      }
-    }
-    f[c] = std::max(0.0, value) * d / (4.0 * s * wi[2]);
+  l.jacobian_factor = bilinear(ndf.floats.data(), ndf.shape[1], ndf.shape[0], l.u_m[0], l.u_m[1]) / (4.0 * sigma_o);
+  l.sin_theta_m = std::sqrt(m[0] * m[0] + m[1] * m[1]);
+  l.wo_dot_m = wo[0] * m[0] + wo[1] * m[1] + wo[2] * m[2];
+  return l;
+}
+
+// S at xi: the rgb channel, or the spectrum at a wavelength.
+double stored_value(const RglFile& file, double phi_o, double theta_o, const Lookup& l, const RglChannel& channel) {
+  if (file.spectral()) {
+    return value_at(file, "spectra", phi_o, theta_o, file.at("wavelengths").floats, channel.wavelength_nm, l.xi);
   }
-  return f;
+  const std::vector<float> channels = {0.0f, 1.0f, 2.0f};
+  return value_at(file, "rgb", phi_o, theta_o, channels, channel.rgb, l.xi);
+}
+
+}  // namespace
+
+double RglCamera::brdf(const Direction& wi, const RglChannel& channel) const {
+  const std::optional<Lookup> l = look_up(file_, tables_->vndf, tables_->phi_o, wo_, wi, tables_->sigma_o);
+  if (!l) return 0.0;
+  return std::max(0.0, stored_value(file_, tables_->phi_o, tables_->theta_o, *l, channel)) * l->jacobian_factor / wi[2];
+}
+
+double RglCamera::brdf_mitsuba(const Direction& wi, const RglChannel& channel) const {
+  const std::optional<Lookup> l = look_up(file_, tables_->vndf, tables_->phi_o, wo_, wi, tables_->sigma_o);
+  if (!l) return 0.0;
+  const double factor = file_.at("jacobian").bytes.at(0) ? l->jacobian_factor : 1.0;
+  return stored_value(file_, tables_->phi_o, tables_->theta_o, *l, channel) * factor / wi[2];
+}
+
+double RglCamera::pdf(const Direction& wi) const {
+  const std::optional<Lookup> l = look_up(file_, tables_->vndf, tables_->phi_o, wo_, wi, tables_->sigma_o);
+  if (!l) return 0.0;
+  const double luminance = tables_->luminance.density(l->xi[0], l->xi[1]);
+  const double jacobian = 4.0 * l->wo_dot_m * std::max(2.0 * kPi * kPi * l->u_m[0] * l->sin_theta_m, 1e-6);
+  return l->vndf_pdf * luminance / jacobian;
+}
+
+std::optional<RglCamera::Sample> RglCamera::sample(double u1, double u2) const {
+  if (wo_[2] <= 0.0) return std::nullopt;
+  const auto [xi, luminance_pdf] = tables_->luminance.sample(u1, u2);
+  const auto [u_m, vndf_pdf] = tables_->vndf.sample(xi[0], xi[1]);
+  const double theta_m = 0.5 * kPi * u_m[0] * u_m[0], phi_m = 2.0 * kPi * u_m[1] - kPi + tables_->phi_o;
+  const Direction m = {std::sin(theta_m) * std::cos(phi_m), std::sin(theta_m) * std::sin(phi_m), std::cos(theta_m)};
+  const double dot = wo_[0] * m[0] + wo_[1] * m[1] + wo_[2] * m[2];
+  const Direction wi = {2.0 * dot * m[0] - wo_[0], 2.0 * dot * m[1] - wo_[1], 2.0 * dot * m[2] - wo_[2]};
+  if (wi[2] <= 0.0) return std::nullopt;
+  const double jacobian = 4.0 * dot * std::max(2.0 * kPi * kPi * u_m[0] * std::sin(theta_m), 1e-6);
+  return Sample{wi, vndf_pdf * luminance_pdf / jacobian};
+}
+
+std::array<double, 3> rgl_brdf_rgb(const RglFile& file, const Direction& wo, const Direction& wi) {
+  const RglCamera camera(file, wo);
+  return {camera.brdf(wi, {0}), camera.brdf(wi, {1}), camera.brdf(wi, {2})};
 }
 
 }  // namespace skinlayer::test
