@@ -88,7 +88,8 @@ bool export_button(const char* label, bool busy, const char* tooltip) {
 
 // Target and path on one line, then the Save and Export buttons with the last export's outcome (or the running
 // export's progress) beside them.
-bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool& export_bsdf, bool& export_merl) {
+bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool& export_bsdf, bool& export_merl,
+                         bool& export_rgl) {
   constexpr std::array<const char*, 3> kTargets = {"window", "sphere", "plots"};
   int target = static_cast<int>(options.target);
   ImGui::SetNextItemWidth(ImGui::CalcTextSize("window").x * 2.2f);
@@ -110,6 +111,12 @@ bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool
                               "The shown material's reflection (surface + subsurface, RGB) as a MERL BRDF table, 35 "
                               "MB,\nfor BRDF viewers and fitting tools; to the path above with .binary (empty: "
                               "timestamped).");
+  ImGui::SameLine();
+  export_rgl = export_button("Export for pbrt-v4 / Mitsuba 3", busy,
+                             "The shown material's reflection (surface + subsurface) as an RGL measured-BSDF tensor "
+                             "file,\nspectral, for pbrt-v4's and Mitsuba 3's \"measured\" material (9 MB, a skin 34 "
+                             "MB;\nno transmission: Export BSDF keeps it); to the path above with .rgl.bsdf (empty: "
+                             "timestamped).");
   const std::string& line = status.export_progress.empty() ? status.last_export : status.export_progress;
   if (!line.empty()) {
     ImGui::PushTextWrapPos(0.0f);
@@ -196,7 +203,8 @@ PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelSta
   }
   if (ImGui::CollapsingHeader("Screenshot", ImGuiTreeNodeFlags_DefaultOpen)) {
     actions.save_screenshot =
-        screenshot_controls(state.export_options, status, actions.export_bsdf, actions.export_merl);
+        screenshot_controls(state.export_options, status, actions.export_bsdf, actions.export_merl,
+                            actions.export_rgl);
   }
   ImGui::End();
   return actions;

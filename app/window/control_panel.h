@@ -30,6 +30,7 @@ struct PanelActions {
   bool save_screenshot = false;
   bool export_bsdf = false;  // the Export BSDF button (app/window/export_job.h)
   bool export_merl = false;  // the Export MERL button
+  bool export_rgl = false;   // the Export for pbrt-v4 / Mitsuba 3 button
   bool reset_material = false;
   bool pin = false;        // Pin as B: the shown material becomes the A/B comparison's B
   bool unpin = false;      // Unpin B

@@ -4,14 +4,20 @@
 #include <filesystem>
 
 #include "app/export/color_export.h"
+#include "app/export/rgl_channels.h"
+#include "app/material/material_json.h"
 #include "app/material/atomic_file.h"
 #include "app/process/parallel_for.h"
 #include "app/render/png_export.h"
 
 namespace skinlayer {
 
-const char* export_format_name(ExportFormat format) { return format == ExportFormat::Merl ? "MERL" : "SCATFUN"; }
-const char* export_extension(ExportFormat format) { return format == ExportFormat::Merl ? ".binary" : ".bsdf"; }
+const char* export_format_name(ExportFormat format) {
+  return format == ExportFormat::Merl ? "MERL" : format == ExportFormat::Bsdf ? "SCATFUN" : "RGL tensor";
+}
+const char* export_extension(ExportFormat format) {
+  return format == ExportFormat::Merl ? ".binary" : format == ExportFormat::Bsdf ? ".bsdf" : ".rgl.bsdf";
+}
 
 std::string timestamped_export_name(ExportFormat format) {
   return std::filesystem::path(timestamped_png_name()).replace_extension(export_extension(format)).string();
@@ -42,9 +48,17 @@ bool ExportJob::start(ExportFormat format, const ColorTables& tables, std::strin
       };
       SolveOptions options;  // the upside-down solve of a Fourier BSDF
       options.parallel_for = parallel_for_threads;
-      const std::string bytes = format == ExportFormat::Merl
-                                    ? merl_file(tables, progress, parallel_for_threads)
-                                    : scatfun_file(tables, kDefaultScatfunNodes, options, progress);
+      std::string bytes;
+      if (format == ExportFormat::Merl) {
+        bytes = merl_file(tables, progress, parallel_for_threads);
+      } else if (format == ExportFormat::Bsdf) {
+        bytes = scatfun_file(tables, kDefaultScatfunNodes, options, progress);
+      } else {  // a skin's own spectrum needs its wavelengths' tables: solved here, as the command line does
+        const RglChannels channels =
+            tables.material.skin ? rgl_skin_channels(tables.material, options) : rgl_uplifted_channels(tables);
+        bytes = rgl_file(channels, RglOptions{}, "skinlayer " + material_json_text(material_document(tables.material)),
+                         progress);
+      }
       write_file_atomically(path, bytes);
       outcome = "saved " + path + " (" + export_format_name(format) + ", " + std::to_string(bytes.size()) + " bytes)";
     } catch (const std::exception& error) {

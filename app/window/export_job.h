@@ -1,6 +1,7 @@
-// The previewer's file exports that take a while (a MERL table or a Fourier BSDF: 0.5-2 s), on a thread of their own so
-// that the window keeps drawing: one at a time, with its progress for the panel and its outcome when it ends. The
-// thread is joined by the destructor (RAII); a job cannot be cancelled, since it only writes its own file.
+// The previewer's file exports that take a while (a MERL table, a Fourier BSDF or an RGL tensor: 0.5-3 s), on a
+// thread of their own so that the window keeps drawing: one at a time, with its progress for the panel and its
+// outcome when it ends. The thread is joined by the destructor (RAII); a job cannot be cancelled, since it only
+// writes its own file.
 #pragma once
 
 #include <atomic>
@@ -16,9 +17,11 @@ namespace skinlayer {
 enum class ExportFormat {
   Merl,  // the MERL BRDF .binary (app/export/merl_brdf.h)
   Bsdf,  // the tabulated Fourier BSDF .bsdf, SCATFUN (app/export/fourier_bsdf_export.h), at the default nodes
+  Rgl,   // the RGL tensor file .rgl.bsdf in its spectral form, for pbrt-v4 and Mitsuba 3 (app/export/rgl_export.h)
 };
 
-// The format's name in messages ("MERL", "SCATFUN") and its file extension (".binary", ".bsdf").
+// The format's name in messages ("MERL", "SCATFUN", "RGL tensor") and its file extension (".binary", ".bsdf",
+// ".rgl.bsdf": both readers take any name, and it keeps the two .bsdf exports of one screenshot apart).
 const char* export_format_name(ExportFormat format);
 const char* export_extension(ExportFormat format);
 

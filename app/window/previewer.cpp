@@ -127,6 +127,7 @@ class Previewer {
     if (panel.unpin) unpin(edited);
     if (panel.export_bsdf) start_export(ExportFormat::Bsdf);
     if (panel.export_merl) start_export(ExportFormat::Merl);
+    if (panel.export_rgl) start_export(ExportFormat::Rgl);
     if (panel.match_srgb) start_match(edited.material, *panel.match_srgb);
     bool reset = panel.reset_material;
     bool undo = panel.file.undo, redo = panel.file.redo;
@@ -504,6 +505,8 @@ class Previewer {
       start_export(ExportFormat::Merl, argument);
     } else if (verb == "export-bsdf") {
       start_export(ExportFormat::Bsdf, argument);
+    } else if (verb == "export-rgl") {
+      start_export(ExportFormat::Rgl, argument);
     } else if (verb == "layer") {
       // The layers panel's buttons: "layer add", "layer remove I", "layer up I", "layer down I" (I 1-based).
       const std::size_t gap = argument.find(' ');

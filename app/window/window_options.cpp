@@ -62,8 +62,8 @@ std::string window_usage() {
          "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in [0, 1]\n"
          "  --test-actions LIST  for tests: ';'-separated actions run once the first solve is shown (set NAME\n"
          "                       VALUE, undo, redo, drop PATH, save PATH, preset NAME, quit, discard, title,\n"
-         "                       layer add, layer remove|up|down I, export-merl PATH,\n"
-         "                       export-bsdf PATH, lighting env|env-rotate|env-ev|light VALUE, pin, unpin,\n"
+         "                       layer add, layer remove|up|down I, export-merl PATH, export-bsdf PATH,\n"
+         "                       export-rgl PATH, lighting env|env-rotate|env-ev|light VALUE, pin, unpin,\n"
          "                       split FRACTION, skin on|off, match R,G,B; with a skin, set KEY VALUE sets\n"
          "                       a skin slider)\n" +
          cli::lighting_flags_usage() + "\n" + cli::skin_flags_usage(false) + "\n" + cli::material_flags_usage();

@@ -285,6 +285,28 @@ TEST(WindowSmoke, ExportBsdfWritesTheShownMaterial) {
   std::filesystem::remove_all(dir);
 }
 
+// Export for pbrt-v4 / Mitsuba 3 (issue 26) the same way: the shown material's RGL tensor file, spectral, whose
+// description is that material (the file's structure and values are tested in tests/app/export).
+TEST(WindowSmoke, ExportRglWritesTheShownMaterialForPbrtV4AndMitsuba3) {
+  if (!find_in_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::filesystem::path dir = temporary_png("skinlayer-window-rgl").replace_extension("");
+  std::filesystem::create_directories(dir);
+  Scripted exported = run_scripted("set g 0.55;export-rgl " + (dir / "shown.png").string(), dir / "config");
+  ASSERT_EQ(exported.run.exit_code, 0) << exported.run.err;
+  const std::filesystem::path written = dir / "shown.rgl.bsdf";
+  ASSERT_TRUE(std::filesystem::exists(written));
+  EXPECT_NE(exported.run.out.find("saved " + written.string() + " (RGL tensor, " +
+                                  std::to_string(std::filesystem::file_size(written)) + " bytes)"),
+            std::string::npos)
+      << exported.run.out;
+  std::ifstream in(written, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(bytes.compare(0, 12, std::string("tensor_file\0", 12)), 0);
+  EXPECT_NE(bytes.find("\"g\": 0.55"), std::string::npos) << "the description holds the shown material";
+  EXPECT_NE(bytes.find("wavelengths"), std::string::npos) << "the spectral form";
+  std::filesystem::remove_all(dir);
+}
+
 // Under an environment (issue 14) the window waits for the estimate's --samples before the capture, and shows the
 // environment behind the sphere: the furnace's radiance 1 through the default exponential tone map, sRGB(1 - e^-1),
 // 208 of 255, in the view's top right corner (the flat background is 0.02, 38 of 255). With --light off and the
