@@ -37,7 +37,7 @@ std::string export_usage() {
          std::to_string(kMinScatfunNodes) + ", " + std::to_string(kMaxScatfunNodes) + "] (default " +
          std::to_string(kDefaultScatfunNodes) +
          "); lobes narrower\n"
-         "                       than the node spacing, 90/(N-1) degrees, need more\n"
+         "                       than the node spacing, 162/(N-1) degrees at 45 (denser at both ends), need more\n"
          "  --format merl        the MERL BRDF .binary (90 x 90 x 180 half/difference bins, float64, RGB):\n"
          "                       reflection only (surface + subsurface), for BRDF viewers and fitting tools;\n"
          "                       34,992,012 bytes. Bins below the horizon hold -1, as the format's readers expect.\n"

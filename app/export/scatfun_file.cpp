@@ -104,7 +104,12 @@ std::optional<std::string_view> scatfun_metadata(std::string_view bytes) {
 
 std::vector<double> scatfun_node_angles(int nodes) {
   std::vector<double> theta(nodes);
-  for (int j = 0; j < nodes; ++j) theta[j] = j * (std::numbers::pi / 2) / (nodes - 1);
+  constexpr double kEnds = 0.8;  // 0: uniform in theta; 1 would make the end nodes coincide in float
+  for (int j = 0; j < nodes; ++j) {
+    const double t = static_cast<double>(j) / (nodes - 1);
+    theta[j] = (std::numbers::pi / 2) * (t - kEnds * std::sin(2.0 * std::numbers::pi * t) / (2.0 * std::numbers::pi));
+  }
+  theta.back() = std::numbers::pi / 2;  // exactly, for mu = 0
   return theta;
 }
 
