@@ -47,7 +47,7 @@ std::string export_usage() {
          "                       other materials a smooth spectrum per RGB value (Jakob & Hanika 2019, 7\n"
          "                       wavelengths, 9 MB) whose sRGB under D65 is that value. Within 2% of eval at 99%\n"
          "                       of direction pairs up to 80 degrees, and within 5% at all, for every preset\n"
-         "  --rgb                rgl: the rgb form instead, for Mitsuba 3's RGB variants (6 MB)\n"
+         "  --rgb                rgl: the rgb form instead, for Mitsuba 3's RGB variants (5 MB)\n"
          "  --resolution N       rgl: sample nodes per side of each slice, a whole number in [" +
          std::to_string(RglOptions::kMinSamples) + ", " + std::to_string(RglOptions::kMaxSamples) +
          "] (default " + std::to_string(RglOptions{}.samples) +
@@ -136,6 +136,7 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   };
   std::string bytes;
   if (rgl) {
+    if (own_spectrum) progress << "export: solving the skin at each of its wavelengths\n" << std::flush;
     const RglChannels channels = own_spectrum   ? rgl_skin_channels(material, options)
                                  : spectral_rgl ? rgl_uplifted_channels(tables)
                                                 : rgl_rgb_channels(tables);

@@ -17,7 +17,7 @@ namespace skinlayer {
 // written (read linearly between these), so its colour is the RGB value's.
 inline constexpr std::array<double, 7> kUpliftWavelengths = {380.0, 440.0, 500.0, 560.0, 620.0, 680.0, 740.0};
 
-// The rgb form of solved tables.
+// The rgb form of solved tables. The channels read `tables`, which must outlive them (as in the next function).
 RglChannels rgl_rgb_channels(const ColorTables& tables);
 
 // The spectral form of an RGB (or grey) material's solved tables.

@@ -196,6 +196,11 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
       "default 64 nodes per hemisphere, from cold on both cores (solve, upside-down solve, tabulation, encoding; "
       "`BM_ExportBsdf`, target of issue 13: under 2 s and 20 MB): **%.0f ms**, %.2f MB.\n",
       r.ms("BM_ExportBsdf/real_time"), r.counter("BM_ExportBsdf/real_time", "bytes") / 1e6);
+  md << formatted(
+      "\n`skinlayer export --format rgl` of the same material, its spectral form for pbrt-v4 and Mitsuba 3 (the solve "
+      "from cold, then 32 x 64 x 64 nodes, each node's RGB raised to a sigmoid spectrum; `BM_ExportRgl`, target of "
+      "issue 26: under 2 s and 10 MB): **%.0f ms**, %.2f MB.\n",
+      r.ms("BM_ExportRgl/real_time"), r.counter("BM_ExportRgl/real_time", "bytes") / 1e6);
   md << "\n## RGB re-solves at the costliest corners\n\n"
      << "Three albedos on both cores with the cache, as the previewer's worker solves them, after a σ step (so the "
         "interface operators are built anew). Preview: `SolveOptions::preview`, the worker's first answer where the "
