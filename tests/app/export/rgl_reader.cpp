@@ -49,9 +49,9 @@ double bilinear(const T* slice, std::size_t nx, std::size_t ny, double ux, doubl
   return (1 - b) * ((1 - a) * v(x, y) + a * v(x + 1, y)) + b * ((1 - a) * v(x, y + 1) + a * v(x + 1, y + 1));
 }
 
-// The slices of a field around the parameters (phi_o, theta_o), each ny x nx (x fastest), blended linearly as both
-// readers blend them. `normalize`: each slice is first divided by its integral over the square (trapezoids in grid
-// units, a cell 1 x 1), and its row and marginal CDFs are kept, for the warp; otherwise the raw values.
+// The slices of a warp's field (vndf, luminance) around the parameters (phi_o, theta_o), each ny x nx (x fastest),
+// each divided by its integral over the square (trapezoids in grid units, a cell 1 x 1) with its row and marginal
+// CDFs, then blended linearly as both readers blend them.
 struct Blended {
   std::size_t nx = 0, ny = 0;
   std::vector<double> data, rows, marginal;
