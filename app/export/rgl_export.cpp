@@ -122,6 +122,18 @@ std::string rgl_file(const RglChannels& channels, const RglOptions& options, con
   const std::vector<float> vndf_slice = as_floats(placement(nv, sigma));
   const PiecewiseLinear2D warp(as_doubles(vndf_slice), nv, nv);
   const std::size_t plane = static_cast<std::size_t>(n) * n;
+  // The nodes' half vectors and D~ there: the warp is the same for every theta_o slice.
+  std::vector<Vec3> half_vectors(plane);
+  std::vector<double> ndf_at(plane);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const PiecewiseLinear2D::Sample s =
+          warp.sample({static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1)});
+      const std::size_t at = static_cast<std::size_t>(j) * n + i;
+      half_vectors[at] = direction(theta_of_u(s.u[0]), phi_of_u(s.u[1]));
+      ndf_at[at] = ndf_table.at(s.u[0], s.u[1]);
+    }
+  }
   std::vector<float> luminance(thetas * plane), values(static_cast<std::size_t>(thetas) * k_channels * plane);
   std::atomic<int> done = 0;  // slices finished, counted from the parallel-for's threads
   parallel_for_threads(thetas, [&](int k) {
@@ -129,27 +141,22 @@ std::string rgl_file(const RglChannels& channels, const RglOptions& options, con
     const Vec3 wo = direction(theta_o, 0.0);
     const double sigma_o = sigma_table.at(u_of_theta(theta_o), 0.5);
     std::vector<double> node(static_cast<std::size_t>(k_channels));
-    for (int j = 0; j < n; ++j) {
-      for (int i = 0; i < n; ++i) {
-        const PiecewiseLinear2D::Sample s =
-            warp.sample({static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1)});
-        const Vec3 m = direction(theta_of_u(s.u[0]), phi_of_u(s.u[1]));
-        const Vec3 wi = 2.0 * wo.dot(m) * m - wo;
-        std::fill(node.begin(), node.end(), 0.0);
-        if (wi.z() > 0.0) {
-          const double theta_i = std::acos(std::min(wi.z(), 1.0)), phi = -std::atan2(wi.y(), wi.x());
-          channels.brdf(theta_i, theta_o, phi, node);
-          const double scale = wi.z() * 4.0 * sigma_o / ndf_table.at(s.u[0], s.u[1]);
-          for (double& v : node) v *= scale;
-        }
-        const std::size_t at = static_cast<std::size_t>(j) * n + i;
-        double y = 0.0;
-        for (int c = 0; c < k_channels; ++c) {
-          values[(static_cast<std::size_t>(k) * k_channels + c) * plane + at] = static_cast<float>(node[c]);
-          y += channels.luminance_weights[c] * node[c];
-        }
-        luminance[k * plane + at] = static_cast<float>(std::max(y, 0.0));
+    for (std::size_t at = 0; at < plane; ++at) {
+      const Vec3& m = half_vectors[at];
+      const Vec3 wi = 2.0 * wo.dot(m) * m - wo;
+      std::fill(node.begin(), node.end(), 0.0);
+      if (wi.z() > 0.0) {
+        const double theta_i = std::acos(std::min(wi.z(), 1.0)), phi = -std::atan2(wi.y(), wi.x());
+        channels.brdf(theta_i, theta_o, phi, node);
+        const double scale = wi.z() * 4.0 * sigma_o / ndf_at[at];
+        for (double& v : node) v *= scale;
       }
+      double y = 0.0;
+      for (int c = 0; c < k_channels; ++c) {
+        values[(static_cast<std::size_t>(k) * k_channels + c) * plane + at] = static_cast<float>(node[c]);
+        y += channels.luminance_weights[c] * node[c];
+      }
+      luminance[k * plane + at] = static_cast<float>(std::max(y, 0.0));
     }
     if (progress) progress(++done, thetas);
   });
