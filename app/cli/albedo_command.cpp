@@ -1,9 +1,7 @@
 #include "app/cli/albedo_command.h"
 
 #include <algorithm>
-#include <array>
 #include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -17,8 +15,8 @@
 #include "app/cli/theta_list.h"
 #include "app/material/color_channels.h"
 #include "app/process/parallel_for.h"
+#include "app/solution/document_albedo.h"
 #include "core/conventions.h"
-#include "core/solve/solve_cache.h"
 #include "core/solver.h"
 
 namespace skinlayer::cli {
@@ -113,42 +111,12 @@ int run_albedo_command(std::span<const std::string_view> arguments, std::ostream
 
   std::vector<double> thetas_radians;
   for (const double theta : thetas_degrees) thetas_radians.push_back(degrees_to_radians(theta));
-  const auto check_rows = [&thetas_degrees](const std::vector<DirectionalAlbedo>& albedos) {
-    if (albedos.size() != thetas_degrees.size()) {
-      throw std::runtime_error("the solver returned " + std::to_string(albedos.size()) + " albedo rows for " +
-                               std::to_string(thetas_degrees.size()) + " angles");
-    }
-  };
-
-  NumericTable table = [&] {
-    if (document.grey()) {
-      const Material material = single_channel(document);
-      const std::vector<DirectionalAlbedo> albedos = directional_albedo(material, thetas_radians);
-      check_rows(albedos);
-      return albedo_table(material, thetas_degrees, {&albedos});
-    }
-    const ColorChannels channels = color_channels(document);
-    SolveOptions options;
-    options.parallel_for = parallel_for_threads;
-    std::vector<std::vector<DirectionalAlbedo>> solved;
-    if (document.skin) {  // one stack per wavelength, the interfaces cached
-      SolveCache cache;
-      options.cache = &cache;
-      for (const Material& material : channels.materials) {
-        solved.push_back(directional_albedo(material, thetas_radians, options));
-      }
-    } else {  // the distinct channels in one solve, sharing every albedo-independent step
-      solved = directional_albedo(channels.materials, thetas_radians, options);
-    }
-    for (const std::vector<DirectionalAlbedo>& rows : solved) check_rows(rows);
-    std::array<std::vector<DirectionalAlbedo>, 3> rgb;
-    std::vector<DirectionalAlbedo> at_angle(solved.size());
-    for (std::size_t a = 0; a < thetas_radians.size(); ++a) {
-      for (std::size_t k = 0; k < solved.size(); ++k) at_angle[k] = solved[k][a];
-      for (int c = 0; c < 3; ++c) rgb[c].push_back(mixed_albedo(at_angle, channels.to_rgb.row(c)));
-    }
-    return albedo_table(channels.materials.front(), thetas_degrees, {&rgb[0], &rgb[1], &rgb[2]});
-  }();
+  const std::vector<std::vector<DirectionalAlbedo>> channels =
+      document_albedo(document, thetas_radians, parallel_for_threads);
+  std::vector<const std::vector<DirectionalAlbedo>*> rows;
+  for (const std::vector<DirectionalAlbedo>& channel : channels) rows.push_back(&channel);
+  const Material& material = document.grey() ? document.layer : color_channels(document).materials.front();
+  NumericTable table = albedo_table(material, thetas_degrees, rows);
   table.require_finite();
   table.write_csv(out);
   return kExitSuccess;

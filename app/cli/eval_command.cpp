@@ -1,6 +1,5 @@
 #include "app/cli/eval_command.h"
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -13,11 +12,8 @@
 #include "app/cli/skin_flag.h"
 #include "app/material/color_channels.h"
 #include "app/process/parallel_for.h"
+#include "app/solution/solved_document.h"
 #include "core/conventions.h"
-#include "core/models/subsurface_model.h"
-#include "core/solve/batch_solve.h"
-#include "core/solve/solve_cache.h"
-#include "core/solver.h"
 
 namespace skinlayer::cli {
 
@@ -51,65 +47,27 @@ std::string eval_usage() {
 
 namespace {
 
-// Each solve's tables (an RGB document's distinct channels, a skin's wavelengths), through one cache, so the
-// interface operators are built once.
-std::vector<LayerTables> solve_channels(const ColorChannels& channels, SubsurfaceModel model) {
-  SolveCache cache;
-  SolveOptions options;
-  options.cache = &cache;
-  options.parallel_for = parallel_for_threads;
-  if (model == SubsurfaceModel::Stam) return solve_batch(channels.materials, options);  // whole solves side by side
-  std::vector<LayerTables> tables;
-  for (const Material& material : channels.materials) tables.push_back(solve_model(material, model, options));
-  return tables;
-}
-
-// A colour material (RGB, or a skin's spectrum): the surface term, grey, then the subsurface BRDF, the BRDF and the
-// BTDF per channel, each the channels' weighted sum of the solves (color_channels.h).
-void write_rgb_rows(const MaterialDocument& document, SubsurfaceModel model, std::istream& in, std::ostream& out) {
-  const ColorChannels channels = color_channels(document);
-  const std::vector<LayerTables> solved = solve_channels(channels, model);
+// One row per direction pair: the grey columns, or for a colour material (RGB, or a skin's spectrum) the surface
+// term, grey, then the subsurface BRDF, the BRDF and the BTDF per channel (app/solution/solved_document.h).
+void write_rows(const SolvedDocument& solved, std::istream& in, std::ostream& out) {
   const std::vector<AngleRow> rows = read_angle_rows(in);
   std::vector<std::string> columns = {"brdf_surface"};
   for (const char* quantity : {"brdf_subsurface", "brdf", "btdf"}) {
-    const std::vector<std::string> names = channel_columns(quantity);
+    const std::vector<std::string> names = solved.grey ? std::vector<std::string>{quantity} : channel_columns(quantity);
     columns.insert(columns.end(), names.begin(), names.end());
   }
   NumericTable table({"theta_i", "theta_o", "phi"}, columns);
-  const auto count = static_cast<Eigen::Index>(solved.size());
-  Eigen::VectorXd subsurface_k(count), btdf_k(count);
   for (const AngleRow& row : rows) {
-    const double theta_i = degrees_to_radians(row.theta_i);
-    const double theta_o = degrees_to_radians(row.theta_o);
-    const double phi = degrees_to_radians(row.phi);
-    const double surface = brdf_surface(channels.materials.front(), theta_i, theta_o, phi);  // no albedo in it
-    for (Eigen::Index k = 0; k < count; ++k) {
-      const LayerTables& tables = solved[static_cast<std::size_t>(k)];
-      subsurface_k(k) = tables.brdf_subsurface(theta_i, theta_o, phi);
-      btdf_k(k) = tables.btdf(theta_i, theta_o, phi);
+    const BsdfPoint point = evaluate(solved, degrees_to_radians(row.theta_i), degrees_to_radians(row.theta_o),
+                                     degrees_to_radians(row.phi));
+    if (solved.grey) {
+      table.add_row({row.theta_i, row.theta_o, row.phi, point.surface, point.subsurface[0],
+                     point.surface + point.subsurface[0], point.btdf[0]});
+      continue;
     }
-    const Eigen::Vector3d subsurface = channels.to_rgb * subsurface_k, btdf = channels.to_rgb * btdf_k;
-    table.add_row({row.theta_i, row.theta_o, row.phi, surface, subsurface[0], subsurface[1], subsurface[2],
-                   surface + subsurface[0], surface + subsurface[1], surface + subsurface[2], btdf[0], btdf[1],
-                   btdf[2]});
-  }
-  table.require_finite();
-  table.write_csv(out);
-}
-
-// A grey material: one solve, one column per quantity.
-void write_grey_rows(const Material& material, SubsurfaceModel model, std::istream& in, std::ostream& out) {
-  const LayerTables tables = solve_model(material, model);
-  const std::vector<AngleRow> rows = read_angle_rows(in);
-  NumericTable table({"theta_i", "theta_o", "phi"}, {"brdf_surface", "brdf_subsurface", "brdf", "btdf"});
-  for (const AngleRow& row : rows) {
-    const double theta_i = degrees_to_radians(row.theta_i);
-    const double theta_o = degrees_to_radians(row.theta_o);
-    const double phi = degrees_to_radians(row.phi);
-    const double surface = brdf_surface(material, theta_i, theta_o, phi);
-    const double subsurface = tables.brdf_subsurface(theta_i, theta_o, phi);
-    table.add_row({row.theta_i, row.theta_o, row.phi, surface, subsurface, surface + subsurface,
-                   tables.btdf(theta_i, theta_o, phi)});
+    const auto& sub = point.subsurface;
+    table.add_row({row.theta_i, row.theta_o, row.phi, point.surface, sub[0], sub[1], sub[2], point.surface + sub[0],
+                   point.surface + sub[1], point.surface + sub[2], point.btdf[0], point.btdf[1], point.btdf[2]});
   }
   table.require_finite();
   table.write_csv(out);
@@ -125,11 +83,7 @@ int run_eval_command(std::span<const std::string_view> arguments, std::istream& 
     document = document_at_wavelength(document, *wavelength);
   }
   const SubsurfaceModel model = model_from_flags(flags, document.model);
-  if (document.grey()) {
-    write_grey_rows(single_channel(document), model, in, out);
-  } else {
-    write_rgb_rows(document, model, in, out);
-  }
+  write_rows(solve_document(document, model, parallel_for_threads), in, out);
   return kExitSuccess;
 }
 

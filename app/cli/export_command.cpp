@@ -9,17 +9,13 @@
 #include <vector>
 
 #include "app/cli/errors.h"
+#include "app/cli/export_flags.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
-#include "app/cli/numbers.h"
-#include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
-#include "app/export/color_export.h"
-#include "app/export/rgl_channels.h"
-#include "app/export/rgl_export.h"
+#include "app/export/material_export.h"
 #include "app/material/atomic_file.h"
-#include "app/material/material_json.h"
 #include "app/process/parallel_for.h"
 #include "app/render/material_solve.h"
 
@@ -62,49 +58,11 @@ std::string export_usage() {
          skin_flags_usage() + "\n" + material_flags_usage();
 }
 
-namespace {
-
-int parse_nodes(std::optional<std::string_view> text) {
-  if (!text) return kDefaultScatfunNodes;
-  const std::optional<double> value = parse_number(*text);
-  if (!value || *value != std::floor(*value) || *value < kMinScatfunNodes || *value > kMaxScatfunNodes) {
-    throw UsageError("nodes = " + quoted(*text) + " must be a whole number in [" + std::to_string(kMinScatfunNodes) +
-                     ", " + std::to_string(kMaxScatfunNodes) + "] (polar nodes per hemisphere)");
-  }
-  return static_cast<int>(*value);
-}
-
-int parse_resolution(std::optional<std::string_view> text) {
-  if (!text) return RglOptions{}.samples;
-  const std::optional<double> value = parse_number(*text);
-  if (!value || *value != std::floor(*value) || *value < RglOptions::kMinSamples ||
-      *value > RglOptions::kMaxSamples) {
-    throw UsageError("resolution = " + quoted(*text) + " must be a whole number in [" +
-                     std::to_string(RglOptions::kMinSamples) + ", " + std::to_string(RglOptions::kMaxSamples) +
-                     "] (sample nodes per side of an RGL slice)");
-  }
-  return static_cast<int>(*value);
-}
-
-}  // namespace
-
 int run_export_command(std::span<const std::string_view> arguments, std::ostream& out, std::ostream& progress) {
-  const std::vector<std::string_view> known =
-      material_flags_and({kModelFlag, kSkinFlag, kWavelengthFlag, "format", "output", "nodes", "resolution"});
-  const std::string_view switches[] = {"rgb"};
-  const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer export", switches);
-  const std::optional<std::string_view> format = flags.value("format");
-  if (!format) throw UsageError("export needs --format bsdf, merl or rgl (the format to write)");
-  if (*format != "merl" && *format != "bsdf" && *format != "rgl")
-    throw UsageError("format = " + quoted(*format) + " is not one of: bsdf, merl, rgl");
-  const bool bsdf = *format == "bsdf", rgl = *format == "rgl";
-  if (!rgl && flags.has("rgb")) throw UsageError("--rgb is for --format rgl");
-  if (!rgl && flags.has("resolution")) throw UsageError("--resolution is for --format rgl (--nodes for bsdf)");
-  RglOptions rgl_options;
-  rgl_options.samples = parse_resolution(flags.value("resolution"));
-  const bool spectral_rgl = rgl && !flags.has("rgb");
-  if (!bsdf && flags.has("nodes")) throw UsageError("--nodes is for --format bsdf (a MERL file's bins are fixed)");
-  const int nodes = bsdf ? parse_nodes(flags.value("nodes")) : 0;
+  std::vector<std::string_view> known = material_flags_and({kModelFlag, kSkinFlag, kWavelengthFlag, "output"});
+  known.insert(known.end(), export_flag_names().begin(), export_flag_names().end());
+  const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer export", export_switch_names());
+  ExportSettings settings = export_settings_from_flags(flags);
   const std::optional<std::string_view> output = flags.value("output");
   if (!output || output->empty()) throw UsageError("export needs -o FILE (the file to write)");
   // A missing folder is found before the seconds of work, not after.
@@ -118,13 +76,14 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   }
   ColorMaterial material = color_material(document);
   material.model = model_from_flags(flags, document.model);
+  settings.description = rgl_description(document);
 
   const auto start = std::chrono::steady_clock::now();
   SolveOptions options;
   options.parallel_for = parallel_for_threads;
-  // A skin's spectral file needs its wavelengths' own tables, not their colour mix.
-  const bool own_spectrum = spectral_rgl && material.skin;
-  const ColorTables tables = own_spectrum ? ColorTables{} : solve_color(material, 0.0, options);
+  if (settings.format == TabulatedFormat::RglSpectral && material.skin) {
+    progress << "export: solving the skin at each of its wavelengths\n" << std::flush;
+  }
   // One progress line per tenth of the rows (the rows finish on several threads).
   std::mutex progress_lock;
   int reported = 0;
@@ -134,28 +93,11 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
     reported = done * 10 / total;
     progress << "export: " << done << " of " << total << " " << rows << "\n" << std::flush;
   };
-  std::string bytes;
-  if (rgl) {
-    if (own_spectrum) progress << "export: solving the skin at each of its wavelengths\n" << std::flush;
-    const RglChannels channels = own_spectrum   ? rgl_skin_channels(material, options)
-                                 : spectral_rgl ? rgl_uplifted_channels(tables)
-                                                : rgl_rgb_channels(tables);
-    bytes = rgl_file(channels, rgl_options, "skinlayer " + material_json_text(document),
-                     [&](int done, int total) { report(done, total, "theta_o slices"); });
-  } else if (bsdf) {
-    bytes = scatfun_file(tables, nodes, options, [&](int done, int total) { report(done, total, "polar rows"); });
-  } else {
-    bytes = merl_file(
-        tables, [&](int done, int total) { report(done, total, "theta_h rows"); }, parallel_for_threads);
-  }
+  const std::string bytes = export_bytes(material, settings, options, report);
   write_file_atomically(std::string(*output), bytes);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  out << "wrote " << *output << " ("
-      << (spectral_rgl ? "RGL tensor, spectral"
-          : rgl        ? "RGL tensor, rgb"
-          : bsdf       ? "SCATFUN"
-                       : "MERL")
-      << ", " << bytes.size() << " bytes, " << std::round(seconds * 10.0) / 10.0 << " s)\n";
+  out << "wrote " << *output << " (" << tabulated_format_label(settings.format) << ", " << bytes.size() << " bytes, "
+      << std::round(seconds * 10.0) / 10.0 << " s)\n";
   return kExitSuccess;
 }
 

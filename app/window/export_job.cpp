@@ -3,9 +3,7 @@
 #include <exception>
 #include <filesystem>
 
-#include "app/export/color_export.h"
-#include "app/export/rgl_channels.h"
-#include "app/material/material_json.h"
+#include "app/export/material_export.h"
 #include "app/material/atomic_file.h"
 #include "app/process/parallel_for.h"
 #include "app/render/png_export.h"
@@ -42,23 +40,18 @@ bool ExportJob::start(ExportFormat format, const ColorTables& tables, std::strin
   thread_ = std::thread([this, format, tables, path] {
     std::string outcome;
     try {
-      const auto progress = [this](int done, int total) {
+      const auto progress = [this](int done, int total, std::string_view) {
         rows_done_ = done;
         rows_total_ = total;
       };
-      SolveOptions options;  // the upside-down solve of a Fourier BSDF
+      SolveOptions options;  // the upside-down solve of a Fourier BSDF, a skin's wavelengths
       options.parallel_for = parallel_for_threads;
-      std::string bytes;
-      if (format == ExportFormat::Merl) {
-        bytes = merl_file(tables, progress, parallel_for_threads);
-      } else if (format == ExportFormat::Bsdf) {
-        bytes = scatfun_file(tables, kDefaultScatfunNodes, options, progress);
-      } else {  // a skin's own spectrum needs its wavelengths' tables: solved here, as the command line does
-        const RglChannels channels =
-            tables.material.skin ? rgl_skin_channels(tables.material, options) : rgl_uplifted_channels(tables);
-        bytes = rgl_file(channels, RglOptions{}, "skinlayer " + material_json_text(material_document(tables.material)),
-                         progress);
-      }
+      ExportSettings settings;
+      settings.format = format == ExportFormat::Merl   ? TabulatedFormat::Merl
+                        : format == ExportFormat::Bsdf ? TabulatedFormat::Scatfun
+                                                       : TabulatedFormat::RglSpectral;
+      settings.description = rgl_description(material_document(tables.material));
+      const std::string bytes = export_bytes(tables, settings, options, progress);
       write_file_atomically(path, bytes);
       outcome = "saved " + path + " (" + export_format_name(format) + ", " + std::to_string(bytes.size()) + " bytes)";
     } catch (const std::exception& error) {

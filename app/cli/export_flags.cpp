@@ -1,0 +1,63 @@
+#include "app/cli/export_flags.h"
+
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "app/cli/errors.h"
+#include "app/cli/numbers.h"
+#include "app/cli/quoted.h"
+
+namespace skinlayer::cli {
+namespace {
+
+constexpr std::array<std::string_view, 3> kExportFlags = {"format", "nodes", "resolution"};
+constexpr std::array<std::string_view, 1> kExportSwitches = {"rgb"};
+
+int parse_nodes(std::optional<std::string_view> text) {
+  if (!text) return kDefaultScatfunNodes;
+  const std::optional<double> value = parse_number(*text);
+  if (!value || *value != std::floor(*value) || *value < kMinScatfunNodes || *value > kMaxScatfunNodes) {
+    throw UsageError("nodes = " + quoted(*text) + " must be a whole number in [" + std::to_string(kMinScatfunNodes) +
+                     ", " + std::to_string(kMaxScatfunNodes) + "] (polar nodes per hemisphere)");
+  }
+  return static_cast<int>(*value);
+}
+
+int parse_resolution(std::optional<std::string_view> text) {
+  if (!text) return RglOptions{}.samples;
+  const std::optional<double> value = parse_number(*text);
+  if (!value || *value != std::floor(*value) || *value < RglOptions::kMinSamples || *value > RglOptions::kMaxSamples) {
+    throw UsageError("resolution = " + quoted(*text) + " must be a whole number in [" +
+                     std::to_string(RglOptions::kMinSamples) + ", " + std::to_string(RglOptions::kMaxSamples) +
+                     "] (sample nodes per side of an RGL slice)");
+  }
+  return static_cast<int>(*value);
+}
+
+}  // namespace
+
+std::span<const std::string_view> export_flag_names() { return kExportFlags; }
+std::span<const std::string_view> export_switch_names() { return kExportSwitches; }
+
+ExportSettings export_settings_from_flags(const ParsedFlags& flags) {
+  const std::optional<std::string_view> format = flags.value("format");
+  if (!format) throw UsageError("export needs --format bsdf, merl or rgl (the format to write)");
+  if (*format != "merl" && *format != "bsdf" && *format != "rgl")
+    throw UsageError("format = " + quoted(*format) + " is not one of: bsdf, merl, rgl");
+  const bool bsdf = *format == "bsdf", rgl = *format == "rgl";
+  if (!rgl && flags.has("rgb")) throw UsageError("--rgb is for --format rgl");
+  if (!rgl && flags.has("resolution")) throw UsageError("--resolution is for --format rgl (--nodes for bsdf)");
+  ExportSettings settings;
+  settings.rgl.samples = parse_resolution(flags.value("resolution"));
+  if (!bsdf && flags.has("nodes")) throw UsageError("--nodes is for --format bsdf (a MERL file's bins are fixed)");
+  settings.format = bsdf               ? TabulatedFormat::Scatfun
+                    : !rgl             ? TabulatedFormat::Merl
+                    : flags.has("rgb") ? TabulatedFormat::RglRgb
+                                       : TabulatedFormat::RglSpectral;
+  settings.nodes = bsdf ? parse_nodes(flags.value("nodes")) : kDefaultScatfunNodes;
+  return settings;
+}
+
+}  // namespace skinlayer::cli
