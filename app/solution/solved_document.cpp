@@ -37,16 +37,18 @@ BsdfPoint evaluate(const SolvedDocument& solved, double theta_i, double theta_o,
   point.surface = brdf_surface(solved.channels.materials.front(), theta_i, theta_o, phi);
   if (solved.grey) {
     const LayerTables& tables = solved.tables.front();
-    point.subsurface.fill(tables.brdf_subsurface(theta_i, theta_o, phi));
-    point.btdf.fill(tables.btdf(theta_i, theta_o, phi));
+    const LayerTables::Values values = tables.values(theta_i, theta_o, phi);
+    point.subsurface.fill(values.brdf_subsurface);
+    point.btdf.fill(values.btdf);
     return point;
   }
   const auto count = static_cast<Eigen::Index>(solved.tables.size());
   Eigen::VectorXd subsurface_k(count), btdf_k(count);
   for (Eigen::Index k = 0; k < count; ++k) {
     const LayerTables& tables = solved.tables[static_cast<std::size_t>(k)];
-    subsurface_k(k) = tables.brdf_subsurface(theta_i, theta_o, phi);
-    btdf_k(k) = tables.btdf(theta_i, theta_o, phi);
+    const LayerTables::Values values = tables.values(theta_i, theta_o, phi);
+    subsurface_k(k) = values.brdf_subsurface;
+    btdf_k(k) = values.btdf;
   }
   const Eigen::Vector3d subsurface = solved.channels.to_rgb * subsurface_k, btdf = solved.channels.to_rgb * btdf_k;
   for (int c = 0; c < 3; ++c) {

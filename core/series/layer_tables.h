@@ -51,6 +51,17 @@ class LayerTables {
   // The scattered parts alone (the clamped Fourier sums of the coefficients), without unscattered().
   double brdf_scattered(double theta_i, double theta_o, double phi) const;
   double btdf_scattered(double theta_i, double theta_o, double phi) const;
+  // Both at once, sharing the spline taps and cos(m phi): what evaluating many direction pairs calls.
+  struct ScatteredValues {
+    double reflection;    // brdf_scattered  [1/sr]
+    double transmission;  // btdf_scattered  [1/sr]
+  };
+  ScatteredValues scattered(double theta_i, double theta_o, double phi) const;
+  struct Values {
+    double brdf_subsurface;  // [1/sr]
+    double btdf;             // [1/sr]
+  };
+  Values values(double theta_i, double theta_o, double phi) const;
 
   // The same tables on a grid `factor` times finer (the unscattered part is carried unchanged), K' = factor (K - 1) + 1
   // points on the same map: every value is this table's spline at the finer grid angle, so a bilinear lookup of the
@@ -62,8 +73,12 @@ class LayerTables {
   double transmission_mode(int m, double theta_i, double theta_o) const;
 
  private:
+  struct Stencil;
+  Stencil stencil(double theta_i, double theta_o) const;
+  double interpolate(std::span<const double> table, int m, const Stencil& taps) const;
   double interpolate(std::span<const double> table, int m, double theta_i, double theta_o) const;
-  double sum_modes(std::span<const double> table, double theta_i, double theta_o, double phi) const;
+  ScatteredValues sum_modes(double theta_i, double theta_o, double phi, bool with_reflection,
+                            bool with_transmission) const;
 
   int grid_size_ = 0;
   int modes_ = 0;
