@@ -1,0 +1,78 @@
+#include "app/solution/pair_evaluation.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/conventions.h"
+#include "core/material.h"
+#include "core/solve/solve_options.h"
+
+namespace skinlayer {
+namespace {
+
+constexpr std::size_t kBlock = 4096;  // pairs per parallel-for index: a few ms of work, enough to hide its cost
+
+std::string entry(const char* name, std::size_t index, double value) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%s[%zu] = %.17g", name, index, value);
+  return text;
+}
+
+}  // namespace
+
+int value_channels(const SolvedDocument& solved) { return solved.grey ? 1 : 3; }
+
+void check_direction_pairs(std::span<const double> theta_i, std::span<const double> theta_o,
+                           std::span<const double> phi) {
+  if (theta_o.size() != theta_i.size() || phi.size() != theta_i.size()) {
+    throw ParameterError("theta_i, theta_o and phi must have the same length (" + std::to_string(theta_i.size()) +
+                         ", " + std::to_string(theta_o.size()) + ", " + std::to_string(phi.size()) + ")");
+  }
+  for (std::size_t k = 0; k < theta_i.size(); ++k) {
+    for (const auto& [name, values] : {std::pair{"theta_i", theta_i}, std::pair{"theta_o", theta_o}}) {
+      if (!(values[k] >= 0.0 && values[k] <= 90.0)) {
+        throw ParameterError(entry(name, k, values[k]) + " is out of range; valid range is [0, 90] (degrees)");
+      }
+    }
+    if (!std::isfinite(phi[k])) {
+      throw ParameterError(entry("phi", k, phi[k]) + " is not finite; phi may be any finite number (degrees)");
+    }
+  }
+}
+
+void evaluate_pairs(const SolvedDocument& solved, std::span<const double> theta_i, std::span<const double> theta_o,
+                    std::span<const double> phi, const BsdfArrays& out, const ParallelFor& parallel_for,
+                    const std::function<bool()>& cancelled) {
+  check_direction_pairs(theta_i, theta_o, phi);
+  const std::size_t count = theta_i.size();
+  const auto channels = static_cast<std::size_t>(value_channels(solved));
+  if (out.surface.size() != count || out.subsurface.size() != count * channels || out.brdf.size() != count * channels ||
+      out.btdf.size() != count * channels) {
+    throw std::invalid_argument("evaluate_pairs: the output arrays do not fit the pairs");
+  }
+  std::atomic<bool> stopped = false;
+  const auto blocks = static_cast<int>((count + kBlock - 1) / kBlock);
+  run_parallel(parallel_for, blocks, [&](int block) {
+    if (stopped.load() || (cancelled && cancelled())) {
+      stopped = true;
+      return;
+    }
+    const std::size_t begin = static_cast<std::size_t>(block) * kBlock, end = std::min(count, begin + kBlock);
+    for (std::size_t k = begin; k < end; ++k) {
+      const BsdfPoint point =
+          evaluate(solved, degrees_to_radians(theta_i[k]), degrees_to_radians(theta_o[k]), degrees_to_radians(phi[k]));
+      out.surface[k] = point.surface;
+      for (std::size_t c = 0; c < channels; ++c) {
+        out.subsurface[k * channels + c] = point.subsurface[c];
+        out.brdf[k * channels + c] = point.surface + point.subsurface[c];
+        out.btdf[k * channels + c] = point.btdf[c];
+      }
+    }
+  });
+  if (stopped.load()) throw SolveCancelled();
+}
+
+}  // namespace skinlayer
