@@ -18,6 +18,7 @@ readonly packages=(
   libeigen3-dev libglm-dev libglfw3-dev libosmesa6-dev libimgui-dev libstb-dev
   nlohmann-json3-dev libpng-dev
   libgtest-dev libbenchmark-dev xvfb xauth fonts-dejavu-core python3-jsonschema
+  pybind11-dev python3-dev python3-numpy python3-pytest
 )
 readonly build_dir=build
 readonly sanitize_dir=build-sanitize

@@ -18,6 +18,16 @@ pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 
+# The Python package (app/python) and its tests: pybind11 (pybind11-dev), numpy and pytest (python3-numpy,
+# python3-pytest). The interpreter is Debian's /usr/bin/python3 unless Python3_EXECUTABLE says otherwise: setup.sh
+# installs numpy and pytest for that one, and a python3 earlier on PATH (pyenv, a virtual environment) may have
+# neither.
+if(NOT DEFINED Python3_EXECUTABLE AND EXISTS /usr/bin/python3)
+  set(Python3_EXECUTABLE /usr/bin/python3 CACHE FILEPATH "The Python interpreter of the skinlayer package")
+endif()
+find_package(Python3 3.9 REQUIRED COMPONENTS Interpreter Development.Module)
+find_package(pybind11 2.10 REQUIRED CONFIG)
+
 # Dear ImGui's GLFW and OpenGL3 backends, compiled from the sources that libimgui-dev ships (the prebuilt ones in
 # libimgui.a cannot load GL under OSMesa). They call gl* directly through <GL/glcorearb.h> prototypes and link no
 # GL library, so the executable decides: libGL for the window.
