@@ -6,8 +6,8 @@
 #                      says so and points to the headless `skinlayer render`)
 #   ./setup.sh test    install, configure, build everything and run every test; then build core, the command line's
 #                      GL-free parsers and their tests again under AddressSanitizer + UndefinedBehaviorSanitizer
-#                      (build-sanitize/: SKINLAYER_SANITIZE=ON, SKINLAYER_BUILD_APP=OFF) and run those tests too,
-#                      where any sanitizer report fails the test
+#                      (build-sanitize/: SKINLAYER_SANITIZE=ON, SKINLAYER_BUILD_APP=OFF) and run those tests too
+#                      but the five slowest (sanitize_skipped), where any sanitizer report fails the test
 #
 # Idempotent: apt is skipped when every package is already installed, and an existing build folder is reused.
 set -euo pipefail
@@ -58,6 +58,12 @@ configure() {
   fi
 }
 
+# Left out of the sanitized run (they pass in the plain run before it): the five slowest convergence checks, 2-4
+# minutes each under the sanitizers, whose code paths the faster tests already take (energy of the eigen-solution,
+# the unscattered lobes, the skin fit, the sharp-interface point accuracy, the interface albedo's quadrature).
+# Without them the whole of `./setup.sh test` stays inside CI's 45 minutes on 2 cores.
+readonly sanitize_skipped='^(SolverEnergy\.ConservativeHalfSpaceWithoutInterfaceAtExtremeAsymmetry.*|UnscatteredLight\.PublishedValuesAtTheSharpLobes|MeasuredSkin\.TheNistSpectraAreFitWithinTheTargets|PointAccuracy\.SharpInterfacesAreWithinOnePercentAtEveryJudgedPoint|InterfaceAlbedo\.WithinOneInAMillionOfAnAdaptiveIntegration)$'
+
 # The second build of `test`: core and the GL-free parsers with their tests, under ASan + UBSan.
 sanitize_test() {
   local options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINLAYER_SANITIZE=ON -DSKINLAYER_BUILD_APP=OFF
@@ -69,7 +75,7 @@ sanitize_test() {
   fi
   # The build runs the test executables too (gtest_discover_tests lists their tests), so it gets the options.
   env "${sanitizer_env[@]}" cmake --build "$sanitize_dir" -j2
-  env "${sanitizer_env[@]}" ctest --test-dir "$sanitize_dir" --output-on-failure -j2
+  env "${sanitizer_env[@]}" ctest --test-dir "$sanitize_dir" --output-on-failure -j2 -E "$sanitize_skipped"
 }
 
 install_packages
