@@ -17,6 +17,7 @@
 // which brdf_subsurface() and btdf() add at the requested directions: the coefficients are the scattered light alone.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -63,6 +64,21 @@ class LayerTables {
   };
   Values values(double theta_i, double theta_o, double phi) const;
 
+  // The spline's taps at one direction pair on a grid of grid_size angles: the tensor-product Catmull-Rom as
+  // weights on a 4 x 4 window of contiguous samples (rows start_i.., columns start_o..). Each axis' taps are folded
+  // onto its window: past the normal (cell 0) tap -1 is sample 1 with the mode's parity (-1)^m, so the window's
+  // weights there differ between even and odd modes; past grazing (cell K - 2) tap K is sample K - 2. Found once
+  // per pair, it serves every mode and both tables of every LayerTables of that grid size (a colour's channels).
+  struct Stencil {
+    int grid_size;
+    std::size_t offset;     // start_i K + start_o
+    double weight_i[2][4];  // [m % 2][row]
+    double weight_o[2][4];  // [m % 2][column]
+  };
+  static Stencil stencil(double theta_i, double theta_o, int grid_size);
+  // scattered() with the pair's stencil (of this grid size; std::invalid_argument otherwise).
+  ScatteredValues scattered(const Stencil& stencil, double phi) const;
+
   // The same tables on a grid `factor` times finer (the unscattered part is carried unchanged), K' = factor (K - 1) + 1
   // points on the same map: every value is this table's spline at the finer grid angle, so a bilinear lookup of the
   // result approximates the spline to O((h/factor)^2). Built separably: one 1-D Catmull-Rom pass per axis.
@@ -73,12 +89,9 @@ class LayerTables {
   double transmission_mode(int m, double theta_i, double theta_o) const;
 
  private:
-  struct Stencil;
-  Stencil stencil(double theta_i, double theta_o) const;
   double interpolate(std::span<const double> table, int m, const Stencil& taps) const;
   double interpolate(std::span<const double> table, int m, double theta_i, double theta_o) const;
-  ScatteredValues sum_modes(double theta_i, double theta_o, double phi, bool with_reflection,
-                            bool with_transmission) const;
+  ScatteredValues sum_modes(const Stencil& taps, double phi, bool with_reflection, bool with_transmission) const;
 
   int grid_size_ = 0;
   int modes_ = 0;
