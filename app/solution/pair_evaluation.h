@@ -30,7 +30,8 @@ struct BsdfArrays {
   std::span<double> btdf;        // btdf, without the unscattered beam
 };
 
-// Fills `out` for every pair (checked first). Asks `cancelled` between blocks: when it returns true the remaining
+// Fills `out` for every pair (checked first), in the order of the pairs' table cells (for the memory caches; the
+// values do not depend on it). At most 2^32 - 1 pairs at once. Asks `cancelled` between blocks: when it returns true the remaining
 // blocks are skipped and SolveCancelled is thrown.
 void evaluate_pairs(const SolvedDocument& solved, std::span<const double> theta_i, std::span<const double> theta_o,
                     std::span<const double> phi, const BsdfArrays& out, const ParallelFor& parallel_for,

@@ -42,18 +42,27 @@ BsdfPoint evaluate(const SolvedDocument& solved, double theta_i, double theta_o,
     point.btdf.fill(values.btdf);
     return point;
   }
-  const auto count = static_cast<Eigen::Index>(solved.tables.size());
-  Eigen::VectorXd subsurface_k(count), btdf_k(count);
-  for (Eigen::Index k = 0; k < count; ++k) {
-    const LayerTables& tables = solved.tables[static_cast<std::size_t>(k)];
-    const LayerTables::Values values = tables.values(theta_i, theta_o, phi);
-    subsurface_k(k) = values.brdf_subsurface;
-    btdf_k(k) = values.btdf;
-  }
-  const Eigen::Vector3d subsurface = solved.channels.to_rgb * subsurface_k, btdf = solved.channels.to_rgb * btdf_k;
-  for (int c = 0; c < 3; ++c) {
-    point.subsurface[c] = subsurface[c];
-    point.btdf[c] = btdf[c];
+  // The channels' tables usually share one grid size and one unscattered light (the interfaces and the depth are
+  // the same, only the albedo differs): the stencil and the unscattered values are found again only where they
+  // change.
+  LayerTables::Stencil taps = LayerTables::stencil(theta_i, theta_o, solved.tables.front().grid_size());
+  const UnscatteredLight* unscattered = nullptr;
+  LayerTables::Values unscattered_values{0.0, 0.0};
+  for (std::size_t k = 0; k < solved.tables.size(); ++k) {
+    const LayerTables& tables = solved.tables[k];
+    if (tables.grid_size() != taps.grid_size) taps = LayerTables::stencil(theta_i, theta_o, tables.grid_size());
+    if (unscattered == nullptr || !(tables.unscattered() == *unscattered)) {
+      unscattered = &tables.unscattered();
+      unscattered_values = {unscattered->brdf(theta_i, theta_o, phi), unscattered->btdf(theta_i, theta_o, phi)};
+    }
+    const LayerTables::ScatteredValues scattered = tables.scattered(taps, phi);
+    const double subsurface = scattered.reflection + unscattered_values.brdf_subsurface;
+    const double btdf = scattered.transmission + unscattered_values.btdf;
+    for (int c = 0; c < 3; ++c) {
+      const double weight = solved.channels.to_rgb(c, static_cast<Eigen::Index>(k));
+      point.subsurface[c] += weight * subsurface;
+      point.btdf[c] += weight * btdf;
+    }
   }
   return point;
 }
