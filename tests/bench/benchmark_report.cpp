@@ -201,6 +201,18 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
       "from cold, then 32 x 64 x 64 nodes, each node's RGB raised to a sigmoid spectrum; `BM_ExportRgl`, target of "
       "issue 26: under 2 s and 10 MB): **%.0f ms**, %.2f MB.\n",
       r.ms("BM_ExportRgl/real_time"), r.counter("BM_ExportRgl/real_time", "bytes") / 1e6);
+  md << formatted(
+      "\n## Evaluating many direction pairs\n\n`Solution.eval` of the Python package (and `evaluate_pairs`, which "
+      "it calls) over 10⁶ random direction pairs on both cores, after the solve (`BM_EvalPairs`, target of issue 27: "
+      "under 1 s): an RGB layer over a matched bottom **%.0f ms**; the spectral skin `skin-medium` (%.0f solves "
+      "weighed into RGB) %.0f ms;",
+      r.ms("BM_EvalPairs/1/real_time"), r.counter("BM_EvalPairs/2/real_time", "channels_solved"),
+      r.ms("BM_EvalPairs/2/real_time"));
+  md << formatted(
+      " the grey default, two rough interfaces, %.1f s: there every pair also integrates the light that crosses both "
+      "interfaces unscattered by a slope quadrature (`BM_UnscatteredBtdfTwoInterfaces`: %.0f µs a pair on one "
+      "core).\n",
+      r.ms("BM_EvalPairs/0/real_time") / 1e3, r.ms("BM_UnscatteredBtdfTwoInterfaces") * 1e3);
   md << "\n## RGB re-solves at the costliest corners\n\n"
      << "Three albedos on both cores with the cache, as the previewer's worker solves them, after a σ step (so the "
         "interface operators are built anew). Preview: `SolveOptions::preview`, the worker's first answer where the "
