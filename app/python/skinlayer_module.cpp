@@ -150,7 +150,7 @@ py::list tables(const Solution& solution) {
     const auto size = static_cast<py::ssize_t>(table.grid_size()), modes = static_cast<py::ssize_t>(table.modes());
     std::vector<double> theta;
     for (int i = 0; i < table.grid_size(); ++i)
-      theta.push_back(LayerTables::grid_angle(i, table.grid_size()) * 180.0 / kPi);
+      theta.push_back(radians_to_degrees(LayerTables::grid_angle(i, table.grid_size())));
     const auto coefficients = [&](std::span<const double> data) {
       py::array_t<double> array({modes, size, size});
       std::copy(data.begin(), data.end(), array.mutable_data());
