@@ -88,7 +88,6 @@ std::span<double> span_of(py::array_t<double>& array) {
 // (brdf_surface, brdf_subsurface, brdf, btdf): n values, or n x 3 for a colour material.
 py::tuple eval(const Solution& solution, const InputArray& theta_i, const InputArray& theta_o, const InputArray& phi) {
   const std::span<const double> ti = flat(theta_i, "theta_i"), to = flat(theta_o, "theta_o"), p = flat(phi, "phi");
-  check_direction_pairs(ti, to, p);
   const int channels = value_channels(solution.solved);
   py::array_t<double> surface = values(ti.size(), 1), subsurface = values(ti.size(), channels),
                       brdf = values(ti.size(), channels), btdf = values(ti.size(), channels);

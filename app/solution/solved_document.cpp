@@ -35,29 +35,23 @@ SolvedDocument solve_document(const MaterialDocument& document, SubsurfaceModel 
 BsdfPoint evaluate(const SolvedDocument& solved, double theta_i, double theta_o, double phi) {
   BsdfPoint point;
   point.surface = brdf_surface(solved.channels.materials.front(), theta_i, theta_o, phi);
-  if (solved.grey) {
-    const LayerTables& tables = solved.tables.front();
-    const LayerTables::Values values = tables.values(theta_i, theta_o, phi);
-    point.subsurface.fill(values.brdf_subsurface);
-    point.btdf.fill(values.btdf);
-    return point;
-  }
-  // The channels' tables usually share one grid size and one unscattered light (the interfaces and the depth are
-  // the same, only the albedo differs): the stencil and the unscattered values are found again only where they
-  // change.
+  // A grey document is one table with weight 1 in every channel. A colour's tables usually share one grid size and
+  // one unscattered light (the interfaces and the depth are the same, only the albedo differs): the stencil and the
+  // unscattered values are found again only where they change.
   LayerTables::Stencil taps = LayerTables::stencil(theta_i, theta_o, solved.tables.front().grid_size());
   const UnscatteredLight* unscattered = nullptr;
-  LayerTables::Values unscattered_values{0.0, 0.0};
+  double unscattered_brdf = 0.0, unscattered_btdf = 0.0;
   for (std::size_t k = 0; k < solved.tables.size(); ++k) {
     const LayerTables& tables = solved.tables[k];
     if (tables.grid_size() != taps.grid_size) taps = LayerTables::stencil(theta_i, theta_o, tables.grid_size());
     if (unscattered == nullptr || !(tables.unscattered() == *unscattered)) {
       unscattered = &tables.unscattered();
-      unscattered_values = {unscattered->brdf(theta_i, theta_o, phi), unscattered->btdf(theta_i, theta_o, phi)};
+      unscattered_brdf = unscattered->brdf(theta_i, theta_o, phi);
+      unscattered_btdf = unscattered->btdf(theta_i, theta_o, phi);
     }
     const LayerTables::ScatteredValues scattered = tables.scattered(taps, phi);
-    const double subsurface = scattered.reflection + unscattered_values.brdf_subsurface;
-    const double btdf = scattered.transmission + unscattered_values.btdf;
+    const double subsurface = scattered.reflection + unscattered_brdf;
+    const double btdf = scattered.transmission + unscattered_btdf;
     for (int c = 0; c < 3; ++c) {
       const double weight = solved.channels.to_rgb(c, static_cast<Eigen::Index>(k));
       point.subsurface[c] += weight * subsurface;

@@ -185,19 +185,9 @@ LayerTables::ScatteredValues LayerTables::sum_modes(const Stencil& taps, double 
   return sums;
 }
 
-LayerTables::ScatteredValues LayerTables::scattered(double theta_i, double theta_o, double phi) const {
-  return scattered(stencil(theta_i, theta_o, grid_size_), phi);
-}
-
 LayerTables::ScatteredValues LayerTables::scattered(const Stencil& taps, double phi) const {
   const ScatteredValues sums = sum_modes(taps, phi, true, true);
   return {std::max(0.0, sums.reflection), std::max(0.0, sums.transmission)};
-}
-
-LayerTables::Values LayerTables::values(double theta_i, double theta_o, double phi) const {
-  const ScatteredValues part = scattered(theta_i, theta_o, phi);
-  return {part.reflection + unscattered_.brdf(theta_i, theta_o, phi),
-          part.transmission + unscattered_.btdf(theta_i, theta_o, phi)};
 }
 
 double LayerTables::reflection_mode(int m, double theta_i, double theta_o) const {

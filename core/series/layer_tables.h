@@ -52,17 +52,11 @@ class LayerTables {
   // The scattered parts alone (the clamped Fourier sums of the coefficients), without unscattered().
   double brdf_scattered(double theta_i, double theta_o, double phi) const;
   double btdf_scattered(double theta_i, double theta_o, double phi) const;
-  // Both at once, sharing the spline taps and cos(m phi): what evaluating many direction pairs calls.
+  // The two at once, for many direction pairs: scattered(stencil, phi) below.
   struct ScatteredValues {
     double reflection;    // brdf_scattered  [1/sr]
     double transmission;  // btdf_scattered  [1/sr]
   };
-  ScatteredValues scattered(double theta_i, double theta_o, double phi) const;
-  struct Values {
-    double brdf_subsurface;  // [1/sr]
-    double btdf;             // [1/sr]
-  };
-  Values values(double theta_i, double theta_o, double phi) const;
 
   // The spline's taps at one direction pair on a grid of grid_size angles: the tensor-product Catmull-Rom as
   // weights on a 4 x 4 window of contiguous samples (rows start_i.., columns start_o..). Each axis' taps are folded
@@ -76,7 +70,8 @@ class LayerTables {
     double weight_o[2][4];  // [m % 2][column]
   };
   static Stencil stencil(double theta_i, double theta_o, int grid_size);
-  // scattered() with the pair's stencil (of this grid size; std::invalid_argument otherwise).
+  // brdf_scattered and btdf_scattered at the stencil's pair, sharing its taps and cos(m phi) (the stencil of this
+  // grid size; std::invalid_argument otherwise).
   ScatteredValues scattered(const Stencil& stencil, double phi) const;
 
   // The same tables on a grid `factor` times finer (the unscattered part is carried unchanged), K' = factor (K - 1) + 1
