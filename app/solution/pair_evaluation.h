@@ -31,8 +31,8 @@ struct BsdfArrays {
 };
 
 // Fills `out` for every pair (checked first), in the order of the pairs' table cells (for the memory caches; the
-// values do not depend on it). At most 2^32 - 1 pairs at once. Asks `cancelled` between blocks: when it returns true the remaining
-// blocks are skipped and SolveCancelled is thrown.
+// values do not depend on it). At most 2^32 - 1 pairs at once. Asks `cancelled` between blocks: when it returns
+// true the remaining blocks are skipped and SolveCancelled is thrown.
 void evaluate_pairs(const SolvedDocument& solved, std::span<const double> theta_i, std::span<const double> theta_o,
                     std::span<const double> phi, const BsdfArrays& out, const ParallelFor& parallel_for,
                     const std::function<bool()>& cancelled = {});

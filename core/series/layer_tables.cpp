@@ -105,8 +105,11 @@ inline double window_sum(const double* base, std::size_t grid_size, const double
 LayerTables::Stencil LayerTables::stencil(double theta_i, double theta_o, int grid_size) {
   Stencil result{};
   result.grid_size = grid_size;
-  const int start_i = fold_taps(spline_taps(grid_coordinate(theta_i, grid_size), grid_size), grid_size, result.weight_i);
-  const int start_o = fold_taps(spline_taps(grid_coordinate(theta_o, grid_size), grid_size), grid_size, result.weight_o);
+  const auto fold = [grid_size](double theta, double (&weight)[2][4]) {
+    return fold_taps(spline_taps(grid_coordinate(theta, grid_size), grid_size), grid_size, weight);
+  };
+  const int start_i = fold(theta_i, result.weight_i);
+  const int start_o = fold(theta_o, result.weight_o);
   result.offset = static_cast<std::size_t>(start_i) * grid_size + start_o;
   return result;
 }
