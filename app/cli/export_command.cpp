@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <mutex>
 #include <stdexcept>
 #include <string>
@@ -65,10 +64,8 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   ExportSettings settings = export_settings_from_flags(flags);
   const std::optional<std::string_view> output = flags.value("output");
   if (!output || output->empty()) throw UsageError("export needs -o FILE (the file to write)");
-  // A missing folder is found before the seconds of work, not after.
-  const std::filesystem::path folder = std::filesystem::path(std::string(*output)).parent_path();
-  if (!folder.empty() && !std::filesystem::is_directory(folder)) {
-    throw std::runtime_error("cannot write " + std::string(*output) + ": no folder " + folder.string());
+  if (const std::optional<std::string> missing = missing_output_folder(std::string(*output))) {
+    throw std::runtime_error(*missing);
   }
   MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
   if (const std::optional<double> wavelength = wavelength_from_flags(flags)) {

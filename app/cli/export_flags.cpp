@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -58,6 +59,12 @@ ExportSettings export_settings_from_flags(const ParsedFlags& flags) {
                                        : TabulatedFormat::RglSpectral;
   settings.nodes = bsdf ? parse_nodes(flags.value("nodes")) : kDefaultScatfunNodes;
   return settings;
+}
+
+std::optional<std::string> missing_output_folder(const std::string& path) {
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  if (folder.empty() || std::filesystem::is_directory(folder)) return std::nullopt;
+  return "cannot write " + path + ": no folder " + folder.string();
 }
 
 }  // namespace skinlayer::cli

@@ -2,7 +2,9 @@
 // (app/export/material_export.h). The command line and the Python module's Solution.export read them alike.
 #pragma once
 
+#include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "app/cli/flag_parser.h"
@@ -18,5 +20,9 @@ std::span<const std::string_view> export_switch_names();  // rgb
 // unknown one, --nodes that is not a whole number in [kMinScatfunNodes, kMaxScatfunNodes] or not with bsdf,
 // --resolution not a whole number in [RglOptions::kMinSamples, kMaxSamples] or not with rgl, --rgb not with rgl.
 ExportSettings export_settings_from_flags(const ParsedFlags& flags);
+
+// "cannot write PATH: no folder DIR" when the file's folder does not exist, found before the seconds of work, not
+// after; nothing when it does (or PATH names no folder). Each caller throws it as its own kind of error.
+std::optional<std::string> missing_output_folder(const std::string& path);
 
 }  // namespace skinlayer::cli

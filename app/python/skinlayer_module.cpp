@@ -6,7 +6,6 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -180,11 +179,8 @@ std::size_t export_file(const Solution& solution, const std::string& path, const
   const cli::ParsedFlags flags =
       parse(arguments, cli::export_flag_names(), "Solution.export", cli::export_switch_names());
   ExportSettings settings = cli::export_settings_from_flags(flags);
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
   if (path.empty()) throw ParameterError("path must name the file to write");
-  if (!folder.empty() && !std::filesystem::is_directory(folder)) {
-    throw ParameterError("cannot write " + path + ": no folder " + folder.string());
-  }
+  if (const std::optional<std::string> missing = cli::missing_output_folder(path)) throw ParameterError(*missing);
   settings.description = rgl_description(solution.document);
   ColorMaterial material = color_material(solution.document);
   material.model = solution.solved.model;
