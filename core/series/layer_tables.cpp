@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 
 #include "core/conventions.h"
+#include "core/series/window_sum.h"
 
 namespace skinlayer {
 namespace {
@@ -76,28 +76,6 @@ int fold_taps(const SplineTaps& taps, int grid_size, double (&weight)[2][4]) {
     for (int a = 0; a < 4; ++a) weight[odd][taps.index[a] - start] += taps.weight[a] * taps.sign(a, odd ? -1.0 : 1.0);
   }
   return start;
-}
-
-// sum_{a, b} w_i[a] w_o[b] window[a][b] for the window at `base` (rows grid_size apart), with each row's four
-// values in two lanes of two (GCC's and Clang's vector extension: SSE2 on any x86-64): the scalar form spent most
-// of a million-pair evaluation here.
-using Lanes = double __attribute__((vector_size(16)));
-
-inline Lanes load_lanes(const double* values) {
-  Lanes lanes;
-  std::memcpy(&lanes, values, sizeof lanes);
-  return lanes;
-}
-
-inline double window_sum(const double* base, std::size_t grid_size, const double (&w_i)[4], const double (&w_o)[4]) {
-  Lanes left = {0.0, 0.0}, right = {0.0, 0.0};  // columns 0-1 and 2-3, summed over the rows
-  for (std::size_t a = 0; a < 4; ++a) {
-    const double* row = base + a * grid_size;
-    left += w_i[a] * load_lanes(row);
-    right += w_i[a] * load_lanes(row + 2);
-  }
-  const Lanes sum = load_lanes(w_o) * left + load_lanes(w_o + 2) * right;
-  return sum[0] + sum[1];
 }
 
 }  // namespace
