@@ -140,30 +140,19 @@ LayerTables LayerTables::refined(int factor) const {
   return LayerTables(fine, modes_, refine(reflection_), refine(transmission_), unscattered_);
 }
 
-// sum_m c_m cos(m phi) for both tables at once, with cos(m phi) by the Chebyshev recurrence
-// cos((m + 1) phi) = 2 cos(phi) cos(m phi) - cos((m - 1) phi) (rounding grows ~m ulp: < 1e-13 for m < 1024).
-// A table left out (with_... false) sums to 0.
+// sum_m c_m cos(m phi) for both tables at once (core/series/window_sum.h). A table left out (with_... false) sums
+// to 0.
 LayerTables::ScatteredValues LayerTables::sum_modes(const Stencil& taps, double phi, bool with_reflection,
                                                     bool with_transmission) const {
   if (taps.grid_size != grid_size_) throw std::invalid_argument("LayerTables: a stencil of another grid size");
-  const double cos_phi = std::cos(phi);
-  double cos_previous = cos_phi;  // cos(-phi)
-  double cos_m = 1.0;
-  ScatteredValues sums{0.0, 0.0};
-  const auto k = static_cast<std::size_t>(grid_size_);
   const double* reflection = reflection_.data() + taps.offset;
   const double* transmission = transmission_.data() + taps.offset;
-  for (int m = 0; m < modes_; ++m, reflection += k * k, transmission += k * k) {
-    const int odd = m % 2;
-    if (with_reflection) sums.reflection += window_sum(reflection, k, taps.weight_i[odd], taps.weight_o[odd]) * cos_m;
-    if (with_transmission) {
-      sums.transmission += window_sum(transmission, k, taps.weight_i[odd], taps.weight_o[odd]) * cos_m;
-    }
-    const double cos_next = 2.0 * cos_phi * cos_m - cos_previous;
-    cos_previous = cos_m;
-    cos_m = cos_next;
-  }
-  return sums;
+  const double* first = with_reflection ? reflection : transmission;
+  const double* second = with_reflection && with_transmission ? transmission : nullptr;
+  const WindowModeSums sums = sum_window_modes(first, second, static_cast<std::size_t>(grid_size_), modes_,
+                                               taps.weight_i, taps.weight_o, phi);
+  if (!with_reflection) return {0.0, sums.first};
+  return {sums.first, with_transmission ? sums.second : 0.0};
 }
 
 LayerTables::ScatteredValues LayerTables::scattered(const Stencil& taps, double phi) const {
