@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,6 +19,7 @@
 #include "app/cli/model_flag.h"
 #include "app/cli/skin_flag.h"
 #include "app/cli/theta_list.h"
+#include "app/cli/unscattered_flag.h"
 #include "app/export/material_export.h"
 #include "app/material/atomic_file.h"
 #include "app/material/material_file.h"
@@ -41,6 +43,7 @@ namespace {
 struct Solution {
   MaterialDocument document;  // at --wavelength when one was given
   SolvedDocument solved;
+  std::shared_ptr<UnscatteredLobeCache> lobes = std::make_shared<UnscatteredLobeCache>();  // built by a first eval
 };
 
 cli::ParsedFlags parse(const std::vector<std::string>& arguments, std::span<const std::string_view> known,
@@ -85,14 +88,16 @@ std::span<double> span_of(py::array_t<double>& array) {
 }
 
 // (brdf_surface, brdf_subsurface, brdf, btdf): n values, or n x 3 for a colour material.
-py::tuple eval(const Solution& solution, const InputArray& theta_i, const InputArray& theta_o, const InputArray& phi) {
+py::tuple eval(const Solution& solution, const InputArray& theta_i, const InputArray& theta_o, const InputArray& phi,
+               const std::string& unscattered) {
+  const UnscatteredLobe lobe = cli::unscattered_lobe_named(unscattered);
   const std::span<const double> ti = flat(theta_i, "theta_i"), to = flat(theta_o, "theta_o"), p = flat(phi, "phi");
   const int channels = value_channels(solution.solved);
   py::array_t<double> surface = values(ti.size(), 1), subsurface = values(ti.size(), channels),
                       brdf = values(ti.size(), channels), btdf = values(ti.size(), channels);
   const BsdfArrays out{span_of(surface), span_of(subsurface), span_of(brdf), span_of(btdf)};
   run_interruptible([&](const std::function<bool()>& cancelled) {
-    evaluate_pairs(solution.solved, ti, to, p, out, parallel_for_threads, cancelled);
+    evaluate_pairs(solution.solved, ti, to, p, out, parallel_for_threads, cancelled, lobe, solution.lobes.get());
     return true;
   });
   return py::make_tuple(surface, subsurface, brdf, btdf);
@@ -240,7 +245,7 @@ PYBIND11_MODULE(_skinlayer, module) {
       .def_property_readonly("grey", [](const Solution& s) { return s.solved.grey; })
       .def_property_readonly("wavelengths_nm", [](const Solution& s) { return s.solved.channels.wavelengths_nm; })
       .def_property_readonly("to_rgb", &to_rgb)
-      .def("eval", &eval, py::arg("theta_i"), py::arg("theta_o"), py::arg("phi"))
+      .def("eval", &eval, py::arg("theta_i"), py::arg("theta_o"), py::arg("phi"), py::arg("unscattered"))
       .def("albedo", &albedo, py::arg("theta_list"))
       .def("tables", &tables)
       .def("export", &export_file, py::arg("path"), py::arg("arguments"));

@@ -16,7 +16,8 @@
 namespace skinlayer {
 namespace {
 
-constexpr std::size_t kBlock = 4096;  // pairs per parallel-for index: a few ms of work, enough to hide its cost
+constexpr std::size_t kBlock = 4096;       // pairs per parallel-for index: a few ms of work, enough to hide its cost
+constexpr std::size_t kPrefetchAhead = 8;  // pairs: ~2-4 us of work, more than a miss to memory
 
 std::string entry(const char* name, std::size_t index, double value) {
   char text[96];
@@ -27,10 +28,9 @@ std::string entry(const char* name, std::size_t index, double value) {
 // The pairs' indices sorted by the table cell of (theta_i, theta_o), by counting sort: consecutive pairs then read
 // the same few cache lines of the coefficient tables (megabytes for a colour material, far more than the caches),
 // which for pairs in random order made the evaluation wait on memory. Every pair's value is computed exactly as in
-// any other order; only the order changes.
-std::vector<std::uint32_t> cell_order(const SolvedDocument& solved, std::span<const double> theta_i,
-                                      std::span<const double> theta_o) {
-  const int grid = solved.tables.front().grid_size();
+// any other order; only the order changes. `grid` is the largest table's grid size: the unscattered lobe's table,
+// where there is one, is the finer, and its cells fall inside those of the solver's tables.
+std::vector<std::uint32_t> cell_order(int grid, std::span<const double> theta_i, std::span<const double> theta_o) {
   const auto cell = [grid](double degrees) {
     return std::min(static_cast<std::size_t>(LayerTables::grid_coordinate(degrees_to_radians(degrees), grid)),
                     static_cast<std::size_t>(grid - 1));
@@ -52,6 +52,35 @@ std::vector<std::uint32_t> cell_order(const SolvedDocument& solved, std::span<co
 
 int value_channels(const SolvedDocument& solved) { return solved.grey ? 1 : 3; }
 
+std::optional<UnscatteredLobe> parse_unscattered_lobe(std::string_view text) {
+  if (text == "auto") return UnscatteredLobe::Auto;
+  if (text == "exact") return UnscatteredLobe::Exact;
+  if (text == "table") return UnscatteredLobe::Table;
+  return std::nullopt;
+}
+
+namespace {
+
+// Whether `lobe` asks for the lobe tables at `count` pairs; ParameterError where Table cannot be had.
+bool wants_lobe_tables(const SolvedDocument& solved, std::size_t count, UnscatteredLobe lobe) {
+  if (lobe == UnscatteredLobe::Exact || (lobe == UnscatteredLobe::Auto && count < kTabulatedFromPairs)) return false;
+  if (lobe == UnscatteredLobe::Table) {
+    for (const LayerTables& tables : solved.tables) {
+      const UnscatteredLight& light = tables.unscattered();
+      if (light.path() != UnscatteredPath::TopThenBottom || TabulatedTwoInterfaceBtdf::can_tabulate(light)) continue;
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "unscattered = table needs sigma >= %g at both rough interfaces the unscattered light crosses; "
+                    "one has sigma = %.10g (use auto or exact)",
+                    kMinTabulatedSigma, std::min(light.top().sigma, light.bottom().sigma));
+      throw ParameterError(text);
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 void check_direction_pairs(std::span<const double> theta_i, std::span<const double> theta_o,
                            std::span<const double> phi) {
   if (theta_o.size() != theta_i.size() || phi.size() != theta_i.size()) {
@@ -70,9 +99,15 @@ void check_direction_pairs(std::span<const double> theta_i, std::span<const doub
   }
 }
 
+const std::vector<TabulatedTwoInterfaceBtdf>& UnscatteredLobeCache::lobes(const SolvedDocument& solved,
+                                                                          const ParallelFor& parallel_for) {
+  std::call_once(built_, [&] { lobes_ = tabulate_unscattered(solved, parallel_for); });
+  return lobes_;
+}
+
 void evaluate_pairs(const SolvedDocument& solved, std::span<const double> theta_i, std::span<const double> theta_o,
                     std::span<const double> phi, const BsdfArrays& out, const ParallelFor& parallel_for,
-                    const std::function<bool()>& cancelled) {
+                    const std::function<bool()>& cancelled, UnscatteredLobe lobe, UnscatteredLobeCache* cache) {
   check_direction_pairs(theta_i, theta_o, phi);
   if (theta_i.size() > std::numeric_limits<std::uint32_t>::max()) {
     throw ParameterError("at most " + std::to_string(std::numeric_limits<std::uint32_t>::max()) +
@@ -84,7 +119,15 @@ void evaluate_pairs(const SolvedDocument& solved, std::span<const double> theta_
       out.btdf.size() != count * channels) {
     throw std::invalid_argument("evaluate_pairs: the output arrays do not fit the pairs");
   }
-  const std::vector<std::uint32_t> order = cell_order(solved, theta_i, theta_o);
+  std::vector<TabulatedTwoInterfaceBtdf> own;
+  std::span<const TabulatedTwoInterfaceBtdf> lobes;
+  if (wants_lobe_tables(solved, count, lobe)) {
+    if (cache == nullptr) own = tabulate_unscattered(solved, parallel_for);
+    lobes = cache != nullptr ? std::span(cache->lobes(solved, parallel_for)) : std::span(own);
+    if (cancelled && cancelled()) throw SolveCancelled();
+  }
+  const std::vector<std::uint32_t> order =
+      cell_order(lobes.empty() ? solved.tables.front().grid_size() : lobes.front().grid_size(), theta_i, theta_o);
   std::atomic<bool> stopped = false;
   const auto blocks = static_cast<int>((count + kBlock - 1) / kBlock);
   run_parallel(parallel_for, blocks, [&](int block) {
@@ -94,9 +137,19 @@ void evaluate_pairs(const SolvedDocument& solved, std::span<const double> theta_
     }
     const std::size_t begin = static_cast<std::size_t>(block) * kBlock, end = std::min(count, begin + kBlock);
     for (std::size_t n = begin; n < end; ++n) {
+      // In cell order the pairs' own entries are scattered over the arrays: ask for those a few pairs ahead now,
+      // so that their cache misses overlap this pair's work instead of stalling it.
+      if (n + kPrefetchAhead < end) {
+        const std::size_t ahead = order[n + kPrefetchAhead];
+        for (const double* entry : {&theta_i[ahead], &theta_o[ahead], &phi[ahead]}) __builtin_prefetch(entry);
+        __builtin_prefetch(&out.surface[ahead], 1);
+        for (const std::span<double>& values : {out.subsurface, out.brdf, out.btdf}) {
+          __builtin_prefetch(&values[ahead * channels], 1);
+        }
+      }
       const std::size_t k = order[n];
-      const BsdfPoint point =
-          evaluate(solved, degrees_to_radians(theta_i[k]), degrees_to_radians(theta_o[k]), degrees_to_radians(phi[k]));
+      const BsdfPoint point = evaluate(solved, degrees_to_radians(theta_i[k]), degrees_to_radians(theta_o[k]),
+                                       degrees_to_radians(phi[k]), lobes);
       out.surface[k] = point.surface;
       for (std::size_t c = 0; c < channels; ++c) {
         out.subsurface[k * channels + c] = point.subsurface[c];

@@ -6,8 +6,13 @@
 // outgoing minus the incident azimuth (180 = forward), any finite number. Values are BSDFs in 1/sr.
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <mutex>
+#include <optional>
 #include <span>
+#include <string_view>
+#include <vector>
 
 #include "app/solution/solved_document.h"
 #include "core/parallel_for.h"
@@ -30,11 +35,37 @@ struct BsdfArrays {
   std::span<double> btdf;        // btdf, without the unscattered beam
 };
 
+// How the unscattered lobe through two rough interfaces is evaluated (the other paths have closed forms; see
+// core/unscattered/unscattered_light.h): exact, by its pointwise quadrature (~100-200 us a pair); table, from
+// TabulatedTwoInterfaceBtdf (~0.1 s to build, then < 1 us a pair, within 0.5% of the lobe's peak; both interfaces'
+// sigma >= 0.15); auto, the table from kTabulatedFromPairs pairs on where it can be built, else exact.
+enum class UnscatteredLobe { Auto, Exact, Table };
+inline constexpr std::size_t kTabulatedFromPairs = 4096;
+// "auto", "exact", "table"; empty for anything else.
+std::optional<UnscatteredLobe> parse_unscattered_lobe(std::string_view text);
+// The choices as eval's --unscattered and Solution.eval's `unscattered` describe them, for their errors.
+inline constexpr std::string_view kUnscatteredLobeChoices =
+    "auto (a table from 4096 pairs on), exact (pointwise), table (sigma >= 0.15)";
+
+// The lobe tables of one solved document (tabulate_unscattered), built the first time an evaluation asks for them and
+// kept for the next ones (the Python module's Solution holds one). Safe to share between threads.
+class UnscatteredLobeCache {
+ public:
+  const std::vector<TabulatedTwoInterfaceBtdf>& lobes(const SolvedDocument& solved, const ParallelFor& parallel_for);
+
+ private:
+  std::once_flag built_;
+  std::vector<TabulatedTwoInterfaceBtdf> lobes_;
+};
+
 // Fills `out` for every pair (checked first), in the order of the pairs' table cells (for the memory caches; the
 // values do not depend on it). At most 2^32 - 1 pairs at once. Asks `cancelled` between blocks: when it returns
-// true the remaining blocks are skipped and SolveCancelled is thrown.
+// true the remaining blocks are skipped and SolveCancelled is thrown. `lobe` Table throws ParameterError for a
+// two-interface lobe that cannot be tabulated (a sigma below 0.15). The tables come from `cache` when one is given
+// (it must be this document's), else are built for this call.
 void evaluate_pairs(const SolvedDocument& solved, std::span<const double> theta_i, std::span<const double> theta_o,
                     std::span<const double> phi, const BsdfArrays& out, const ParallelFor& parallel_for,
-                    const std::function<bool()>& cancelled = {});
+                    const std::function<bool()>& cancelled = {}, UnscatteredLobe lobe = UnscatteredLobe::Auto,
+                    UnscatteredLobeCache* cache = nullptr);
 
 }  // namespace skinlayer

@@ -1,6 +1,7 @@
 #include "app/solution/solved_document.h"
 
 #include <Eigen/Core>
+#include <algorithm>
 
 #include "core/solve/batch_solve.h"
 #include "core/solve/solve_cache.h"
@@ -32,7 +33,33 @@ SolvedDocument solve_document(const MaterialDocument& document, SubsurfaceModel 
   return solved;
 }
 
-BsdfPoint evaluate(const SolvedDocument& solved, double theta_i, double theta_o, double phi) {
+std::vector<TabulatedTwoInterfaceBtdf> tabulate_unscattered(const SolvedDocument& solved,
+                                                            const ParallelFor& parallel_for) {
+  std::vector<TabulatedTwoInterfaceBtdf> lobes;
+  for (const LayerTables& tables : solved.tables) {
+    const UnscatteredLight& light = tables.unscattered();
+    if (!TabulatedTwoInterfaceBtdf::can_tabulate(light)) continue;
+    if (std::ranges::any_of(lobes, [&](const auto& lobe) { return lobe.light() == light; })) continue;
+    lobes.emplace_back(light, parallel_for);
+  }
+  return lobes;
+}
+
+namespace {
+
+// The unscattered BTDF of `light` at the pair: from its table in `lobes` if there is one, else pointwise.
+double unscattered_btdf_at(const UnscatteredLight& light, std::span<const TabulatedTwoInterfaceBtdf> lobes,
+                           double theta_i, double theta_o, double phi) {
+  for (const TabulatedTwoInterfaceBtdf& lobe : lobes) {
+    if (lobe.light() == light) return lobe.btdf(theta_i, theta_o, phi);
+  }
+  return light.btdf(theta_i, theta_o, phi);
+}
+
+}  // namespace
+
+BsdfPoint evaluate(const SolvedDocument& solved, double theta_i, double theta_o, double phi,
+                   std::span<const TabulatedTwoInterfaceBtdf> lobes) {
   BsdfPoint point;
   point.surface = brdf_surface(solved.channels.materials.front(), theta_i, theta_o, phi);
   // A grey document is one table with weight 1 in every channel. A colour's tables usually share one grid size and
@@ -47,7 +74,7 @@ BsdfPoint evaluate(const SolvedDocument& solved, double theta_i, double theta_o,
     if (unscattered == nullptr || !(tables.unscattered() == *unscattered)) {
       unscattered = &tables.unscattered();
       unscattered_brdf = unscattered->brdf(theta_i, theta_o, phi);
-      unscattered_btdf = unscattered->btdf(theta_i, theta_o, phi);
+      unscattered_btdf = unscattered_btdf_at(*unscattered, lobes, theta_i, theta_o, phi);
     }
     const LayerTables::ScatteredValues scattered = tables.scattered(taps, phi);
     const double subsurface = scattered.reflection + unscattered_brdf;

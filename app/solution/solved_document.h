@@ -8,6 +8,7 @@
 
 #include <array>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "app/material/color_channels.h"
@@ -15,6 +16,7 @@
 #include "core/models/subsurface_model.h"
 #include "core/parallel_for.h"
 #include "core/series/layer_tables.h"
+#include "core/unscattered/tabulated_two_interface.h"
 
 namespace skinlayer {
 
@@ -38,6 +40,15 @@ struct BsdfPoint {
   std::array<double, 3> subsurface{};
   std::array<double, 3> btdf{};
 };
-BsdfPoint evaluate(const SolvedDocument& solved, double theta_i, double theta_o, double phi);
+// A channel whose unscattered light is among `lobes` takes its BTDF from that table (within 0.5% of the lobe's peak,
+// core/unscattered/tabulated_two_interface.h) instead of the pointwise quadrature (~100-200 us a pair).
+BsdfPoint evaluate(const SolvedDocument& solved, double theta_i, double theta_o, double phi,
+                   std::span<const TabulatedTwoInterfaceBtdf> lobes = {});
+
+// The tables of the document's distinct two-interface unscattered lights that can be tabulated (one for a grey
+// document or a colour sharing its interfaces and depth; none for other paths or sigma < 0.15), ~0.1 s each on
+// 2 cores: worth it for thousands of pairs (evaluate_pairs, app/solution/pair_evaluation.h).
+std::vector<TabulatedTwoInterfaceBtdf> tabulate_unscattered(const SolvedDocument& solved,
+                                                            const ParallelFor& parallel_for);
 
 }  // namespace skinlayer

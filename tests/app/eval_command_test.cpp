@@ -216,5 +216,25 @@ TEST(CliEval, ModelFlagSelectsTheComparisonModels) {
   EXPECT_TRUE(failed_with_one_line(eval({"--model", "phong"}, angles_csv(false, "\n")), 2, {"model", "'phong'"}));
 }
 
+TEST(CliEval, UnscatteredPicksTheLobesEvaluationAndRejectsOtherChoicesInOneLine) {
+  // Under 4096 rows auto is exact; table differs from it, slightly, where the lobe is (forward, near the normal).
+  const std::string rows = "10,10,180\n30,30,180\n60,20,90\n";
+  const ProcessResult automatic = eval({}, rows), exact = eval({"--unscattered", "exact"}, rows);
+  const ProcessResult table = eval({"--unscattered", "table"}, rows);
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  EXPECT_EQ(automatic.out, exact.out);
+  const CsvOutput exact_rows = parse_csv_output(exact.out), table_rows = parse_csv_output(table.out);
+  const double peak = exact_rows.rows[0][kBtdf];
+  EXPECT_NE(table_rows.rows[0][kBtdf], peak);
+  for (std::size_t row = 0; row < 3; ++row) {
+    EXPECT_EQ(table_rows.rows[row][kBrdf], exact_rows.rows[row][kBrdf]);
+    EXPECT_NEAR(table_rows.rows[row][kBtdf], exact_rows.rows[row][kBtdf], 5e-3 * peak);
+  }
+  EXPECT_TRUE(failed_with_one_line(eval({"--unscattered", "fast"}, rows), 2,
+                                   {"unscattered = 'fast'", "auto", "exact", "table"}));
+  EXPECT_TRUE(failed_with_one_line(eval({"--bottom-sigma", "0.1", "--unscattered", "table"}, rows), 2,
+                                   {"unscattered = table", "sigma >= 0.15", "sigma = 0.1"}));
+}
+
 }  // namespace
 }  // namespace skinlayer::test

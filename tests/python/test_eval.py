@@ -97,3 +97,41 @@ def test_a_bad_solve_option_raises_the_command_lines_message():
     with pytest.raises(ValueError) as raised:
         skinlayer.solve(skinlayer.Material.preset("skin-fair"), wavelength=1200)
     assert str(raised.value) == cli_error(["eval", "--preset", "skin-fair", "--wavelength", "1200"])
+
+
+# From 4096 pairs on, eval takes the two-interface unscattered lobe from a table (--unscattered auto).
+MANY = 5000
+MANY_THETA_I, MANY_THETA_O, MANY_PHI = RNG.uniform(0, 89, MANY), RNG.uniform(0, 89, MANY), RNG.uniform(0, 360, MANY)
+MANY_ROWS = "".join(f"{a!r},{b!r},{c!r}\n" for a, b, c in zip(MANY_THETA_I, MANY_THETA_O, MANY_PHI))
+
+
+@pytest.mark.parametrize("unscattered", ["auto", "exact", "table"])
+def test_many_pairs_equal_the_command_line_for_each_unscattered_choice(unscattered):
+    solution = skinlayer.solve(skinlayer.Material())  # two rough interfaces, sigma 0.5
+    table = cli_table(["eval", "--unscattered", unscattered], MANY_ROWS)
+    values = solution.eval(MANY_THETA_I, MANY_THETA_O, MANY_PHI, unscattered=unscattered)
+    for quantity in ("brdf_surface", "brdf_subsurface", "brdf", "btdf"):
+        assert_close(values[quantity], table[quantity])
+
+
+def test_the_tabulated_lobe_stays_within_its_bound_of_the_exact_one_and_is_cached():
+    solution = skinlayer.solve(skinlayer.Material(albedo=(0.9, 0.7, 0.5)))
+    exact = solution.eval(MANY_THETA_I, MANY_THETA_O, MANY_PHI, unscattered="exact")["btdf"]
+    tabulated = solution.eval(MANY_THETA_I, MANY_THETA_O, MANY_PHI)["btdf"]
+    again = solution.eval(MANY_THETA_I, MANY_THETA_O, MANY_PHI, unscattered="table")["btdf"]
+    difference = np.abs(tabulated - exact)
+    assert 0 < difference.max() < 5e-3 * exact.max()  # the table is used, and within 0.5% of the peak
+    assert np.array_equal(again, tabulated)  # the second call's table (kept by the solution) is the first's
+    few = solution.eval(MANY_THETA_I[:100], MANY_THETA_O[:100], MANY_PHI[:100])["btdf"]
+    assert np.array_equal(few, exact[:100])  # fewer than 4096 pairs: exact
+
+
+def test_a_bad_unscattered_choice_raises_the_command_lines_message():
+    solution = skinlayer.solve(skinlayer.Material(bottom_sigma=0.1))
+    with pytest.raises(ValueError) as raised:
+        solution.eval(30, 30, 180, unscattered="fast")
+    assert str(raised.value) == cli_error(["eval", "--unscattered", "fast"])
+    with pytest.raises(ValueError) as raised:
+        solution.eval(30, 30, 180, unscattered="table")
+    assert str(raised.value) == cli_error(["eval", "--bottom-sigma", "0.1", "--unscattered", "table"], "30,30,180\n")
+    assert solution.eval(30, 30, 180, unscattered="exact")["btdf"] > 0
