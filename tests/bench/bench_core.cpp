@@ -31,6 +31,7 @@
 #include "core/solve/boundary_solve.h"
 #include "core/solve/solve_cache.h"
 #include "core/solver.h"
+#include "core/unscattered/tabulated_two_interface.h"
 #include "core/unscattered/unscattered_light.h"
 #include "tests/bench/benchmark_report.h"
 #include "tests/bench/solve_stages.h"
@@ -152,8 +153,10 @@ BENCHMARK(BM_UnscatteredBtdfTwoInterfaces)->Unit(benchmark::kMicrosecond);
 // eval over a million direction pairs (issue 27's target for the Python module's Solution.eval, which calls
 // evaluate_pairs on numpy arrays: under 1 s on 2 cores), on both cores, after the solve. Pairs uniform in
 // theta_i, theta_o in [0, 90] and phi in [0, 360) degrees, drawn once. Arg: 0 the grey default (two rough
-// interfaces: the unscattered lobe is a slope quadrature per pair), 1 an RGB layer over a matched bottom (one rough
-// interface, closed-form unscattered light), 2 the preset skin-medium (its spectrum's solves, weighed into RGB).
+// interfaces: the unscattered lobe's table, TabulatedTwoInterfaceBtdf, is built in every call), 1 an RGB layer over a
+// matched bottom (one rough interface, closed-form unscattered light; the issue's example), 2 the preset skin-medium
+// (its spectrum's solves, weighed into RGB), 3 the grey default with the lobe's table kept between calls (as a Python
+// Solution keeps it).
 void BM_EvalPairs(benchmark::State& state) {
   constexpr std::size_t kPairs = 1'000'000;
   MaterialDocument document;
@@ -177,14 +180,29 @@ void BM_EvalPairs(benchmark::State& state) {
   const auto channels = static_cast<std::size_t>(value_channels(solved));
   std::vector<double> surface(kPairs), subsurface(kPairs * channels), brdf(kPairs * channels), btdf(kPairs * channels);
   const BsdfArrays out{surface, subsurface, brdf, btdf};
+  UnscatteredLobeCache cache;
+  UnscatteredLobeCache* kept = state.range(0) == 3 ? &cache : nullptr;
   for (auto _ : state) {
-    evaluate_pairs(solved, theta_i, theta_o, phi, out, parallel_for_threads);
+    evaluate_pairs(solved, theta_i, theta_o, phi, out, parallel_for_threads, {}, UnscatteredLobe::Auto, kept);
     benchmark::DoNotOptimize(brdf.data());
   }
   state.counters["pairs"] = static_cast<double>(kPairs);
   state.counters["channels_solved"] = static_cast<double>(solved.tables.size());
 }
-BENCHMARK(BM_EvalPairs)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_EvalPairs)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The two-interface unscattered lobe's table (core/unscattered/tabulated_two_interface.h) for the default material
+// (sigma 0.5: 48 modes) and at the smallest sigma tabulated (0.15: 160 modes, finer theta' panels), on every core.
+void BM_TabulateTwoInterfaceLobe(benchmark::State& state) {
+  Material material;
+  material.sigma = static_cast<double>(state.range(0)) / 100.0;
+  const UnscatteredLight light(material);
+  for (auto _ : state) {
+    TabulatedTwoInterfaceBtdf table(light, parallel_for_threads);
+    benchmark::DoNotOptimize(table);
+  }
+}
+BENCHMARK(BM_TabulateTwoInterfaceLobe)->Arg(50)->Arg(15)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A single-channel re-solve after one slider step, the cache warm as the previewer's worker keeps it: Omega and T
 // reuse the interface operators and the phase projections; g (a new value each step) reuses the interface operators

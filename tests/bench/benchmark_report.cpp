@@ -209,10 +209,14 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
       r.ms("BM_EvalPairs/1/real_time"), r.counter("BM_EvalPairs/2/real_time", "channels_solved"),
       r.ms("BM_EvalPairs/2/real_time"));
   md << formatted(
-      " the grey default, two rough interfaces, %.1f s: there every pair also integrates the light that crosses both "
-      "interfaces unscattered by a slope quadrature (`BM_UnscatteredBtdfTwoInterfaces`: %.0f µs a pair on one "
+      " the grey default, two rough interfaces, **%.0f ms** with the table of its unscattered lobe built in the call "
+      "(a first `Solution.eval`; `BM_TabulateTwoInterfaceLobe`: %.0f ms, and %.0f ms at σ 0.15) and **%.0f ms** with "
+      "it kept from an earlier call. Fewer than 4096 pairs, or `unscattered=\"exact\"`, or a σ under 0.15 evaluate "
+      "the lobe pointwise by its slope quadrature instead (`BM_UnscatteredBtdfTwoInterfaces`: %.0f µs a pair on one "
       "core).\n",
-      r.ms("BM_EvalPairs/0/real_time") / 1e3, r.ms("BM_UnscatteredBtdfTwoInterfaces") * 1e3);
+      r.ms("BM_EvalPairs/0/real_time"), r.ms("BM_TabulateTwoInterfaceLobe/50/real_time"),
+      r.ms("BM_TabulateTwoInterfaceLobe/15/real_time"), r.ms("BM_EvalPairs/3/real_time"),
+      r.ms("BM_UnscatteredBtdfTwoInterfaces") * 1e3);
   md << "\n## RGB re-solves at the costliest corners\n\n"
      << "Three albedos on both cores with the cache, as the previewer's worker solves them, after a σ step (so the "
         "interface operators are built anew). Preview: `SolveOptions::preview`, the worker's first answer where the "
