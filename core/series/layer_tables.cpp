@@ -57,6 +57,7 @@ LayerTables::LayerTables(int grid_size, int modes, std::vector<double> reflectio
   if (grid_size < 4 || reflection_.size() != expected || transmission_.size() != expected) {
     throw std::invalid_argument("LayerTables: table sizes do not match grid_size^2 * modes");
   }
+  transmission_zero_ = std::ranges::all_of(transmission_, [](double c) { return c == 0.0; });
 }
 
 double LayerTables::grid_angle(int k, int grid_size) { return 0.5 * kPi * std::sin(0.5 * kPi * k / (grid_size - 1)); }
@@ -147,6 +148,9 @@ LayerTables::ScatteredValues LayerTables::sum_modes(const Stencil& taps, double 
   if (taps.grid_size != grid_size_) throw std::invalid_argument("LayerTables: a stencil of another grid size");
   const double* reflection = reflection_.data() + taps.offset;
   const double* transmission = transmission_.data() + taps.offset;
+  // A table of zeros sums to 0 (+0, as its sum would): a Lambertian base's transmission is not read.
+  with_transmission = with_transmission && !transmission_zero_;
+  if (!with_reflection && !with_transmission) return {0.0, 0.0};
   const double* first = with_reflection ? reflection : transmission;
   const double* second = with_reflection && with_transmission ? transmission : nullptr;
   const WindowModeSums sums = sum_window_modes(first, second, static_cast<std::size_t>(grid_size_), modes_,

@@ -92,6 +92,7 @@ class LayerTables {
   int modes_ = 0;
   std::vector<double> reflection_;
   std::vector<double> transmission_;
+  bool transmission_zero_ = true;  // every transmission coefficient is 0 (a Lambertian base): its sum is skipped
   UnscatteredLight unscattered_;
 };
 
