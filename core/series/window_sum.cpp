@@ -61,30 +61,44 @@ __attribute__((target("default"))) WindowModeSums mode_sums(const double* first,
 __attribute__((target("avx2,fma"))) WindowModeSums mode_sums(const double* first, const double* second, std::size_t k,
                                                              int modes, const double (&w_i)[2][4],
                                                              const double (&w_o)[2][4], double phi) {
-  // Per table, the window's rows weighted by w_i and summed (a quad over the columns), times w_o and cos(m phi),
-  // accumulated over the modes: the four lanes are added once, at the end. Written out without helpers, so that
-  // no 32-byte vector is passed to or returned from a function (lambdas do not take this function's target).
-  Quad column_weight[2];
-  std::memcpy(&column_weight[0], w_o[0], sizeof(Quad));
-  std::memcpy(&column_weight[1], w_o[1], sizeof(Quad));
-  CosineRecurrence cosine(phi);
-  Quad sum_first = {0.0, 0.0, 0.0, 0.0}, sum_second = {0.0, 0.0, 0.0, 0.0};
-  for (int m = 0; m < modes; ++m, cosine.advance()) {
-    const int odd = m % 2;
-    const std::size_t shift = static_cast<std::size_t>(m) * k * k;
-    for (int table = 0; table < (second != nullptr ? 2 : 1); ++table) {
-      const double* c = (table == 0 ? first : second) + shift;
-      Quad rows = {0.0, 0.0, 0.0, 0.0};
-      for (std::size_t a = 0; a < 4; ++a) {
-        Quad row;
-        std::memcpy(&row, c + a * k, sizeof row);
-        rows += w_i[odd][a] * row;
+  // The weights are the same for every mode of a parity, so the modes are summed before the window is weighted:
+  // per table and parity, the window's four rows (a quad over the columns each) accumulate cos(m phi) c_m over the
+  // modes of that parity, and only then are weighted, by w_i per row and w_o per column. Per mode that is four
+  // FMAs a table, against six (and four broadcasts) to weight each mode's window first. The even and the odd modes
+  // are summed in turn, each with the Chebyshev recurrence of step 2 phi,
+  //   cos((m + 2) phi) = 2 cos(2 phi) cos(m phi) - cos((m - 2) phi).
+  // Written out without helpers, so that no 32-byte vector is passed to or returned from a function (lambdas do
+  // not take this function's target).
+  const double cos_phi = std::cos(phi), cos_2phi = 2.0 * cos_phi * cos_phi - 1.0;
+  const int tables = second != nullptr ? 2 : 1;
+  double sums[2] = {0.0, 0.0};
+  for (int odd = 0; odd < 2; ++odd) {
+    Quad rows[2][4] = {};  // [table][row]: sum over the parity's modes of cos(m phi) c_m, per column
+    double current = odd ? cos_phi : 1.0, previous = odd ? cos_phi : cos_2phi;  // cos(m phi), cos((m - 2) phi)
+    for (int m = odd; m < modes; m += 2) {
+      const std::size_t shift = static_cast<std::size_t>(m) * k * k;
+      for (int table = 0; table < tables; ++table) {
+        const double* c = (table == 0 ? first : second) + shift;
+        for (std::size_t a = 0; a < 4; ++a) {
+          Quad row;
+          std::memcpy(&row, c + a * k, sizeof row);
+          rows[table][a] += current * row;
+        }
       }
-      (table == 0 ? sum_first : sum_second) += cosine.current * (rows * column_weight[odd]);
+      const double next = 2.0 * cos_2phi * current - previous;
+      previous = current;
+      current = next;
+    }
+    Quad column_weight;
+    std::memcpy(&column_weight, w_o[odd], sizeof column_weight);
+    for (int table = 0; table < tables; ++table) {
+      Quad weighted = w_i[odd][0] * rows[table][0];
+      for (std::size_t a = 1; a < 4; ++a) weighted += w_i[odd][a] * rows[table][a];
+      weighted *= column_weight;
+      sums[table] += (weighted[0] + weighted[1]) + (weighted[2] + weighted[3]);
     }
   }
-  return {(sum_first[0] + sum_first[1]) + (sum_first[2] + sum_first[3]),
-          (sum_second[0] + sum_second[1]) + (sum_second[2] + sum_second[3])};
+  return {sums[0], sums[1]};
 }
 
 }  // namespace

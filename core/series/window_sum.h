@@ -4,9 +4,10 @@
 //   S = sum_{m < M} cos(m phi) sum_{a, b < 4} w_i[m % 2][a] w_o[m % 2][b] c[m K^2 + a K + b]         (units of c)
 //
 // (rows a of theta_i, columns b of theta_o, the window's first sample at c[0]). Most of a million-pair evaluation
-// is spent here. Two builds of the mode sum are chosen at run time by the CPU: one in 4-wide AVX2 + FMA lanes (one
-// row of the window a lane), the other in 2-wide SSE2 lanes, which any x86-64 has. Their values differ by rounding
-// (~1e-16 relative): FMA rounds once where the other rounds twice.
+// is spent here. Two builds of the mode sum are chosen at run time by the CPU: one in 4-wide AVX2 + FMA lanes (a row
+// of the window a lane, the modes of each parity summed before the window is weighted), the other in 2-wide SSE2
+// lanes, which any x86-64 has (each mode's window weighted, then summed). Their values differ by rounding (~1e-16 of
+// sum_m |S_m|): the order of the sums differs, and FMA rounds once where the other rounds twice.
 #pragma once
 
 #include <cstddef>
