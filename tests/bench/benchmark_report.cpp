@@ -213,7 +213,8 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
       "(a first `Solution.eval`; `BM_TabulateTwoInterfaceLobe`: %.0f ms, and %.0f ms at σ 0.15) and **%.0f ms** with "
       "it kept from an earlier call. Fewer than 4096 pairs, or `unscattered=\"exact\"`, or a σ under 0.15 evaluate "
       "the lobe pointwise by its slope quadrature instead (`BM_UnscatteredBtdfTwoInterfaces`: %.0f µs a pair on one "
-      "core).\n",
+      "core). `cmake --build build --target bench-python` times the same calls from Python "
+      "(`tests/bench/bench_python_eval.py`), whose arrays in and dict out add a few percent.\n",
       r.ms("BM_EvalPairs/0/real_time"), r.ms("BM_TabulateTwoInterfaceLobe/50/real_time"),
       r.ms("BM_TabulateTwoInterfaceLobe/15/real_time"), r.ms("BM_EvalPairs/3/real_time"),
       r.ms("BM_UnscatteredBtdfTwoInterfaces") * 1e3);
