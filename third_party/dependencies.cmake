@@ -6,17 +6,18 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 # material as PNG text chunks through libpng (libpng-dev).
 find_package(nlohmann_json 3.11 REQUIRED)
 find_package(PNG REQUIRED)
+# Environment maps (.hdr) through stb_image (libstb-dev), which the GL-free fuzz targets read too.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 
 # Previewer and headless rendering (see docs/platform-notes.md): not looked for without the app.
 if(NOT SKINLAYER_BUILD_APP)
   return()
 endif()
-find_package(PkgConfig REQUIRED)
 find_package(glfw3 3.3 REQUIRED)
 find_package(OpenGL REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET imgui)
-pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
 
 # The Python package (app/python) and its tests: pybind11 (pybind11-dev), numpy and pytest (python3-numpy,
 # python3-pytest). The interpreter is Debian's /usr/bin/python3 unless Python3_EXECUTABLE says otherwise: setup.sh

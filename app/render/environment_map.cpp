@@ -3,11 +3,18 @@
 #include <stb_image.h>  // libstb.so holds the implementation
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
 #include <utility>
+
+#include "app/render/radiance_hdr_scan.h"
 
 namespace skinlayer {
 
@@ -117,28 +124,58 @@ std::optional<EnvironmentMap> builtin_environment(std::string_view name) {
   return std::nullopt;
 }
 
-EnvironmentMap read_hdr_environment(const std::string& path) {
-  if (!stbi_is_hdr(path.c_str())) {
-    const char* reason = stbi_failure_reason();
-    throw std::runtime_error("cannot read " + path + " as an environment: not a Radiance .hdr image" +
-                             (reason ? std::string(" (") + reason + ")" : std::string()));
+EnvironmentMap decode_hdr_environment(std::string_view bytes, std::string_view source) {
+  const std::string name(source);
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    throw std::runtime_error("cannot read " + name + " as an environment: larger than 2 GB");
   }
+  const int size = static_cast<int>(bytes.size());
+  if (!stbi_is_hdr_from_memory(data, size)) {
+    throw std::runtime_error("cannot read " + name + " as an environment: not a Radiance .hdr image");
+  }
+  // The header's size is checked before any pixel is read, so that a few bytes cannot ask for gigabytes.
   int width = 0, height = 0, channels = 0;
-  const std::unique_ptr<float, void (*)(void*)> pixels(stbi_loadf(path.c_str(), &width, &height, &channels, 3),
-                                                       stbi_image_free);
-  if (!pixels) {
+  if (!stbi_info_from_memory(data, size, &width, &height, &channels)) {
     const char* reason = stbi_failure_reason();
-    throw std::runtime_error("cannot read " + path + ": " + (reason ? reason : "stb_image failed"));
+    throw std::runtime_error("cannot read " + name + ": " + (reason ? reason : "a damaged .hdr header"));
+  }
+  if (width < 1 || height < 1) {
+    throw std::runtime_error("cannot use " + name + " as an environment: it has no pixels (" + std::to_string(width) +
+                             "x" + std::to_string(height) + ")");
+  }
+  if (width > kMaxEnvironmentWidth || height > kMaxEnvironmentWidth / 2) {
+    throw std::runtime_error("cannot use " + name + " as an environment: " + std::to_string(width) + "x" +
+                             std::to_string(height) + " is larger than " + std::to_string(kMaxEnvironmentWidth) + "x" +
+                             std::to_string(kMaxEnvironmentWidth / 2));
   }
   if (std::abs(width - 2 * height) > 1) {
-    throw std::runtime_error("cannot use " + path + " as an environment: " + std::to_string(width) + "x" +
+    throw std::runtime_error("cannot use " + name + " as an environment: " + std::to_string(width) + "x" +
                              std::to_string(height) + " is not equirectangular (width must be twice the height)");
+  }
+  // Walked first: stb_image can hang on damaged run-length data, and reads zeros past the end.
+  if (const std::optional<std::string> problem = radiance_pixel_data_problem(bytes, width, height)) {
+    throw std::runtime_error("cannot read " + name + ": " + *problem);
+  }
+  const std::unique_ptr<float, void (*)(void*)> pixels(
+      stbi_loadf_from_memory(data, size, &width, &height, &channels, 3), stbi_image_free);
+  if (!pixels) {
+    const char* reason = stbi_failure_reason();
+    throw std::runtime_error("cannot read " + name + ": " + (reason ? reason : "stb_image failed"));
   }
   EnvironmentMap map{width, height, std::vector<float>(pixels.get(), pixels.get() + std::size_t{3} * width * height)};
   for (float& value : map.rgb) {
     if (!std::isfinite(value) || value < 0.0f) value = 0.0f;
   }
   return map;
+}
+
+EnvironmentMap read_hdr_environment(const std::string& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (file.bad()) throw std::runtime_error("cannot read " + path + ": " + std::strerror(errno));
+  return decode_hdr_environment(bytes, path);
 }
 
 EnvironmentMap load_environment(const std::string& source) {

@@ -29,8 +29,12 @@ struct EnvironmentMap {
 std::optional<EnvironmentMap> builtin_environment(std::string_view name);
 inline constexpr std::array<std::string_view, 3> kBuiltinEnvironments = {"furnace", "studio", "sky"};
 
-// An equirectangular Radiance .hdr file (stb_image). Throws std::runtime_error naming the file: unreadable, not an
-// HDR image, or not twice as wide as high (within one pixel).
+// An equirectangular Radiance .hdr file (stb_image), from its bytes (`source` names it in errors) or its path.
+// Throws std::runtime_error naming the file: unreadable, not an HDR image, damaged or truncated, not twice as wide as
+// high (within one pixel), or wider than kMaxEnvironmentWidth (the sizes are checked in the header, before any pixel
+// is decoded). Negative and non-finite texels read as 0.
+inline constexpr int kMaxEnvironmentWidth = 8192;  // 8K x 4K: 384 MiB of float RGB
+EnvironmentMap decode_hdr_environment(std::string_view bytes, std::string_view source);
 EnvironmentMap read_hdr_environment(const std::string& path);
 
 // What `render --env` and the previewer accept: a built-in's name, else a .hdr path (read_hdr_environment's errors).
