@@ -2,7 +2,11 @@
 
 #include <algorithm>
 
+#include "app/cli/quoted.h"
+
 namespace skinlayer {
+
+MaterialFileError::MaterialFileError(const std::string& message) : std::runtime_error(cli::printable(message)) {}
 
 bool MaterialDocument::grey() const {
   const auto is_grey = [](const AlbedoRgb& rgb) { return rgb[0] == rgb[1] && rgb[1] == rgb[2]; };

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/quoted.h"
 #include "app/material/exact_transparency.h"
 #include "core/skin/skin_parameters.h"
 
@@ -30,13 +31,6 @@ std::string joined(std::initializer_list<std::string_view> names) {
   return text;
 }
 
-// A key as the file spells it, safe in a one-line message: control characters (a newline inside a key) become '?'.
-std::string printable(std::string key) {
-  std::replace_if(
-      key.begin(), key.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }, '?');
-  return key;
-}
-
 // Reads one document, naming the file and the key path ("layers[0].g") in every error.
 class DocumentReader {
  public:
@@ -49,7 +43,7 @@ class DocumentReader {
   void only_keys(const Json& object, const std::string& path, std::initializer_list<std::string_view> valid) const {
     for (const auto& [key, value] : object.items()) {
       if (std::find(valid.begin(), valid.end(), key) == valid.end()) {
-        throw MaterialFileError(source_ + ": unknown key \"" + printable(join(path, key)) + "\"; valid keys " +
+        throw MaterialFileError(source_ + ": unknown key \"" + join(path, key) + "\"; valid keys " +
                                 (path.empty() ? "at the top level" : "in \"" + path + "\"") + ": " + joined(valid));
       }
     }
@@ -249,10 +243,9 @@ Json material_json(const MaterialDocument& document) {
 
 std::string material_json_text(const MaterialDocument& document) { return material_json(document).dump(2) + "\n"; }
 
-MaterialDocument read_material_json(std::string_view text, std::string_view source) {
-  Json json;
+nlohmann::ordered_json parse_json_document(std::string_view text, std::string_view source) {
   try {
-    json = Json::parse(text.begin(), text.end());
+    return Json::parse(text.begin(), text.end());
   } catch (const Json::parse_error& error) {
     // error.byte is the 1-based offset of the last byte read; line and column are counted here.
     const std::size_t end = std::min(error.byte == 0 ? 0 : error.byte - 1, text.size());
@@ -264,8 +257,19 @@ MaterialDocument read_material_json(std::string_view text, std::string_view sour
     if (colon != std::string::npos) reason = reason.substr(colon + 2);
     throw MaterialFileError(std::string(source) + ":" + std::to_string(line) + ":" + std::to_string(column) +
                             ": not valid JSON: " + reason);
+  } catch (const Json::out_of_range& error) {
+    // nlohmann's 406, "number overflow parsing '<token>'": a number past a double's range.
+    const std::string what = error.what();
+    const std::size_t open = what.find('\''), close = what.rfind('\'');
+    const std::string token =
+        open != std::string::npos && close > open ? cli::quoted(what.substr(open + 1, close - open - 1)) + " " : "";
+    throw MaterialFileError(std::string(source) + ": not valid JSON: the number " + token +
+                            "is too large for a double (magnitude above 1.8e308)");
   }
-  return material_from_json(json, source);
+}
+
+MaterialDocument read_material_json(std::string_view text, std::string_view source) {
+  return material_from_json(parse_json_document(text, source), source);
 }
 
 namespace {

@@ -34,6 +34,8 @@ std::string material_json_text(const MaterialDocument& document);
 // source:line:column, an unknown key (listing the valid ones), a wrong type, a missing key, a value out of range
 // (core's message), or a format or version this build does not read.
 MaterialDocument read_material_json(std::string_view text, std::string_view source);
+// The JSON syntax alone: throws MaterialFileError with source:line:column, or for a number past a double's range.
+nlohmann::ordered_json parse_json_document(std::string_view text, std::string_view source);
 MaterialDocument material_from_json(const nlohmann::ordered_json& json, std::string_view source);
 
 }  // namespace skinlayer

@@ -29,12 +29,7 @@ MaterialDocument material_from_picture(std::string_view png_bytes, std::string_v
                             "\" text chunk); only pictures that skinlayer wrote carry one");
   }
   const std::string chunk = std::string(source) + " (its " + std::string(kPictureChunkKeyword) + " chunk)";
-  nlohmann::ordered_json json;
-  try {
-    json = nlohmann::ordered_json::parse(*text);
-  } catch (const nlohmann::ordered_json::parse_error& error) {
-    throw MaterialFileError(chunk + ": not valid JSON: " + error.what());
-  }
+  const nlohmann::ordered_json json = parse_json_document(*text, chunk);
   if (!json.is_object() || !json.contains("format") || json["format"] != kPictureFormat || !json.contains("material")) {
     throw MaterialFileError(chunk + ": not a skinlayer picture's metadata (\"format\": \"" +
                             std::string(kPictureFormat) + "\" with a \"material\")");

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <csetjmp>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
@@ -70,10 +71,23 @@ bool encode(int width, int height, png_bytepp rows, png_textp texts, int text_co
   return true;
 }
 
+constexpr png_alloc_size_t kMaxChunkBytes = 8 << 20;  // one allocation: a chunk, read or inflated
+constexpr png_uint_32 kMaxAncillaryChunks = 256;
+
+// libpng's allocator while it reads: null past kMaxChunkBytes, which libpng reports as "out of memory".
+png_voidp capped_malloc(png_structp, png_alloc_size_t size) {
+  return size > kMaxChunkBytes ? nullptr : std::malloc(size);
+}
+void capped_free(png_structp, png_voidp pointer) { std::free(pointer); }
+
 // Reads the chunks before the image data; copies the first text with `keyword` into *text.
 bool find_text(const unsigned char* data, std::size_t size, const char* keyword, std::string* text, bool* found,
                PngErrorMessage* error) {
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, error, on_error, on_warning);
+  // A hostile file can be small and still ask for gigabytes: a chunk whose length field says 2 GB (libpng allocates
+  // it before it reads it), a compressed text chunk that inflates without end, or thousands of chunks. Every
+  // allocation is capped, and so is the count of chunks: far above what skinlayer writes (a few kB of JSON in one).
+  png_structp png =
+      png_create_read_struct_2(PNG_LIBPNG_VER_STRING, error, on_error, on_warning, nullptr, capped_malloc, capped_free);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
   if (!info || setjmp(png_jmpbuf(png))) {
@@ -82,6 +96,8 @@ bool find_text(const unsigned char* data, std::size_t size, const char* keyword,
   }
   MemoryReader reader{data, size, 0};
   png_set_read_fn(png, &reader, read_from_memory);
+  png_set_chunk_malloc_max(png, kMaxChunkBytes);
+  png_set_chunk_cache_max(png, kMaxAncillaryChunks);
   png_read_info(png, info);
   png_textp texts = nullptr;
   int count = 0;

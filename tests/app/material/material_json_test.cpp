@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/quoted.h"
 #include "core/material.h"
 
 namespace skinlayer {
@@ -170,11 +171,14 @@ TEST(MaterialJson, EachKindOfErrorIsOneLineNamingTheFileAndTheKey) {
       {valid_with("\"version\": 1", "\"version\": 0"), {"\"version\"", "must be 1"}},
       {valid_with("\"skinlayer-material\"", "\"something-else\""), {"bad.json", "not a skinlayer material file"}},
       {valid_with("\"type\": \"air\"", "\"type\": \"wood\""), {"\"bottom.type\"", "wood", "matched"}},
-      {valid_with("\"version\": 1,", "\"version\": 1, \"skin\": {\"melanin\": 0.1},"), {"\"layers\"", "\"skin\"", "one of them"}},
-      {valid_with("  \"layers\": [{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}],\n  \"bottom\": {\"type\": \"air\", \"sigma\": 0.5, \"eta\": 1.4}",
+      {valid_with("\"version\": 1,", "\"version\": 1, \"skin\": {\"melanin\": 0.1},"),
+       {"\"layers\"", "\"skin\"", "one of them"}},
+      {valid_with("  \"layers\": [{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}],\n  \"bottom\": {\"type\": \"air\", "
+                  "\"sigma\": 0.5, \"eta\": 1.4}",
                   "  \"skin\": {\"blood\": 0.3}"),
        {"bad.json", "\"skin.blood\"", "out of range", "[0, 0.2]"}},
-      {valid_with("  \"layers\": [{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}],\n  \"bottom\": {\"type\": \"air\", \"sigma\": 0.5, \"eta\": 1.4}",
+      {valid_with("  \"layers\": [{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}],\n  \"bottom\": {\"type\": \"air\", "
+                  "\"sigma\": 0.5, \"eta\": 1.4}",
                   "  \"skin\": {\"freckles\": 1}"),
        {"bad.json", "\"skin.freckles\"", "melanin, eumelanin"}},
       {valid_with("\"type\": \"air\", \"sigma\": 0.5, \"eta\": 1.4", "\"type\": \"lambert\""),
@@ -204,6 +208,8 @@ TEST(MaterialJson, EachKindOfErrorIsOneLineNamingTheFileAndTheKey) {
                   "[{\"T\": 0.2, \"albedo\": 1, \"g\": 0.8}, {\"T\": 0.5, \"albedo\": 1, \"g\": 0, "
                   "\"interface\": {\"sigma\": 0.3}}]"),
        {"\"layers[1].interface.eta\"", "missing"}},
+      // Found by fuzzing (tests/fuzz): a number past a double's range, which nlohmann reports apart from syntax.
+      {valid_with("\"g\": 0.8", "\"g\": 5e4444"), {"bad.json", "not valid JSON", "'5e4444'", "too large"}},
   };
   for (const BadFile& bad : cases) {
     try {
@@ -214,6 +220,27 @@ TEST(MaterialJson, EachKindOfErrorIsOneLineNamingTheFileAndTheKey) {
       EXPECT_EQ(message.find('\n'), std::string::npos) << message;
       EXPECT_EQ(message.rfind("bad.json", 0), 0u) << message;
       for (const std::string& part : bad.message_has) EXPECT_NE(message.find(part), std::string::npos) << message;
+    }
+  }
+}
+
+// Found by fuzzing (tests/fuzz): bytes of the file that a message quotes are made printable, as control
+// characters and ill-formed UTF-8 would break the line or Python's str of the message.
+TEST(MaterialJson, MessagesQuoteTheFileAsPrintableUtf8) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {valid_with("\"version\": 1,", "\"version\": 1, \"\xc3\xa9t\xc3\xa9\": 3,"), "unknown key \"\xc3\xa9t\xc3\xa9\""},
+      {valid_with("\"version\": 1,", "\"version\": 1, \"a\x7f\": 3,"), "unknown key \"a?\""},  // DEL is valid JSON
+      {valid_with("\"version\": 1,", "\"version\": 1, \"a\xff\xfe\": 3,"), "not valid JSON"},
+      {valid_with("\"type\": \"air\"", "\"type\": \"a\\u0001b\""), "\"a?b\""},
+  };
+  for (const auto& [text, part] : cases) {
+    try {
+      read_material_json(text, "bad.json");
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const MaterialFileError& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find(part), std::string::npos) << message;
+      EXPECT_EQ(cli::printable(message), message) << "not printable UTF-8: " << message;
     }
   }
 }

@@ -69,5 +69,20 @@ TEST(PictureMetadata, APngWithoutTheChunkOrDamagedSaysSo) {
   EXPECT_THROW(encode_png_rgba8(4, 4, gradient(3, 4)), std::runtime_error) << "pixels that do not fill the image";
 }
 
+// Found by fuzzing (tests/fuzz): a text chunk whose length field says 2 GB, in a file of a few hundred bytes. libpng
+// allocates a chunk before it reads it; the reader caps every allocation, so the file is refused at once.
+TEST(PictureMetadata, AChunkLengthBeyondTheFileIsRefusedWithoutAllocatingIt) {
+  std::string png = encode_png_rgba8(4, 4, gradient(4, 4), {picture_metadata(skin(), {})});
+  const std::size_t chunk = png.find("iTXt");
+  ASSERT_NE(chunk, std::string::npos);
+  for (int n = 0; n < 4; ++n) png[chunk - 4 + n] = "\x7a\x00\x00\x00"[n];  // 2046820352 bytes, big-endian
+  try {
+    material_from_picture(png, "huge.png");
+    ADD_FAILURE() << "a chunk of 2 GB was read";
+  } catch (const MaterialFileError& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("huge.png: ", 0), 0u) << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace skinlayer
