@@ -18,14 +18,19 @@ MaterialDocument read_material_file(const std::string& path) {
   if (!file) throw MaterialFileError("cannot read " + path + ": " + std::strerror(errno));
   const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   if (file.bad()) throw MaterialFileError("cannot read " + path + ": " + std::strerror(errno));
-  if (is_png(bytes)) return material_from_picture(bytes, path);
+  return read_material_bytes(bytes, path);
+}
+
+MaterialDocument read_material_bytes(std::string_view bytes, std::string_view source) {
+  if (is_png(bytes)) return material_from_picture(bytes, source);
   if (is_scatfun(bytes)) {
+    const std::string name(source);
     const std::optional<std::string_view> metadata = scatfun_metadata(bytes);
-    if (!metadata) throw MaterialFileError(path + " is a damaged SCATFUN file (shorter than its header says)");
-    if (metadata->empty()) throw MaterialFileError(path + " is a SCATFUN file without a material (no metadata)");
-    return read_material_json(*metadata, path);
+    if (!metadata) throw MaterialFileError(name + " is a damaged SCATFUN file (shorter than its header says)");
+    if (metadata->empty()) throw MaterialFileError(name + " is a SCATFUN file without a material (no metadata)");
+    return read_material_json(*metadata, source);
   }
-  return read_material_json(bytes, path);
+  return read_material_json(bytes, source);
 }
 
 void write_material_file(const MaterialDocument& document, const std::string& path) {
