@@ -4,8 +4,8 @@
 #pragma once
 
 #include <functional>
-#include <stdexcept>
 
+#include "core/cancellation.h"
 #include "core/parallel_for.h"
 
 namespace skinlayer {
@@ -45,11 +45,5 @@ struct PreviewResolution {
   int interface_azimuths = 97;
 };
 inline constexpr PreviewResolution kPreviewResolution{};
-
-// Thrown by a solve whose SolveOptions::cancelled returned true.
-class SolveCancelled : public std::runtime_error {
- public:
-  SolveCancelled() : std::runtime_error("solve cancelled") {}
-};
 
 }  // namespace skinlayer
