@@ -19,10 +19,10 @@
 #include "app/material/picture_metadata.h"
 #include "app/material/presets.h"
 #include "app/preview/edit_history.h"
-#include "app/preview/layer_stack.h"
 #include "app/preview/material_session.h"
 #include "app/preview/preview_state.h"
 #include "app/preview/recent_files.h"
+#include "app/preview/scripted_edit.h"
 #include "app/preview/solve_worker.h"
 #include "app/preview/view_layout.h"
 #include "app/render/environment_preview.h"
@@ -40,7 +40,6 @@
 #include "app/window/ui_context.h"
 #include "app/window/view_overlays.h"
 #include "core/conventions.h"
-#include "core/skin/skin_parameters.h"
 
 namespace skinlayer {
 namespace {
@@ -507,27 +506,6 @@ class Previewer {
       start_export(ExportFormat::Bsdf, argument);
     } else if (verb == "export-rgl") {
       start_export(ExportFormat::Rgl, argument);
-    } else if (verb == "layer") {
-      // The layers panel's buttons: "layer add", "layer remove I", "layer up I", "layer down I" (I 1-based).
-      const std::size_t gap = argument.find(' ');
-      const std::string what = argument.substr(0, gap);
-      const std::size_t index = gap == std::string::npos ? 0 : std::stoul(argument.substr(gap + 1)) - 1;
-      if (what == "add") {
-        add_layer(state_.material);
-      } else if (what == "remove") {
-        remove_layer(state_.material, index);
-      } else if (what == "up" || what == "down") {
-        move_layer(state_.material, index, what == "up" ? -1 : +1);
-      } else {
-        throw std::runtime_error("test action: unknown layer action '" + what + "'");
-      }
-    } else if (verb == "skin") {  // the Skin section's buttons: "skin on" (Make it a skin), "skin off"
-      if (argument == "on") {
-        state_.material.skin = SkinParameters{};
-        state_.material.model = SubsurfaceModel::Stam;
-      } else {
-        state_.material.skin.reset();
-      }
     } else if (verb == "match") {  // "match R,G,B": Match colour... with that sRGB-encoded colour
       const std::vector<std::string_view> channels = cli::split_list(argument, ',');
       if (channels.size() != 3) throw std::runtime_error("test action: match needs R,G,B");
@@ -537,44 +515,7 @@ class Previewer {
       pin_shown(state_);
     } else if (verb == "unpin") {
       unpin(state_);
-    } else if (verb == "split") {
-      state_.comparison.split = std::stod(argument);
-    } else if (verb == "lighting") {  // lighting KEY VALUE, KEY one of the lighting flags
-      const std::size_t gap = argument.find(' ');
-      const std::string key = argument.substr(0, gap), value = argument.substr(gap + 1);
-      LightingState& lighting = state_.lighting;
-      if (key == "env") {
-        lighting.environment = value == "none" ? "" : value;
-      } else if (key == "env-rotate") {
-        lighting.rotate_degrees = std::stod(value);
-      } else if (key == "env-ev") {
-        lighting.ev = std::stod(value);
-      } else if (key == "light") {
-        lighting.directional = value == "on";
-      } else {
-        throw std::runtime_error("test action: unknown lighting key " + key);
-      }
-    } else if (verb == "set") {
-      const std::size_t gap = argument.find(' ');
-      const std::string name = argument.substr(0, gap);
-      const double value = std::stod(argument.substr(gap + 1));
-      Material& layer = state_.material.layer;
-      if (state_.material.skin && name != "sigma" && name != "eta") {  // a skin slider, by its key
-        skin_parameter(*state_.material.skin, name) = value;
-      } else if (name == "sigma") {
-        layer.sigma = value;
-      } else if (name == "eta") {
-        layer.eta = value;
-      } else if (name == "g") {
-        layer.g = value;
-      } else if (name == "T") {
-        layer.tau = optical_depth_from_transparency(value);
-      } else if (name == "albedo") {
-        state_.material.albedo_rgb = {value, value, value};
-      } else {
-        throw std::runtime_error("test action: unknown parameter " + name);
-      }
-    } else {
+    } else if (!apply_scripted_edit(state_, verb, argument)) {
       throw std::runtime_error("test action: unknown action '" + action + "'");
     }
   }
