@@ -31,11 +31,11 @@ std::vector<double> clamped_cosines(std::span<const double> mu) {
   return result;
 }
 
-// The interface kernels of a solve, from the caller's cache where it has them.
+// The interface kernels of a solve, from the caller's cache where it has them (options.cache); a build that is
+// cancelled part-way throws before anything is cached.
 std::shared_ptr<const InterfaceKernels> kernels_for(const Material& material, const Resolution& resolution,
                                                     std::span<const double> mu_in, std::span<const double> mu_out,
-                                                    SolveCache* cache, const ParallelFor& parallel_for,
-                                                    KernelSet set = KernelSet::All) {
+                                                    const SolveOptions& options, KernelSet set = KernelSet::All) {
   InterfaceKernelKey key{classify_layer(material),
                          resolution.ordinates,
                          resolution.interface_modes,
@@ -44,11 +44,11 @@ std::shared_ptr<const InterfaceKernels> kernels_for(const Material& material, co
                          clamped_cosines(mu_out),
                          set};
   const auto build = [&] {
-    return interface_kernels(key.geometry, key.ordinates, key.modes, key.azimuths, key.mu_in, key.mu_out, parallel_for,
-                             key.set);
+    return interface_kernels(key.geometry, key.ordinates, key.modes, key.azimuths, key.mu_in, key.mu_out,
+                             options.parallel_for, key.set, options.cancelled);
   };
-  if (cache == nullptr) return std::make_shared<const InterfaceKernels>(build());
-  return cache->interface_kernels(key, build);
+  if (options.cache == nullptr) return std::make_shared<const InterfaceKernels>(build());
+  return options.cache->interface_kernels(key, build);
 }
 
 }  // namespace
@@ -75,9 +75,10 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
   std::vector<double> grid(k);
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
   const UnscatteredLight unscattered = options.exact_unscattered ? UnscatteredLight(material) : UnscatteredLight();
-  const auto kernels = kernels_for(material, resolution, grid, grid, options.cache, options.parallel_for);
+  const auto kernels = kernels_for(material, resolution, grid, grid, options);
   // One layer is a stack of one: core/solve/stack_solver.h solves both. The channels share it.
-  const StackSolver solver(material, resolution, kernels, unscattered.path(), options.cache, options.parallel_for);
+  const StackSolver solver(material, resolution, kernels, unscattered.path(), options.cache, options.parallel_for,
+                           options.cancelled);
   struct ModeTables {
     Eigen::MatrixXd reflection, transmission;
   };
@@ -85,9 +86,7 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
     StackSolver::ModeResult r = solver.solve_mode(m, layer_albedos(channels[static_cast<std::size_t>(channel)]));
     return {std::move(r.reflection), std::move(r.transmission)};
   };
-  const auto check_cancelled = [&options] {
-    if (options.cancelled && options.cancelled()) throw SolveCancelled();
-  };
+  const auto check_cancelled = [&options] { throw_if_cancelled(options.cancelled); };
   check_cancelled();
   const double tolerance = options.fourier_tolerance;
 
@@ -170,9 +169,8 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
       bounce.bottom.sigma = unscattered.bottom().sigma;
       bounce.bottom.eta = 1.0 / unscattered.bottom().eta;
     }
-    const auto coarse_kernels = internal ? kernels_for(bounce, resolution, grid, grid, options.cache,
-                                                       options.parallel_for, KernelSet::BottomBounce)
-                                         : kernels;
+    const auto coarse_kernels =
+        internal ? kernels_for(bounce, resolution, grid, grid, options, KernelSet::BottomBounce) : kernels;
     const InterfaceKernels& coarse = *coarse_kernels;
     Resolution finer = resolution;
     finer.ordinates = bottom_bounce_ordinates(resolution.ordinates, coarse.geometry.top);
@@ -183,8 +181,7 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
     for (const Coefficients& c : solved) mode0.push_back(Eigen::Map<const Eigen::MatrixXd>(c.reflection.data(), k, k));
     if (!bottom_bounce_matters(coarse_mode0, mode0)) return;
     check_cancelled();
-    const auto fine =
-        kernels_for(bounce, finer, grid, grid, options.cache, options.parallel_for, KernelSet::BottomBounce);
+    const auto fine = kernels_for(bounce, finer, grid, grid, options, KernelSet::BottomBounce);
     const Eigen::VectorXd fine_attenuation = slab_attenuation(fine->quadrature.nodes, unscattered.tau());
     int modes = 0;
     for (const Coefficients& c : solved) modes = std::max(modes, c.modes);
@@ -294,9 +291,8 @@ std::vector<std::vector<DirectionalAlbedo>> directional_albedo(std::span<const M
   const Material& material = channels.front();
   const Resolution resolution = flux_resolution(material, options);
   const std::vector<double> mu0 = cosines_of(theta_i);
-  const StackSolver solver(material, resolution,
-                           kernels_for(material, resolution, mu0, {}, options.cache, options.parallel_for),
-                           UnscatteredPath::None, options.cache, options.parallel_for);
+  const StackSolver solver(material, resolution, kernels_for(material, resolution, mu0, {}, options),
+                           UnscatteredPath::None, options.cache, options.parallel_for, options.cancelled);
   std::vector<std::vector<DirectionalAlbedo>> result;
   for (const Material& channel : channels) {
     std::vector<DirectionalAlbedo> rows = solver.directional_albedo(solver.solve_mode(0, layer_albedos(channel)));

@@ -54,7 +54,8 @@ struct HalfVectorTilt {
 }  // namespace
 
 FourierKernel interface_fourier(const RoughDielectric& interface, std::span<const double> mu_from,
-                                std::span<const double> mu_to, const CosineProjector& projector) {
+                                std::span<const double> mu_to, const CosineProjector& projector,
+                                const CancelCheck& cancelled) {
   const auto kernel_for_pair = [&interface](const Vec3& wi, double cos_to) {
     const double g1_wi = smith_g1_beckmann(wi.z(), interface.sigma);
     const double g1_wo = smith_g1_beckmann(cos_to, interface.sigma);
@@ -66,6 +67,7 @@ FourierKernel interface_fourier(const RoughDielectric& interface, std::span<cons
   const std::size_t n_to = mu_to.size();
   std::vector<int> support(mu_from.size() * n_to, n);
   for (std::size_t a = 0; a < mu_from.size(); ++a) {
+    throw_if_cancelled(cancelled);
     const Vec3 wi = -propagation_direction(mu_from[a], 0.0);
     if (interface.eta == 1.0 || wi.z() == 0.0) continue;
     double nearest = std::numeric_limits<double>::infinity();
@@ -93,7 +95,8 @@ FourierKernel interface_fourier(const RoughDielectric& interface, std::span<cons
   const auto support_for_pair = [&support, n_to](int a, int b) {
     return support[static_cast<std::size_t>(a) * n_to + static_cast<std::size_t>(b)];
   };
-  FourierKernel kernel = project_propagation_kernel(kernel_for_pair, support_for_pair, mu_from, mu_to, projector);
+  FourierKernel kernel =
+      project_propagation_kernel(kernel_for_pair, support_for_pair, mu_from, mu_to, projector, cancelled);
   if (mirrored) {
     for (Eigen::MatrixXd& mode : kernel) {
       for (Eigen::Index a = 0; a < mode.cols(); ++a) {

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "core/cancellation.h"
 #include "core/interfaces/interface_albedo.h"
 #include "core/interfaces/microfacet.h"
 #include "core/series/fourier.h"
@@ -12,9 +13,11 @@
 namespace skinlayer {
 
 // f^m(d_from -> d_to) of the interface's full BSDF (reflection or transmission, whichever the signs imply), for
-// signed propagation cosines. Per mode an (n_to x n_from) matrix, in 1/sr.
+// signed propagation cosines. Per mode an (n_to x n_from) matrix, in 1/sr. `cancelled` is asked once per incident
+// direction (core/cancellation.h).
 FourierKernel interface_fourier(const RoughDielectric& interface, std::span<const double> mu_from,
-                                std::span<const double> mu_to, const CosineProjector& projector);
+                                std::span<const double> mu_to, const CosineProjector& projector,
+                                const CancelCheck& cancelled = {});
 
 // Turns coefficients over quadrature directions (from = nodes with weights a_j) into operators that map node
 // radiance to outgoing radiance:  K^m(o, j) = c_m f^m(mu_j -> mu_o) |mu_j| a_j  (dimensionless).

@@ -21,7 +21,7 @@ InternalInterfaceKernels internal_interface_kernels(const RoughDielectric& inter
                                                     int max_modes, int interface_azimuths,
                                                     std::span<const double> mu_in, std::span<const double> mu_out,
                                                     const InternalInterfaceNeeds& needs,
-                                                    const ParallelFor& parallel_for) {
+                                                    const ParallelFor& parallel_for, const CancelCheck& cancelled) {
   InternalInterfaceKernels k;
   k.interface = interface;
   const CosineProjector projector(max_modes, interface_azimuths);
@@ -37,17 +37,17 @@ InternalInterfaceKernels internal_interface_kernels(const RoughDielectric& inter
   });
   std::vector<std::function<void()>> tasks;
   tasks.emplace_back([&] {
-    k.reflect_above = interface_fourier(interface, down, up, projector);
+    k.reflect_above = interface_fourier(interface, down, up, projector, cancelled);
     match_reflection_energy(k.reflect_above, up, weights, reflectances(k.from_above));
     apply_quadrature_weights(k.reflect_above, up, weights);
   });
   tasks.emplace_back([&] {
-    k.reflect_below = interface_fourier(interface, up, down, projector);
+    k.reflect_below = interface_fourier(interface, up, down, projector, cancelled);
     match_reflection_energy(k.reflect_below, up, weights, reflectances(k.from_below));
     apply_quadrature_weights(k.reflect_below, up, weights);
   });
   tasks.emplace_back([&] {
-    k.transmit_down = interface_fourier(interface, down, down, projector);
+    k.transmit_down = interface_fourier(interface, down, down, projector, cancelled);
     match_column_energy(k.transmit_down, up, weights, transmittances(k.from_above));
     k.transmit_up = transmission_by_reciprocity(k.transmit_down, interface.eta);
     apply_quadrature_weights(k.transmit_down, up, weights);
@@ -55,29 +55,29 @@ InternalInterfaceKernels internal_interface_kernels(const RoughDielectric& inter
   });
   if (needs.up_rows) {
     tasks.emplace_back([&] {
-      k.reflect_above_rows = interface_fourier(interface, down, mu_out, projector);
+      k.reflect_above_rows = interface_fourier(interface, down, mu_out, projector, cancelled);
       apply_quadrature_weights(k.reflect_above_rows, up, weights);
-      k.transmit_up_rows = interface_fourier(interface, up, mu_out, projector);
+      k.transmit_up_rows = interface_fourier(interface, up, mu_out, projector, cancelled);
       apply_quadrature_weights(k.transmit_up_rows, up, weights);
     });
   }
   if (needs.down_rows) {
     tasks.emplace_back([&] {
-      k.reflect_below_rows = interface_fourier(interface, up, down_out, projector);
+      k.reflect_below_rows = interface_fourier(interface, up, down_out, projector, cancelled);
       apply_quadrature_weights(k.reflect_below_rows, up, weights);
-      k.transmit_down_rows = interface_fourier(interface, down, down_out, projector);
+      k.transmit_down_rows = interface_fourier(interface, down, down_out, projector, cancelled);
       apply_quadrature_weights(k.transmit_down_rows, up, weights);
     });
   }
   if (needs.beam) {
     tasks.emplace_back([&] {
       k.beam_albedo = interface_albedos_along(interface, mu_in, 1.0);
-      k.beam_reflect = interface_fourier(interface, down_in, up, projector);
+      k.beam_reflect = interface_fourier(interface, down_in, up, projector, cancelled);
       match_column_energy(k.beam_reflect, up, weights, reflectances(k.beam_albedo));
-      k.beam_transmit = interface_fourier(interface, down_in, down, projector);
+      k.beam_transmit = interface_fourier(interface, down_in, down, projector, cancelled);
       match_column_energy(k.beam_transmit, up, weights, transmittances(k.beam_albedo));
-      if (needs.up_rows) k.beam_reflect_rows = interface_fourier(interface, down_in, mu_out, projector);
-      if (needs.down_rows) k.beam_transmit_rows = interface_fourier(interface, down_in, down_out, projector);
+      if (needs.up_rows) k.beam_reflect_rows = interface_fourier(interface, down_in, mu_out, projector, cancelled);
+      if (needs.down_rows) k.beam_transmit_rows = interface_fourier(interface, down_in, down_out, projector, cancelled);
     });
   }
   run_parallel(parallel_for, static_cast<int>(tasks.size()), [&](int i) { tasks[static_cast<std::size_t>(i)](); });

@@ -15,6 +15,7 @@
 #include <span>
 #include <vector>
 
+#include "core/cancellation.h"
 #include "core/interfaces/interface_albedo.h"
 #include "core/interfaces/microfacet.h"
 #include "core/parallel_for.h"
@@ -54,6 +55,7 @@ InternalInterfaceKernels internal_interface_kernels(const RoughDielectric& inter
                                                     int max_modes, int interface_azimuths,
                                                     std::span<const double> mu_in, std::span<const double> mu_out,
                                                     const InternalInterfaceNeeds& needs,
-                                                    const ParallelFor& parallel_for = {});
+                                                    const ParallelFor& parallel_for = {},
+                                                    const CancelCheck& cancelled = {});
 
 }  // namespace skinlayer

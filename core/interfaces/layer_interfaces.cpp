@@ -53,7 +53,7 @@ std::size_t InterfaceKernels::bytes() const {
 
 InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
                                    std::span<const double> mu_in, std::span<const double> mu_out,
-                                   const ParallelFor& parallel_for, KernelSet set) {
+                                   const ParallelFor& parallel_for, KernelSet set, const CancelCheck& cancelled) {
   InterfaceKernels k;
   k.geometry = geometry;
   k.quadrature = double_gauss_half_range(ordinates);
@@ -77,7 +77,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   std::vector<std::function<void()>> tasks;
   if (!geometry.top_open && (all || bottom_is_top)) {
     tasks.emplace_back([&] {
-      k.r_top = interface_fourier(geometry.top, up, down, surface);
+      k.r_top = interface_fourier(geometry.top, up, down, surface, cancelled);
       k.top_inside = interface_albedos_along(geometry.top, up, -1.0);
       match_reflection_energy(k.r_top, up, weights, reflectances(k.top_inside));
       apply_quadrature_weights(k.r_top, up, weights);
@@ -85,7 +85,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   }
   if (!geometry.top_open) {
     tasks.emplace_back([&] {
-      k.t_source = interface_fourier(geometry.top, down_in, down, surface);
+      k.t_source = interface_fourier(geometry.top, down_in, down, surface, cancelled);
       match_column_energy(k.t_source, up, weights, transmittances(interface_albedos_along(geometry.top, mu_in, 1.0)));
       if (want_exit) {
         // By reciprocity the exit operator inherits the energy matching of the source columns, row by row.
@@ -95,15 +95,15 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
     });
     if (all && want_exit && geometry.base == LayerBase::Open) {
       tasks.emplace_back([&] {
-        k.t_source_exterior = interface_fourier(geometry.top, down_in, down_out, surface);
-        k.r_top_rows = interface_fourier(geometry.top, up, down_out, surface);
+        k.t_source_exterior = interface_fourier(geometry.top, down_in, down_out, surface, cancelled);
+        k.r_top_rows = interface_fourier(geometry.top, up, down_out, surface, cancelled);
         apply_quadrature_weights(k.r_top_rows, up, weights);
       });
     }
   }
   if (rough_bottom && !bottom_is_top) {
     tasks.emplace_back([&] {
-      k.r_bottom = interface_fourier(geometry.bottom, down, up, surface);
+      k.r_bottom = interface_fourier(geometry.bottom, down, up, surface, cancelled);
       k.bottom_inside = interface_albedos_along(geometry.bottom, up, 1.0);
       match_reflection_energy(k.r_bottom, up, weights, reflectances(k.bottom_inside));
       apply_quadrature_weights(k.r_bottom, up, weights);
@@ -114,7 +114,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
         // matched to its slope-space transmittance. A sharp, low-contrast bottom (sigma3 0.2, eta3 1.2) has an
         // interior lobe ~ sigma3 (1 - 1/eta3) wide, narrower than the node spacing: its unmatched node sums ripple
         // by percents across exit angles.
-        FourierKernel from_below = interface_fourier(geometry.bottom, mu_out, up, surface);
+        FourierKernel from_below = interface_fourier(geometry.bottom, mu_out, up, surface, cancelled);
         match_column_energy(from_below, up, weights,
                             transmittances(interface_albedos_along(geometry.bottom, mu_out, -1.0)));
         k.t_bottom_exit = transmission_by_reciprocity(from_below, 1.0 / geometry.bottom.eta);
@@ -124,16 +124,16 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   }
   if (all && rough_bottom && geometry.top_open) {
     tasks.emplace_back([&] {
-      k.s_bottom_beam = interface_fourier(geometry.bottom, down_in, up, surface);
+      k.s_bottom_beam = interface_fourier(geometry.bottom, down_in, up, surface, cancelled);
       match_column_energy(k.s_bottom_beam, up, weights,
                           reflectances(interface_albedos_along(geometry.bottom, mu_in, 1.0)));
     });
     if (want_exit) {
       tasks.emplace_back([&] {
-        k.t_bottom_beam = interface_fourier(geometry.bottom, down_in, down_out, surface);
-        k.r_bottom_rows = interface_fourier(geometry.bottom, down, mu_out, surface);
+        k.t_bottom_beam = interface_fourier(geometry.bottom, down_in, down_out, surface, cancelled);
+        k.r_bottom_rows = interface_fourier(geometry.bottom, down, mu_out, surface, cancelled);
         apply_quadrature_weights(k.r_bottom_rows, up, weights);
-        k.r_bottom_beam_rows = interface_fourier(geometry.bottom, down_in, mu_out, surface);
+        k.r_bottom_beam_rows = interface_fourier(geometry.bottom, down_in, mu_out, surface, cancelled);
       });
     }
   }

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "core/cancellation.h"
 #include "core/interfaces/interface_albedo.h"
 #include "core/interfaces/microfacet.h"
 #include "core/material.h"
@@ -62,9 +63,11 @@ enum class KernelSet { All, BottomBounce };
 // mu_in: the outside cosines light arrives along (clamped off 0 by the caller); mu_out: those the tables leave along,
 // either none (fluxes only) or the same as mu_in. ordinates N, Fourier modes projected and azimuth samples as the
 // resolution says. The independent kernels (top reflection, top transmission, bottom ...) run through parallel_for
-// when it is given (SolveOptions::parallel_for); the result is the same either way.
+// when it is given (SolveOptions::parallel_for); the result is the same either way. `cancelled` is asked once per
+// incident direction of every kernel (interface_fourier), so a cancelled solve stops inside the build.
 InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
                                    std::span<const double> mu_in, std::span<const double> mu_out,
-                                   const ParallelFor& parallel_for = {}, KernelSet set = KernelSet::All);
+                                   const ParallelFor& parallel_for = {}, KernelSet set = KernelSet::All,
+                                   const CancelCheck& cancelled = {});
 
 }  // namespace skinlayer

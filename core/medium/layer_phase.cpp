@@ -15,25 +15,26 @@ std::size_t PhaseKernels::bytes() const {
 }
 
 PhaseKernels phase_kernels(double g, const QuadratureRule& quadrature, int max_modes, int phase_azimuths,
-                           std::span<const double> mu_in, std::span<const double> mu_out, bool beam, bool exterior) {
+                           std::span<const double> mu_in, std::span<const double> mu_out, bool beam, bool exterior,
+                           const CancelCheck& cancelled) {
   PhaseKernels k;
   const CosineProjector projector(max_modes, phase_azimuths);
   const std::span<const double> up = quadrature.nodes;
   const std::vector<double> down = negated(up);
   const std::vector<double> down_in = negated(mu_in);
   const std::vector<double> down_out = negated(mu_out);
-  k.phase = henyey_greenstein_matrices(g, up, quadrature.weights, projector);
+  k.phase = henyey_greenstein_matrices(g, up, quadrature.weights, projector, cancelled);
   if (beam) {
-    k.beam_up_nodes = henyey_greenstein_fourier(g, down_in, up, projector);
-    k.beam_down_nodes = henyey_greenstein_fourier(g, down_in, down, projector);
+    k.beam_up_nodes = henyey_greenstein_fourier(g, down_in, up, projector, cancelled);
+    k.beam_down_nodes = henyey_greenstein_fourier(g, down_in, down, projector, cancelled);
     if (exterior) {
-      k.beam_rows_up = henyey_greenstein_fourier(g, down_in, mu_out, projector);
-      k.beam_rows_down = henyey_greenstein_fourier(g, down_in, down_out, projector);
+      k.beam_rows_up = henyey_greenstein_fourier(g, down_in, mu_out, projector, cancelled);
+      k.beam_rows_down = henyey_greenstein_fourier(g, down_in, down_out, projector, cancelled);
     }
   }
   if (exterior) {
-    k.same_rows = henyey_greenstein_fourier(g, up, mu_out, projector);
-    k.opposite_rows = henyey_greenstein_fourier(g, down, mu_out, projector);
+    k.same_rows = henyey_greenstein_fourier(g, up, mu_out, projector, cancelled);
+    k.opposite_rows = henyey_greenstein_fourier(g, down, mu_out, projector, cancelled);
   }
   return k;
 }

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "core/cancellation.h"
 #include "core/medium/henyey_greenstein.h"
 #include "core/series/fourier.h"
 #include "core/series/quadrature.h"
@@ -25,8 +26,10 @@ struct PhaseKernels {
 };
 
 // beam: the beam enters unscattered (open top); exterior: exits are scattered to directly (open top or open base).
+// `cancelled` is asked once per direction of every kernel and between blocks of their projections.
 PhaseKernels phase_kernels(double g, const QuadratureRule& quadrature, int max_modes, int phase_azimuths,
-                           std::span<const double> mu_in, std::span<const double> mu_out, bool beam, bool exterior);
+                           std::span<const double> mu_in, std::span<const double> mu_out, bool beam, bool exterior,
+                           const CancelCheck& cancelled = {});
 
 // The beam's particular solution (core/solve/boundary_solve.h) in a slab of single-scattering albedo `albedo` (<= the
 // solver's clamp), Fourier mode m, for unit irradiance mu0 F = 1 along each mu_in (kernels built with beam = true).

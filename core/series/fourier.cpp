@@ -1,5 +1,6 @@
 #include "core/series/fourier.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -23,6 +24,16 @@ CosineProjector::CosineProjector(int modes, int samples) : weights_(modes, sampl
 }
 
 double CosineProjector::angle(int k) const { return k * kPi / (samples() - 1); }
+
+Eigen::MatrixXd CosineProjector::project(const Eigen::MatrixXd& samples, const CancelCheck& cancelled) const {
+  Eigen::MatrixXd coefficients(weights_.rows(), samples.cols());
+  for (Eigen::Index start = 0; start < samples.cols(); start += kProjectBlock) {
+    throw_if_cancelled(cancelled);
+    const Eigen::Index width = std::min(kProjectBlock, samples.cols() - start);
+    coefficients.middleCols(start, width).noalias() = weights_ * samples.middleCols(start, width);
+  }
+  return coefficients;
+}
 
 AdaptiveCosineSeries::AdaptiveCosineSeries(int max_modes, double tolerance) : tolerance_(tolerance) {
   if (max_modes < 16) throw std::invalid_argument("AdaptiveCosineSeries: need max_modes >= 16");

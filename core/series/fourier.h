@@ -8,6 +8,7 @@
 #include <span>
 #include <vector>
 
+#include "core/cancellation.h"
 #include "core/interfaces/microfacet.h"
 
 namespace skinlayer {
@@ -33,6 +34,10 @@ class CosineProjector {
 
   // samples: one column per function, one row per azimuth sample. Returns modes x functions.
   Eigen::MatrixXd project(const Eigen::MatrixXd& samples) const { return weights_ * samples; }
+  // The same, kProjectBlock functions at a time, asking `cancelled` before each block (core/cancellation.h): the
+  // projection of a whole kernel (tens of ms at 120 ordinates) stops part-way when a solve is cancelled.
+  Eigen::MatrixXd project(const Eigen::MatrixXd& samples, const CancelCheck& cancelled) const;
+  static constexpr Eigen::Index kProjectBlock = 1024;
   // The same for one function that is 0 beyond its first head.size() samples (phi_0 = 0, phi_1, ...).
   Eigen::VectorXd project_head(const Eigen::Ref<const Eigen::VectorXd>& head) const {
     return weights_.leftCols(head.size()) * head;
@@ -70,11 +75,12 @@ Vec3 propagation_direction(double mu, double phi);
 // a function of Delta phi alone (core/interfaces/interface_azimuth_sweep.h), it is called instead.
 // support_for_pair(a, b) gives how many leading azimuth samples (phi_0 = 0, phi_1, ...) can hold a non-negligible
 // value for the pair (mu_from[a], mu_to[b]); the rest are taken as 0, neither evaluated nor projected, so a narrow
-// lobe costs in proportion to its azimuthal width. Returns one (to x from) matrix per mode.
+// lobe costs in proportion to its azimuthal width. Returns one (to x from) matrix per mode. `cancelled` is asked
+// before each incident direction's column (throw_if_cancelled).
 template <class PairKernel, class PairSupport>
 FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, const PairSupport& support_for_pair,
                                          std::span<const double> mu_from, std::span<const double> mu_to,
-                                         const CosineProjector& projector) {
+                                         const CosineProjector& projector, const CancelCheck& cancelled = {}) {
   const int n_from = static_cast<int>(mu_from.size());
   const int n_to = static_cast<int>(mu_to.size());
   const int n = projector.samples();
@@ -106,6 +112,7 @@ FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, cons
   if (2 * filled >= pairs * n) {  // mostly full: one matrix product over every pair
     Eigen::MatrixXd samples(n, n_from * n_to);
     for (int a = 0; a < n_from; ++a) {
+      throw_if_cancelled(cancelled);
       const Vec3 wi = incident(a);
       for (int b = 0; b < n_to; ++b) {
         const int count = support[static_cast<std::size_t>(a) * n_to + b];
@@ -115,7 +122,7 @@ FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, cons
       }
     }
     FourierKernel result(projector.modes(), Eigen::MatrixXd(n_to, n_from));
-    const Eigen::MatrixXd coefficients = projector.project(samples);
+    const Eigen::MatrixXd coefficients = projector.project(samples, cancelled);
     for (int m = 0; m < projector.modes(); ++m) {
       for (int a = 0; a < n_from; ++a) {
         for (int b = 0; b < n_to; ++b) result[m](b, a) = coefficients(m, a * n_to + b);
@@ -126,6 +133,7 @@ FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, cons
   FourierKernel result(projector.modes(), Eigen::MatrixXd::Zero(n_to, n_from));
   Eigen::VectorXd head(n);
   for (int a = 0; a < n_from; ++a) {
+    throw_if_cancelled(cancelled);
     const Vec3 wi = incident(a);
     for (int b = 0; b < n_to; ++b) {
       const int count = support[static_cast<std::size_t>(a) * n_to + b];
@@ -141,10 +149,11 @@ FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, cons
 // The same for a kernel that may be non-zero at every azimuth.
 template <class PairKernel>
 FourierKernel project_propagation_kernel(const PairKernel& kernel_for_pair, std::span<const double> mu_from,
-                                         std::span<const double> mu_to, const CosineProjector& projector) {
+                                         std::span<const double> mu_to, const CosineProjector& projector,
+                                         const CancelCheck& cancelled = {}) {
   const int every = projector.samples();
   return project_propagation_kernel(
-      kernel_for_pair, [every](int, int) { return every; }, mu_from, mu_to, projector);
+      kernel_for_pair, [every](int, int) { return every; }, mu_from, mu_to, projector, cancelled);
 }
 
 }  // namespace skinlayer

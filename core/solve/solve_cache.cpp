@@ -25,7 +25,8 @@ void SolveCache::insert(const Key& key, std::shared_ptr<const void> value, std::
 
 std::shared_ptr<const PhaseKernels> cached_phase_kernels(SolveCache* cache, double g, const QuadratureRule& quadrature,
                                                          int modes, int azimuths, std::span<const double> mu_in,
-                                                         std::span<const double> mu_out, bool beam, bool exterior) {
+                                                         std::span<const double> mu_out, bool beam, bool exterior,
+                                                         const CancelCheck& cancelled) {
   const PhaseKernelKey key{g,
                            static_cast<int>(quadrature.size()),
                            modes,
@@ -35,7 +36,8 @@ std::shared_ptr<const PhaseKernels> cached_phase_kernels(SolveCache* cache, doub
                            beam,
                            exterior};
   const auto build = [&] {
-    return phase_kernels(key.g, quadrature, key.modes, key.azimuths, key.mu_in, key.mu_out, key.beam, key.exterior);
+    return phase_kernels(key.g, quadrature, key.modes, key.azimuths, key.mu_in, key.mu_out, key.beam, key.exterior,
+                         cancelled);
   };
   return cache ? cache->phase_kernels(key, build) : std::make_shared<const PhaseKernels>(build());
 }

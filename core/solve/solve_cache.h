@@ -18,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/cancellation.h"
 #include "core/interfaces/internal_interface.h"
 #include "core/interfaces/layer_interfaces.h"
 #include "core/medium/layer_phase.h"
@@ -115,8 +116,10 @@ class SolveCache {
 // this call). The key names the outside directions only where the projections use them (beam: the open top's beam
 // from mu_in; exterior: exits scattered to directly along mu_out), so that a solve without them finds the node
 // matrices of another one.
+// A build cancelled part-way (core/cancellation.h) throws before anything is cached.
 std::shared_ptr<const PhaseKernels> cached_phase_kernels(SolveCache* cache, double g, const QuadratureRule& quadrature,
                                                          int modes, int azimuths, std::span<const double> mu_in,
-                                                         std::span<const double> mu_out, bool beam, bool exterior);
+                                                         std::span<const double> mu_out, bool beam, bool exterior,
+                                                         const CancelCheck& cancelled = {});
 
 }  // namespace skinlayer

@@ -31,9 +31,11 @@ struct SolveOptions {
   // operators are matched to the accurate albedos at any N, but the lobes are smeared to the ordinates (pointwise
   // errors of a few percent, up to ~20% near peaks): docs/accuracy.md's figures hold for the full solve only.
   bool preview = false;
-  // Asked between stages (after the interface operators, before each Fourier mode): returning true abandons the
-  // solve by throwing SolveCancelled. It may be called from the parallel-for's threads at once. Empty = never.
-  std::function<bool()> cancelled;
+  // Asked while the interface operators are built (once per incident direction of each kernel) and between stages
+  // (before each Fourier mode): returning true abandons the solve by throwing SolveCancelled (core/cancellation.h).
+  // It may be called from the parallel-for's threads at once. Empty = never. A cancelled solve leaves nothing half
+  // built in SolveOptions::cache.
+  CancelCheck cancelled;
 };
 
 // What SolveOptions::preview caps the automatic resolution at: 15-18 ms for an RGB solve on both cores of the 2-core

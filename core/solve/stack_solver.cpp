@@ -25,7 +25,7 @@ Eigen::RowVectorXd flux_weights(const QuadratureRule& q) {
 
 StackSolver::StackSolver(const Material& material, const Resolution& resolution,
                          std::shared_ptr<const InterfaceKernels> kernels, UnscatteredPath exact_path, SolveCache* cache,
-                         const ParallelFor& parallel_for)
+                         const ParallelFor& parallel_for, const CancelCheck& cancelled)
     : kernels_(std::move(kernels)), layers_(stack_layers(material)), bottom_(material.bottom) {
   const LayerGeometry& geometry = kernels_->geometry;
   const QuadratureRule& q = kernels_->quadrature;
@@ -59,7 +59,7 @@ StackSolver::StackSolver(const Material& material, const Resolution& resolution,
                                      needs.beam};
       const auto build = [&] {
         return internal_interface_kernels(key.interface, q, key.modes, key.azimuths, key.mu_in, key.mu_out, needs,
-                                          parallel_for);
+                                          parallel_for, cancelled);
       };
       faces_[i - 1] = cache ? cache->internal_interface_kernels(key, build)
                             : std::make_shared<const InternalInterfaceKernels>(build());
@@ -92,7 +92,7 @@ StackSolver::StackSolver(const Material& material, const Resolution& resolution,
 
   for (std::size_t i = 0; i < count; ++i) {
     phase_.push_back(cached_phase_kernels(cache, layers_[i].g, q, resolution.max_modes, resolution.phase_azimuths,
-                                          mu_in, mu_out, beam_amplitude_[i].size() != 0, exterior_));
+                                          mu_in, mu_out, beam_amplitude_[i].size() != 0, exterior_, cancelled));
   }
 }
 

@@ -33,9 +33,11 @@ class StackSolver {
   // (mu_in: light arrives along; mu_out: the tables leave along, none for fluxes only); the internal interfaces' and
   // the layers' phase kernels are built here, or taken from the cache. exact_path: the unscattered path
   // (UnscatteredPath) left out of the exit sums, because the caller evaluates it exactly; None keeps every path on
-  // the ordinates.
+  // the ordinates. `cancelled` is asked while the internal interfaces' and the phase kernels are built
+  // (core/cancellation.h).
   StackSolver(const Material& material, const Resolution& resolution, std::shared_ptr<const InterfaceKernels> kernels,
-              UnscatteredPath exact_path, SolveCache* cache, const ParallelFor& parallel_for);
+              UnscatteredPath exact_path, SolveCache* cache, const ParallelFor& parallel_for,
+              const CancelCheck& cancelled = {});
 
   struct ModeResult {
     Eigen::MatrixXd reflection;    // K_out x K_in, graphics azimuth convention, 1/sr
