@@ -8,6 +8,8 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <memory>
+#include <mutex>
 #include <thread>
 #include <vector>
 
@@ -194,6 +196,136 @@ TEST(SolveWorker, NewerParametersAbandonARefinement) {
   EXPECT_EQ(stats.cancelled + stats.discarded, 1u) << "the refinement was abandoned or dropped";
   std::printf("[ worker  ] a refinement at sigma 0.05 gave way to newer parameters in %.1f ms (%llu cancelled)\n",
               milliseconds(Clock::now() - submitted_at), static_cast<unsigned long long>(stats.cancelled));
+}
+
+// A burst: four threads submit 250 requests each back to back while the owner polls. Each generation answers the
+// request it was returned for, results come out newest-last and each once, and the newest of the thousand wins.
+TEST(SolveWorker, TheNewestOfABurstOfAThousandRequestsWins) {
+  constexpr int kThreads = 4, kPerThread = 250, kRequests = kThreads * kPerThread;
+  SolveWorker worker;
+  std::mutex mutex;
+  std::vector<int> request_of_generation(kRequests + 1, -1);  // which request_number() got each generation
+  std::atomic<int> submitters_done{0};
+  std::uint64_t last_seen = 0;
+  int results_seen = 0;
+  {
+    std::vector<std::jthread> submitters;
+    for (int t = 0; t < kThreads; ++t) {
+      submitters.emplace_back([&, t] {
+        for (int i = 0; i < kPerThread; ++i) {
+          const int k = t * kPerThread + i;
+          const std::uint64_t generation = worker.submit(request_number(k));
+          const std::lock_guard lock(mutex);
+          request_of_generation.at(generation) = k;
+        }
+        ++submitters_done;
+      });
+    }
+    while (submitters_done.load() < kThreads) {  // the owner polls while the burst goes on
+      if (std::optional<SolveResult> result = worker.poll()) {
+        EXPECT_GT(result->generation, last_seen) << "results come out newest-last, each once";
+        last_seen = result->generation;
+        ++results_seen;
+        const std::lock_guard lock(mutex);
+        const int k = request_of_generation.at(result->generation);
+        if (k >= 0) {
+          EXPECT_TRUE(same_request(result->request, request_number(k))) << "generation " << k;
+        }
+      }
+    }
+  }
+  ASSERT_TRUE(std::ranges::none_of(request_of_generation.begin() + 1, request_of_generation.end(),
+                                   [](int k) { return k < 0; }))
+      << "every submit got its own generation, 1 to " << kRequests;
+  const int newest = request_of_generation.back();
+  const SolveResult final_result = wait_for(worker, kRequests, 120s);
+  ASSERT_EQ(final_result.error, "");
+  EXPECT_TRUE(same_request(final_result.request, request_number(newest)));
+  EXPECT_FALSE(worker.busy());
+  EXPECT_FALSE(worker.settling());
+  EXPECT_FALSE(worker.poll().has_value());
+  const SolveRequest& request = final_result.request;
+  expect_same_tables(final_result.tables(), solve_color(request.material, request.theta_i));
+  const SolveWorkerStats stats = worker.stats();
+  std::printf("[ worker  ] a burst of %d requests from %d threads: %llu solves, %llu cancelled, %d results polled\n",
+              kRequests, kThreads, static_cast<unsigned long long>(stats.solved),
+              static_cast<unsigned long long>(stats.cancelled), results_seen);
+  EXPECT_LT(stats.solved, static_cast<std::uint64_t>(kRequests / 10)) << "pending requests are coalesced";
+}
+
+// Sharp interfaces (sigma 0.05, 120 ordinates): the interface kernels take the first half of its full solve. It has a
+// preview phase first.
+SolveRequest kernel_bound_request() {
+  SolveRequest request = request_number(2);
+  request.material.layer.sigma = 0.05;
+  return request;
+}
+
+double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Submits the request and returns once its full-resolution solve has begun (its preview, if any, is out).
+std::uint64_t submit_up_to_the_full_solve(SolveWorker& worker, const SolveRequest& request) {
+  const std::uint64_t generation = worker.submit(request);
+  if (preview_is_coarser(request.material.layer)) {
+    EXPECT_TRUE(next_result(worker, 120s).preview);
+  }
+  return generation;
+}
+
+// How long the worker's full solve of a request takes, from its start (after its preview) to its result.
+double full_solve_seconds(const SolveRequest& request) {
+  SolveWorker worker;
+  const std::uint64_t generation = submit_up_to_the_full_solve(worker, request);
+  const auto start = Clock::now();
+  while (worker.settling()) std::this_thread::sleep_for(1ms);
+  const double seconds = seconds_since(start);
+  EXPECT_EQ(wait_for(worker, generation, 1s).error, "");
+  return seconds;
+}
+
+// Newer parameters stop a solve inside its interface kernels (core asks the worker once per incident direction),
+// not after them: submitted a tenth into the full solve, the newer request's result comes out far sooner than the
+// abandoned kernels would have taken to end (another third of the solve). The abandoned build leaves nothing
+// behind: the same request solved again through the worker's cache is the cold solve exactly.
+TEST(SolveWorker, ANewerRequestStopsASolveInsideItsInterfaceKernels) {
+  const SolveRequest slow = kernel_bound_request();
+  const SolveRequest fast = request_number(7);
+  const double slow_seconds = full_solve_seconds(slow), fast_seconds = full_solve_seconds(fast);
+
+  SolveWorker worker;
+  submit_up_to_the_full_solve(worker, slow);
+  std::this_thread::sleep_for(std::chrono::duration<double>(0.1 * slow_seconds));
+  const auto submitted = Clock::now();
+  const std::uint64_t generation = worker.submit(fast);
+  const SolveResult result = wait_for(worker, generation, 120s);  // fails on any result of the slow request
+  const double waited = seconds_since(submitted);
+  EXPECT_EQ(result.generation, generation);
+  EXPECT_EQ(worker.stats().cancelled, 1u);
+  std::printf("[ worker  ] full solve at sigma 0.05 %.0f ms, a cheap one %.0f ms; the cheap one, submitted %.0f ms into "
+              "the first, came out after %.0f ms\n",
+              1000.0 * slow_seconds, 1000.0 * fast_seconds, 100.0 * slow_seconds, 1000.0 * waited);
+  EXPECT_LT(waited, fast_seconds + 0.15 * slow_seconds);
+
+  const std::uint64_t again = submit_up_to_the_full_solve(worker, slow);
+  const SolveResult resolved = wait_for(worker, again, 300s);
+  ASSERT_EQ(resolved.error, "");
+  ASSERT_FALSE(resolved.preview);
+  expect_same_tables(resolved.tables(), solve_color(slow.material, slow.theta_i));
+}
+
+// Shutdown inside the kernels stops them at once rather than waiting for the build to end.
+TEST(SolveWorker, DestroyingItInsideTheInterfaceKernelsReturnsPromptly) {
+  const SolveRequest slow = kernel_bound_request();
+  const double slow_seconds = full_solve_seconds(slow);
+  auto worker = std::make_unique<SolveWorker>();
+  submit_up_to_the_full_solve(*worker, slow);
+  std::this_thread::sleep_for(std::chrono::duration<double>(0.1 * slow_seconds));
+  const auto start = Clock::now();
+  worker.reset();
+  const double shutdown = seconds_since(start);
+  std::printf("[ worker  ] shutdown inside a %.0f ms full solve took %.1f ms\n", 1000.0 * slow_seconds,
+              1000.0 * shutdown);
+  EXPECT_LT(shutdown, 0.15 * slow_seconds);
 }
 
 TEST(SolveWorker, AnInvalidMaterialComesBackAsAnError) {

@@ -1,0 +1,62 @@
+// The executables' parallel-for (app/process/parallel_for.h), the one that core's parallel paths run on: every index
+// once, on several threads, the first exception rethrown after every thread has finished, and nesting. ./setup.sh
+// test runs it under ThreadSanitizer too (ctest -L threads in build-tsan/).
+#include "app/process/parallel_for.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace skinlayer {
+namespace {
+
+TEST(ParallelFor, RunsEveryIndexOnceOnSeveralThreads) {
+  constexpr int kCount = 2000;
+  std::vector<std::atomic<int>> runs(kCount);
+  std::mutex mutex;
+  std::set<std::thread::id> threads;
+  parallel_for_threads(kCount, [&](int index) {
+    ++runs[static_cast<std::size_t>(index)];
+    const std::lock_guard lock(mutex);
+    threads.insert(std::this_thread::get_id());
+  });
+  for (int index = 0; index < kCount; ++index) EXPECT_EQ(runs[static_cast<std::size_t>(index)].load(), 1) << index;
+  EXPECT_TRUE(threads.contains(std::this_thread::get_id())) << "the calling thread works too";
+  EXPECT_LE(threads.size(), std::max(1u, std::thread::hardware_concurrency()));
+}
+
+TEST(ParallelFor, NoIndexRunsNothingAndOneRunsOnTheCallingThread) {
+  int calls = 0;
+  parallel_for_threads(0, [&](int) { ++calls; });
+  EXPECT_EQ(calls, 0);
+  std::thread::id ran_on;
+  parallel_for_threads(1, [&](int) { ran_on = std::this_thread::get_id(); });
+  EXPECT_EQ(ran_on, std::this_thread::get_id());
+}
+
+TEST(ParallelFor, RethrowsTheFirstExceptionAfterEveryIndexHasRun) {
+  constexpr int kCount = 64;
+  std::atomic<int> finished{0};
+  EXPECT_THROW(parallel_for_threads(kCount,
+                                    [&](int index) {
+                                      if (index % 16 == 3) throw std::runtime_error("index " + std::to_string(index));
+                                      ++finished;
+                                    }),
+               std::runtime_error);
+  EXPECT_EQ(finished.load(), kCount - 4) << "the other indices still ran, and all had ended before the rethrow";
+}
+
+// The solver nests them (RGB channels side by side, each with its kernels side by side): a body may call it again.
+TEST(ParallelFor, BodiesMayRunAParallelForOfTheirOwn) {
+  std::atomic<int> inner{0};
+  parallel_for_threads(8, [&](int) { parallel_for_threads(50, [&](int) { ++inner; }); });
+  EXPECT_EQ(inner.load(), 8 * 50);
+}
+
+}  // namespace
+}  // namespace skinlayer
