@@ -5,9 +5,11 @@
 #   ./setup.sh run     install, configure, build and start the previewer (build/skinlayer; without a display it
 #                      says so and points to the headless `skinlayer render`)
 #   ./setup.sh test    install, configure, build everything and run every test; then build core, the command line's
-#                      GL-free parsers and their tests again under AddressSanitizer + UndefinedBehaviorSanitizer
-#                      (build-sanitize/: SKINLAYER_SANITIZE=ON, SKINLAYER_BUILD_APP=OFF) and run those tests too
-#                      but the slowest (sanitize_skipped), where any sanitizer report fails the test
+#                      GL-free parsers, the readers' fuzz targets and their tests again with clang under
+#                      AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/: SKINLAYER_SANITIZE=address,
+#                      SKINLAYER_FUZZ=ON, SKINLAYER_BUILD_APP=OFF), run those tests too but the slowest
+#                      (sanitize_skipped), where any sanitizer report fails the test, and fuzz every reader for
+#                      fuzz_seconds (tests/fuzz/run_fuzzers.sh)
 #
 # Idempotent: apt is skipped when every package is already installed, and an existing build folder is reused.
 set -euo pipefail
@@ -18,10 +20,12 @@ readonly packages=(
   libeigen3-dev libglm-dev libglfw3-dev libosmesa6-dev libimgui-dev libstb-dev
   nlohmann-json3-dev libpng-dev
   libgtest-dev libbenchmark-dev xvfb xauth fonts-dejavu-core python3-jsonschema
+  clang libclang-rt-14-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
 )
 readonly build_dir=build
 readonly sanitize_dir=build-sanitize
+readonly fuzz_seconds=30  # per reader, two readers at a time
 # Any report stops the test with a stack trace. LeakSanitizer is on: it works in this VM (it needs ptrace-like
 # thread suspension, which some containers forbid; there, add detect_leaks=0 to ASAN_OPTIONS).
 readonly sanitizer_env=(
@@ -81,18 +85,26 @@ sanitize_skipped_tests=(
 sanitize_skipped="^($(IFS='|'; echo "${sanitize_skipped_tests[*]}"))$"
 readonly sanitize_skipped
 
-# The second build of `test`: core and the GL-free parsers with their tests, under ASan + UBSan.
+# The second build of `test`: core, the GL-free parsers and the readers' fuzz targets with their tests, with clang
+# (libFuzzer) under ASan + UBSan; then each reader fuzzed for fuzz_seconds.
 sanitize_test() {
-  local options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINLAYER_SANITIZE=ON -DSKINLAYER_BUILD_APP=OFF
-                 -DSKINLAYER_BUILD_BENCH=OFF)
+  local options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINLAYER_SANITIZE=address -DSKINLAYER_FUZZ=ON
+                 -DSKINLAYER_BUILD_APP=OFF -DSKINLAYER_BUILD_BENCH=OFF)
+  # A folder configured before with another compiler (g++ until issue 28) cannot switch: it is made anew.
+  if [[ -f "$sanitize_dir/CMakeCache.txt" ]] &&
+     ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++' "$sanitize_dir/CMakeCache.txt"; then
+    echo "setup.sh: $sanitize_dir/ was configured with another compiler than clang; configuring it anew"
+    rm -rf "$sanitize_dir"
+  fi
   if [[ -f "$sanitize_dir/CMakeCache.txt" ]]; then
     cmake -S . -B "$sanitize_dir" "${options[@]}"
   else
-    cmake -S . -B "$sanitize_dir" -G Ninja "${options[@]}"
+    CC=clang CXX=clang++ cmake -S . -B "$sanitize_dir" -G Ninja "${options[@]}"
   fi
   # The build runs the test executables too (gtest_discover_tests lists their tests), so it gets the options.
   env "${sanitizer_env[@]}" cmake --build "$sanitize_dir" -j2
   env "${sanitizer_env[@]}" ctest --test-dir "$sanitize_dir" --output-on-failure -j2 -E "$sanitize_skipped"
+  env "${sanitizer_env[@]}" tests/fuzz/run_fuzzers.sh "$sanitize_dir" "$fuzz_seconds"
 }
 
 install_packages
