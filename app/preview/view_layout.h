@@ -24,6 +24,9 @@ struct Rect {
   std::array<float, 2> center() const { return {x + 0.5f * width, y + 0.5f * height}; }
 };
 
+// The controls panel's width in ImGui units at content scale 1 (the previewer scales it with the content).
+inline constexpr float kPanelWidth = 390.0f;
+
 struct PreviewLayout {
   Rect panel;   // the controls, full height on the left
   Rect sphere;  // empty when the view kind hides it

@@ -46,7 +46,6 @@ namespace {
 
 constexpr int kWindowWidth = 1280;  // screen coordinates at content scale 1
 constexpr int kWindowHeight = 720;
-constexpr float kPanelWidth = 390.0f;    // ImGui units at content scale 1
 constexpr int kCaptureSettleFrames = 3;  // frames drawn with the final result before a capture (>= 2: ImGui
                                          // hides auto-sized windows on their first frame)
 constexpr double kCaptureTimeoutSeconds = 300.0;
