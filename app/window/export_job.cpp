@@ -2,6 +2,7 @@
 
 #include <exception>
 #include <filesystem>
+#include <string_view>
 
 #include "app/export/material_export.h"
 #include "app/material/atomic_file.h"
@@ -15,6 +16,12 @@ const char* export_format_name(ExportFormat format) {
 }
 const char* export_extension(ExportFormat format) {
   return format == ExportFormat::Merl ? ".binary" : format == ExportFormat::Bsdf ? ".bsdf" : ".rgl.bsdf";
+}
+
+std::string with_export_extension(const std::string& path, ExportFormat format) {
+  const std::string_view extension = export_extension(format);
+  if (path.ends_with(extension)) return path;
+  return std::filesystem::path(path).replace_extension(extension).string();
 }
 
 std::string timestamped_export_name(ExportFormat format) {

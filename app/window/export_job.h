@@ -25,6 +25,10 @@ enum class ExportFormat {
 const char* export_format_name(ExportFormat format);
 const char* export_extension(ExportFormat format);
 
+// The path with the format's extension in place of its own ("shot.png" -> "shot.binary"), kept as it is when it
+// already ends with it ("a.rgl.bsdf" stays, rather than becoming "a.rgl.rgl.bsdf").
+std::string with_export_extension(const std::string& path, ExportFormat format);
+
 class ExportJob {
  public:
   ExportJob() = default;

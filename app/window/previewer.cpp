@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <chrono>
 #include <deque>
-#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -398,7 +397,7 @@ class Previewer {
       return;
     }
     std::string path = requested.empty() ? state_.export_options.path : requested;
-    if (!path.empty()) path = std::filesystem::path(path).replace_extension(export_extension(format)).string();
+    if (!path.empty()) path = with_export_extension(path, format);
     if (!export_job_.start(format, shown_->tables(), path)) last_export_ = "an export is already running";
   }
 

@@ -40,6 +40,14 @@ std::string outcome_of(ExportJob& job, int& progress_lines) {
   return "";
 }
 
+TEST(ExportJob, TheFormatsExtensionReplacesThePathsOwnOnce) {
+  EXPECT_EQ(with_export_extension("out/shot.png", ExportFormat::Merl), "out/shot.binary");
+  EXPECT_EQ(with_export_extension("shot.png", ExportFormat::Rgl), "shot.rgl.bsdf");
+  EXPECT_EQ(with_export_extension("shot.rgl.bsdf", ExportFormat::Rgl), "shot.rgl.bsdf");
+  EXPECT_EQ(with_export_extension("shot.bsdf", ExportFormat::Rgl), "shot.rgl.bsdf");
+  EXPECT_EQ(with_export_extension("shot", ExportFormat::Bsdf), "shot.bsdf");
+}
+
 TEST(ExportJob, WritesTheFileOnItsThreadWhileTheOwnerReadsItsProgress) {
   const std::filesystem::path path = scratch("merl.binary");
   std::filesystem::remove(path);
