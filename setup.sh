@@ -9,7 +9,9 @@
 #                      AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/: SKINLAYER_SANITIZE=address,
 #                      SKINLAYER_FUZZ=ON, SKINLAYER_BUILD_APP=OFF), run those tests too but the slowest
 #                      (sanitize_skipped), where any sanitizer report fails the test, and fuzz every reader for
-#                      fuzz_seconds (tests/fuzz/run_fuzzers.sh)
+#                      fuzz_seconds (tests/fuzz/run_fuzzers.sh); last, build the threaded code's tests under
+#                      ThreadSanitizer (build-tsan/: SKINLAYER_SANITIZE=thread, target skinlayer_thread_tests) and
+#                      run them (ctest -L threads), where any data race fails the test
 #
 # Idempotent: apt is skipped when every package is already installed, and an existing build folder is reused.
 set -euo pipefail
@@ -25,6 +27,7 @@ readonly packages=(
 )
 readonly build_dir=build
 readonly sanitize_dir=build-sanitize
+readonly tsan_dir=build-tsan
 readonly fuzz_seconds=30  # per reader, two readers at a time
 # Any report stops the test with a stack trace. LeakSanitizer is on: it works in this VM (it needs ptrace-like
 # thread suspension, which some containers forbid; there, add detect_leaks=0 to ASAN_OPTIONS).
@@ -32,6 +35,7 @@ readonly sanitizer_env=(
   ASAN_OPTIONS=detect_leaks=1:halt_on_error=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1:strict_string_checks=1
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 )
+readonly tsan_env=(TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1)
 
 install_packages() {
   local missing=()
@@ -107,6 +111,19 @@ sanitize_test() {
   env "${sanitizer_env[@]}" tests/fuzz/run_fuzzers.sh "$sanitize_dir" "$fuzz_seconds"
 }
 
+# The third build of `test`: the threaded code's tests (the solver's parallel paths, the parallel-for, the solve
+# worker, the export job: tests/CMakeLists.txt labels them `threads`) under ThreadSanitizer, with g++.
+thread_sanitize_test() {
+  local options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINLAYER_SANITIZE=thread -DSKINLAYER_BUILD_BENCH=OFF)
+  if [[ -f "$tsan_dir/CMakeCache.txt" ]]; then
+    cmake -S . -B "$tsan_dir" "${options[@]}"
+  else
+    cmake -S . -B "$tsan_dir" -G Ninja "${options[@]}"
+  fi
+  env "${tsan_env[@]}" cmake --build "$tsan_dir" -j2 --target skinlayer_thread_tests
+  env "${tsan_env[@]}" ctest --test-dir "$tsan_dir" --output-on-failure -j2 -L threads
+}
+
 install_packages
 case "${1:-}" in
   "")
@@ -121,6 +138,7 @@ case "${1:-}" in
     cmake --build "$build_dir" -j2
     ctest --test-dir "$build_dir" --output-on-failure -j2
     sanitize_test
+    thread_sanitize_test
     ;;
   *)
     echo "usage: ./setup.sh [run|test]" >&2
