@@ -143,6 +143,8 @@ void SolveWorker::run(std::stop_token stop) {
       const std::lock_guard lock(mutex_);
       ++stats_.cancelled;
     }
+    const std::lock_guard lock(mutex_);
+    stats_.cache_bytes = cache_.bytes();
   }
 }
 

@@ -13,4 +13,16 @@ void retain_freed_heap_memory() {
 #endif
 }
 
+void limit_heap_arenas([[maybe_unused]] int arenas) {
+#if defined(__GLIBC__) && defined(M_ARENA_MAX)
+  mallopt(M_ARENA_MAX, arenas);
+#endif
+}
+
+void release_freed_heap_memory() {
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+}
+
 }  // namespace skinlayer

@@ -24,6 +24,8 @@
 #include "app/preview/scripted_edit.h"
 #include "app/preview/solve_worker.h"
 #include "app/preview/view_layout.h"
+#include "app/process/heap_retention.h"
+#include "app/process/resident_memory.h"
 #include "app/render/environment_preview.h"
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
@@ -77,7 +79,7 @@ class Previewer {
   }
 
   int run() {
-    const auto start = std::chrono::steady_clock::now();
+    last_action_ = std::chrono::steady_clock::now();
     double timeout = 0.0;
     while (!captured_) {
       if (window_.should_close()) {
@@ -87,8 +89,10 @@ class Previewer {
       }
       wait_events(timeout);
       timeout = frame();
+      // The capture waits for the solve of the final parameters: counted from the last scripted action, so that a
+      // long script (the soak test's thousands of edits) is not cut short.
       if (capture_path_ &&
-          std::chrono::steady_clock::now() - start > std::chrono::duration<double>(kCaptureTimeoutSeconds)) {
+          std::chrono::steady_clock::now() - last_action_ > std::chrono::duration<double>(kCaptureTimeoutSeconds)) {
         throw std::runtime_error("capture: the material was not solved within " +
                                  std::to_string(static_cast<int>(kCaptureTimeoutSeconds)) + " s");
       }
@@ -183,7 +187,7 @@ class Previewer {
     if (undo) step_history(history_.undo(current_edit()));
     if (redo) step_history(history_.redo(current_edit()));
     // One slider drag, or one drag of the light on the sphere, is one undo step: it commits on release.
-    history_.observe(current_edit(), ImGui::IsAnyItemActive());
+    history_.observe(current_edit(), ImGui::IsAnyItemActive() || !drag_steps_.empty());
     window_.set_title(window_title(files_.session(), state_.material, imgui_.unicode_labels()));
     submit_if_needed();
 
@@ -210,8 +214,23 @@ class Previewer {
     window_.swap_buffers();
 
     eager_frames_ = activity || refining ? kEagerFrames : std::max(eager_frames_ - 1, 0);
+    rest_if_idle(activity);
     if (capture_path_) return kCaptureWaitSeconds;
     return eager_frames_ > 0 ? kEagerWaitSeconds : kIdleWaitSeconds;
+  }
+
+  // Once the window comes to rest (no input or result for kEagerFrames frames, no solve, export or match running;
+  // an environment's estimate may still refine), the heap's freed pages go back to the kernel, once per rest
+  // (app/process/heap_retention.h).
+  void rest_if_idle(bool activity) {
+    quiet_frames_ = activity ? 0 : quiet_frames_ + 1;
+    if (activity) resting_ = false;
+    if (resting_ || quiet_frames_ < kEagerFrames || worker_.settling() || export_job_.running() ||
+        match_job_.running()) {
+      return;
+    }
+    release_freed_heap_memory();
+    resting_ = true;
   }
 
   // Uploads a newly finished result; returns true if there was one.
@@ -469,15 +488,23 @@ class Previewer {
   }
 
   // --test-actions: one action a frame, once the shown result answers the current parameters, so that each edit
-  // is solved and committed as its own undo step, as a person's would be.
+  // is solved and committed as its own undo step, as a person's would be. A drag moves on one value every frame
+  // without waiting, as the mouse does, and commits once when it ends.
   void run_test_action(std::vector<FileCommand>& commands, bool& undo, bool& redo) {
+    if (!drag_steps_.empty()) {
+      apply_scripted_edit(state_, "set", drag_steps_.front());
+      drag_steps_.pop_front();
+      return;
+    }
     const FileDialog::Kind dialog = files_.dialog().kind;
     if (test_actions_.empty() || !shown_ || solving() || match_job_.running() || dialog == FileDialog::Kind::Open ||
         dialog == FileDialog::Kind::SaveAs) {
       return;
     }
     const std::string action = test_actions_.front();
+    if (action == "memory" && !resting_) return;  // read at rest, as a person glancing at top would
     test_actions_.pop_front();
+    last_action_ = std::chrono::steady_clock::now();
     const std::size_t space = action.find(' ');
     const std::string verb = action.substr(0, space);
     const std::string argument = space == std::string::npos ? "" : action.substr(space + 1);
@@ -509,6 +536,16 @@ class Previewer {
       if (channels.size() != 3) throw std::runtime_error("test action: match needs R,G,B");
       start_match(state_.material, {std::stod(std::string(channels[0])), std::stod(std::string(channels[1])),
                                     std::stod(std::string(channels[2]))});
+    } else if (verb == "drag") {
+      const std::vector<std::string> steps = drag_steps(argument);
+      drag_steps_.assign(steps.begin(), steps.end());
+    } else if (verb == "memory") {  // the soak test's reading
+      const auto kilobytes = [](std::optional<std::size_t> bytes) {
+        return bytes ? std::to_string(*bytes / 1024) + " kB" : std::string("unknown");
+      };
+      out_ << "memory: resident " << kilobytes(resident_memory_bytes()) << ", heap in use "
+           << kilobytes(heap_in_use_bytes()) << ", solve cache " << kilobytes(worker_.stats().cache_bytes) << "\n"
+           << std::flush;
     } else if (verb == "pin") {
       pin_shown(state_);
     } else if (verb == "unpin") {
@@ -545,7 +582,10 @@ class Previewer {
   // --capture: once the shown result answers the final parameters and a few frames have shown it, save the whole
   // window through the same export path as the S key, and finish.
   void capture_if_ready(std::array<int, 2> framebuffer) {
-    if (!capture_path_ || !test_actions_.empty() || export_job_.running() || match_job_.running()) return;
+    if (!capture_path_ || !test_actions_.empty() || !drag_steps_.empty() || export_job_.running() ||
+        match_job_.running()) {
+      return;
+    }
     const bool final_result = submitted_ && !worker_.settling();
     if (final_result && !error_.empty()) throw std::runtime_error(error_);
     if (!final_result || !shown_ || shown_->preview || !same_request(shown_->request, *submitted_)) return;
@@ -581,9 +621,13 @@ class Previewer {
   int eager_frames_ = kEagerFrames;
   int settled_frames_ = 0;
   bool captured_ = false;
+  bool resting_ = false;  // the window has come to rest since the last activity (rest_if_idle)
+  int quiet_frames_ = 0;  // frames since the last input or result
   EditHistory history_;
   MaterialFiles files_;
   std::deque<std::string> test_actions_;
+  std::deque<std::string> drag_steps_;  // a scripted drag's "set" edits still to make, one a frame
+  std::chrono::steady_clock::time_point last_action_;  // when the last scripted action ran (or the window opened)
   EnvironmentPreview environment_;
   EnvironmentPreview environment_pinned_;     // B's estimate in the A/B comparison
   std::optional<ColorTables> pinned_tables_;  // B's tables (its textures are in Renderer::kPinnedSlot)

@@ -1,5 +1,8 @@
 #include "app/window/window_options.h"
 
+#include <algorithm>
+#include <fstream>
+#include <iterator>
 #include <vector>
 
 #include "app/cli/errors.h"
@@ -29,8 +32,16 @@ WindowOptions parse_window_options(std::span<const std::string_view> arguments) 
   options.document = document;
   options.material_path = std::string(flags.value("material").value_or(""));
   options.preset = std::string(flags.value("preset").value_or(""));
-  if (const std::optional<std::string_view> actions = flags.value("test-actions")) {
-    for (const std::string_view action : cli::split_list(*actions, ';')) {
+  if (const std::optional<std::string_view> value = flags.value("test-actions")) {
+    // "@FILE": the list is that file's text (a soak's thousands of actions are past what argv should carry).
+    std::string actions(*value);
+    if (actions.starts_with('@')) {
+      std::ifstream file(actions.substr(1), std::ios::binary);
+      if (!file) throw cli::UsageError("test-actions = '" + actions + "': cannot read " + actions.substr(1));
+      actions.assign(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+      std::replace(actions.begin(), actions.end(), '\n', ';');  // a line ends an action too
+    }
+    for (const std::string_view action : cli::split_list(actions, ';')) {
       if (!action.empty()) options.test_actions.emplace_back(action);
     }
   }
@@ -60,12 +71,14 @@ std::string window_usage() {
          "                       Lambert | Hanrahan-Krueger | the layer model)\n"
          "  --model M            the subsurface model of the sphere and plots: stam, lambert, hk\n"
          "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in [0, 1]\n"
-         "  --test-actions LIST  for tests: ';'-separated actions run once the first solve is shown (set NAME\n"
-         "                       VALUE, undo, redo, drop PATH, save PATH, preset NAME, quit, discard, title,\n"
+         "  --test-actions LIST  for tests: ';'-separated actions (@FILE: those in FILE, one a line or\n"
+         "                       ';'-separated) run once the first solve is shown\n"
+         "                       (set NAME VALUE, undo, redo, drop PATH, save PATH, preset NAME, quit, discard, title,\n"
          "                       layer add, layer remove|up|down I, export-merl PATH, export-bsdf PATH,\n"
          "                       export-rgl PATH, lighting env|env-rotate|env-ev|light VALUE, pin, unpin,\n"
-         "                       split FRACTION, skin on|off, match R,G,B; with a skin, set KEY VALUE sets\n"
-         "                       a skin slider)\n" +
+         "                       split FRACTION, skin on|off, match R,G,B, drag NAME V1,V2,... (a slider\n"
+         "                       dragged, one value a frame), memory (the resident memory, once the window\n"
+         "                       rests); with a skin, set KEY VALUE sets a skin slider)\n" +
          cli::lighting_flags_usage() + "\n" + cli::skin_flags_usage(false) + "\n" + cli::material_flags_usage();
 }
 

@@ -427,5 +427,16 @@ TEST(WindowSmoke, CaptureFlagsAreCheckedBeforeAWindowOpens) {
   EXPECT_NE(result.err.find("sigma"), std::string::npos) << result.err;
 }
 
+// --test-actions @FILE reads the list from a file (the soak's thousands of actions); a missing one is named.
+TEST(WindowSmoke, AnActionFileThatCannotBeReadIsNamedBeforeAWindowOpens) {
+  const ProcessResult result =
+      run_process({"env", "-u", "DISPLAY", "-u", "WAYLAND_DISPLAY", SKINLAYER_EXECUTABLE, "--capture", "x.png",
+                   "--test-actions", "@/nonexistent/actions.txt"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_TRUE(one_line(result.err)) << result.err;
+  EXPECT_NE(result.err.find("test-actions"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("/nonexistent/actions.txt"), std::string::npos) << result.err;
+}
+
 }  // namespace
 }  // namespace skinlayer::test
