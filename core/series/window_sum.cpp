@@ -28,12 +28,20 @@ Pair window_pair(const double* window, std::size_t grid_size, const double (&w_i
   return load_pair(w_o) * left + load_pair(w_o + 2) * right;
 }
 
+// SKINLAYER_PORTABLE_MODE_SUM (the ThreadSanitizer build) keeps the portable sum alone: GCC's dispatcher between
+// the target versions runs while the dynamic loader relocates the program, before TSan's runtime is set up, and
+// TSan's instrumentation of it crashes there.
+#if defined(SKINLAYER_PORTABLE_MODE_SUM)
+#define SKINLAYER_DEFAULT_TARGET
+#else
+#define SKINLAYER_DEFAULT_TARGET __attribute__((target("default")))
+#endif
+
 // cos(m phi) by the Chebyshev recurrence cos((m + 1) phi) = 2 cos(phi) cos(m phi) - cos((m - 1) phi); rounding grows
 // ~m ulp (< 1e-13 for m < 1024). Written into each build rather than shared: clang drops an inline helper that only
 // a target("default") version calls.
-__attribute__((target("default"))) WindowModeSums mode_sums(const double* first, const double* second, std::size_t k,
-                                                            int modes, const double (&w_i)[2][4],
-                                                            const double (&w_o)[2][4], double phi) {
+SKINLAYER_DEFAULT_TARGET WindowModeSums mode_sums(const double* first, const double* second, std::size_t k, int modes,
+                                                  const double (&w_i)[2][4], const double (&w_o)[2][4], double phi) {
   const double cos_phi = std::cos(phi);
   double current = 1.0, previous = cos_phi;  // cos(m phi), cos((m - 1) phi) at m = 0
   WindowModeSums sums{0.0, 0.0};
@@ -53,6 +61,7 @@ __attribute__((target("default"))) WindowModeSums mode_sums(const double* first,
   return sums;
 }
 
+#if !defined(SKINLAYER_PORTABLE_MODE_SUM)
 #if defined(__clang__)
 #pragma clang diagnostic push
 #pragma clang diagnostic ignored "-Wunused-function"  // clang 14 counts a version only the dispatcher calls as unused
@@ -103,6 +112,7 @@ __attribute__((target("avx2,fma"))) WindowModeSums mode_sums(const double* first
 #if defined(__clang__)
 #pragma clang diagnostic pop
 #endif
+#endif  // !SKINLAYER_PORTABLE_MODE_SUM
 
 }  // namespace
 
