@@ -502,7 +502,7 @@ class Previewer {
       return;
     }
     const std::string action = test_actions_.front();
-    if (action == "memory" && !resting_) return;  // read at rest, as a person glancing at top would
+    if ((action == "memory" || action == "rest") && !resting_) return;  // at rest, as a person glancing at top
     test_actions_.pop_front();
     last_action_ = std::chrono::steady_clock::now();
     const std::size_t space = action.find(' ');
@@ -539,6 +539,7 @@ class Previewer {
     } else if (verb == "drag") {
       const std::vector<std::string> steps = drag_steps(argument);
       drag_steps_.assign(steps.begin(), steps.end());
+    } else if (verb == "rest") {  // waits for the window to rest: no solve, export or match in flight
     } else if (verb == "memory") {  // the soak test's reading
       const auto kilobytes = [](std::optional<std::size_t> bytes) {
         return bytes ? std::to_string(*bytes / 1024) + " kB" : std::string("unknown");

@@ -77,8 +77,8 @@ std::string window_usage() {
          "                       layer add, layer remove|up|down I, export-merl PATH, export-bsdf PATH,\n"
          "                       export-rgl PATH, lighting env|env-rotate|env-ev|light VALUE, pin, unpin,\n"
          "                       split FRACTION, skin on|off, match R,G,B, drag NAME V1,V2,... (a slider\n"
-         "                       dragged, one value a frame), memory (the resident memory, once the window\n"
-         "                       rests); with a skin, set KEY VALUE sets a skin slider)\n" +
+         "                       dragged, one value a frame), rest (waits until nothing is in flight), memory\n"
+         "                       (the resident memory, at rest); with a skin, set KEY VALUE sets a skin slider)\n" +
          cli::lighting_flags_usage() + "\n" + cli::skin_flags_usage(false) + "\n" + cli::material_flags_usage();
 }
 
