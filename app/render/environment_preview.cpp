@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <stdexcept>
 
 #include "app/gl/gl_api.h"
@@ -19,14 +20,31 @@ void restart(std::optional<EnvironmentAccumulation>& accumulation, int width, in
   }
 }
 
+// What the renderer keeps an environment under: a built-in's name; a file's path with its size and time of change,
+// so that a file changed on disk is read again; "" (not kept) when the file cannot be looked at.
+std::string kept_key(const std::string& source) {
+  if (std::find(kBuiltinEnvironments.begin(), kBuiltinEnvironments.end(), source) != kBuiltinEnvironments.end()) {
+    return source;
+  }
+  std::error_code error;
+  const auto size = std::filesystem::file_size(source, error);
+  if (error) return "";
+  const auto changed = std::filesystem::last_write_time(source, error);
+  if (error) return "";
+  return source + "|" + std::to_string(size) + "|" + std::to_string(changed.time_since_epoch().count());
+}
+
 }  // namespace
 
 std::string EnvironmentPreview::load(Renderer& renderer, const std::string& source) {
   if (source.empty() || source == loaded_) return "";
-  try {
-    renderer.upload_environment(load_environment(source));
-  } catch (const std::exception& error) {
-    return error.what();
+  const std::string key = kept_key(source);
+  if (!renderer.show_kept_environment(key)) {
+    try {
+      renderer.upload_environment(load_environment(source), key);
+    } catch (const std::exception& error) {
+      return error.what();
+    }
   }
   loaded_ = source;
   reset();

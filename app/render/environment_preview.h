@@ -29,6 +29,7 @@ class EnvironmentPreview {
   static constexpr int kMaxSamples = 16384;
 
   // Makes `source` (a built-in name or a .hdr path; empty: none) the renderer's environment if it is not already.
+  // One shown before and kept by the renderer is shown again without reading it (unless the file has changed).
   // Returns the error ("" when it loaded); after an error the previous environment stays.
   std::string load(Renderer& renderer, const std::string& source);
   const std::string& loaded() const { return loaded_; }

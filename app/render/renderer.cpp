@@ -53,29 +53,6 @@ void bind_refilled_2d(GLuint program, const char* name, int unit, GLuint texture
   glUniform1i(location(program, name), unit);
 }
 
-// A float texture of one channel (R32F) or three (RGB32F), nearest-filtered unless `mipmapped` (then trilinear and
-// wrapping in u, for the environment map).
-void upload_float_texture(GLuint texture, int width, int height, int channels, const float* texels,
-                          bool mipmapped = false) {
-  glBindTexture(GL_TEXTURE_2D, texture);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, channels == 1 ? GL_R32F : GL_RGB32F, width, height, 0, channels == 1 ? GL_RED : GL_RGB,
-               GL_FLOAT, texels);
-  if (mipmapped) {
-    glGenerateMipmap(GL_TEXTURE_2D);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  } else {
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  }
-  glBindTexture(GL_TEXTURE_2D, 0);
-}
-
 // llvmpipe (Mesa's gallivm) ends the loops of a shader invocation once they have run LP_MAX_TGSI_LOOP_ITERATIONS =
 // 65535 iterations together (one counter shared by every loop, per group of 8 pixels), silently: a draw of too many
 // samples drops the rest and darkens the estimate, unevenly from group to group (a 1024-sample draw of the paper's
@@ -118,28 +95,22 @@ Renderer::Renderer()
     slots_[slot].transmission = gl::create_texture();
     upload(empty, slot);
   }
-  environment_ = {gl::create_texture(), gl::create_texture(), gl::create_texture(), gl::create_texture()};
-  upload_environment(*builtin_environment("furnace"));
+  upload_environment(*builtin_environment("furnace"), "furnace");
   gl::check_errors("Renderer()");
 }
 
-void Renderer::upload_environment(const EnvironmentMap& map) {
-  const EnvironmentDistribution distribution = environment_distribution(map);
-  upload_float_texture(environment_.radiance.get(), map.width, map.height, 3, map.rgb.data(), true);
-  upload_float_texture(environment_.density.get(), map.width, map.height, 1, distribution.density.data());
-  upload_float_texture(environment_.marginal.get(), map.height + 1, 1, 1, distribution.marginal.data());
-  upload_float_texture(environment_.conditional.get(), map.width + 1, map.height, 1, distribution.conditional.data());
-  environment_.width = map.width;
-  environment_.height = map.height;
-  gl::check_errors("Renderer::upload_environment");
+void Renderer::upload_environment(const EnvironmentMap& map, std::string key) {
+  environments_.add(std::move(key), upload_environment_textures(map));
 }
+
+bool Renderer::show_kept_environment(const std::string& key) { return environments_.show(key); }
 
 // The environment's textures on units 4-7 and its uniforms.
 void Renderer::bind_environment(GLuint program, const EnvironmentView& environment) const {
+  const EnvironmentTextures& shown = environments_.shown();
   const std::array<std::pair<const char*, GLuint>, 4> textures = {
-      std::pair{"u_env", environment_.radiance.get()}, std::pair{"u_env_density", environment_.density.get()},
-      std::pair{"u_env_marginal", environment_.marginal.get()},
-      std::pair{"u_env_conditional", environment_.conditional.get()}};
+      std::pair{"u_env", shown.radiance.get()}, std::pair{"u_env_density", shown.density.get()},
+      std::pair{"u_env_marginal", shown.marginal.get()}, std::pair{"u_env_conditional", shown.conditional.get()}};
   for (std::size_t k = 0; k < textures.size(); ++k) {
     glActiveTexture(GL_TEXTURE4 + static_cast<GLenum>(k));
     glBindTexture(GL_TEXTURE_2D, textures[k].second);
@@ -161,8 +132,8 @@ void Renderer::accumulate_environment(EnvironmentAccumulation& accumulation, con
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   glBindVertexArray(vertex_array_.get());
-  const int per_draw =
-      samples_per_draw(slots_.at(static_cast<std::size_t>(slot)).data.modes, environment_.width, environment_.height);
+  const EnvironmentTextures& shown = environments_.shown();
+  const int per_draw = samples_per_draw(slots_.at(static_cast<std::size_t>(slot)).data.modes, shown.width, shown.height);
   for (int left = samples; left > 0;) {
     const int draw = std::min(left, per_draw);
     glUniform1i(location(program, "u_samples"), draw);
@@ -223,7 +194,7 @@ void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface,
   // Every sampler on a unit of its own, used or not (two sampler types on one unit fail the draw).
   bind_environment(program, view.environment.value_or(EnvironmentView{}));
   glActiveTexture(GL_TEXTURE8);
-  glBindTexture(GL_TEXTURE_2D, environment ? environment->target().color_texture() : environment_.density.get());
+  glBindTexture(GL_TEXTURE_2D, environment ? environment->target().color_texture() : environments_.shown().density.get());
   if (environment) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

@@ -5,9 +5,11 @@
 
 #include <array>
 #include <optional>
+#include <string>
 
 #include "app/gl/gl_objects.h"
 #include "app/render/environment_map.h"
+#include "app/render/environment_textures.h"
 #include "app/render/render_target.h"
 #include "app/render/table_textures.h"
 #include "app/render/unscattered_plane.h"
@@ -97,9 +99,12 @@ class Renderer {
   void upload(TableTextureData tables, int slot = 0);
   const TableTextureData& table_data(int slot) const { return slots_.at(static_cast<std::size_t>(slot)).data; }
 
-  // The environment that EnvironmentView lights with: its map (mipmapped, for the blurred background) and its
-  // luminance distribution. Throws std::runtime_error for a black one.
-  void upload_environment(const EnvironmentMap& map);
+  // Makes `map` the environment that EnvironmentView lights with: its map (mipmapped, for the blurred background)
+  // and its luminance distribution. Throws std::runtime_error for a black one. Under a non-empty `key` it is kept
+  // after another is shown, within a budget (environment_textures.h), for show_kept_environment.
+  void upload_environment(const EnvironmentMap& map, std::string key = {});
+  // Shows the environment kept under `key` again, without an upload; false when none is kept under it.
+  bool show_kept_environment(const std::string& key);
   // Adds `samples` estimates per pixel (3 directions each) to the accumulation, for the table slot's material; the
   // accumulation covers a view of the sphere with the given aspect. Any number of samples: they are drawn in as many
   // draws as llvmpipe's loop limit needs (renderer.cpp, samples_per_draw). Leaves the default framebuffer bound.
@@ -137,11 +142,7 @@ class Renderer {
   gl::Program sphere_;
   gl::Program lobe_;
   gl::Program accumulate_;
-  struct EnvironmentTextures {
-    gl::Texture radiance, density, marginal, conditional;
-    int width = 0, height = 0;  // the map's texels
-  };
-  EnvironmentTextures environment_;
+  KeptEnvironments environments_;
   gl::Texture unscattered_plane_;  // the lobe plot's in-plane unscattered BTDF, refilled by every draw_lobes
   gl::Texture lobe_profile_;       // the lobe plot's in-plane subsurface profile, refilled by every draw_lobes
   gl::VertexArray vertex_array_;

@@ -4,13 +4,18 @@
 //   * an estimate at an eighth of the side, converged, shows the furnace picture of one at a quarter pixel by pixel,
 //     and the preview's one-sample first frame is unbiased against the converged picture;
 //   * every pixel of the sphere reads estimated texels (the estimate skips those far outside the limb);
-//   * a bad .hdr leaves the previous environment loaded and the error names the file.
+//   * a bad .hdr leaves the previous environment loaded and the error names the file;
+//   * an .hdr file changed on disk is read again when it is chosen again (the renderer keeps the ones shown).
 #include "app/render/environment_preview.h"
 
 #include <gtest/gtest.h>
+#include <stb_image_write.h>  // libstb.so holds the implementation
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -184,6 +189,45 @@ TEST(EnvironmentPreview, ABadFileKeepsThePreviousEnvironment) {
   const std::string error = f.preview.load(f.renderer, "/nonexistent/probe.hdr");
   EXPECT_NE(error.find("/nonexistent/probe.hdr"), std::string::npos) << error;
   EXPECT_EQ(f.preview.loaded(), "sky");
+}
+
+// The renderer keeps the environments shown (environment_textures.h) under a key that, for a file, holds its size
+// and time of change: choosing a file again after it changed shows the new file. Under a uniform radiance the
+// sampled directions do not depend on its level, so an estimate under radiance 2 is exactly twice the furnace's.
+TEST(EnvironmentPreview, AFileChangedOnDiskIsReadAgainWhenChosenAgain) {
+  Fixture f;
+  const std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("skinlayer-kept-" + std::to_string(::getpid()) + ".hdr");
+  const auto write_uniform = [&](float radiance) {
+    const std::vector<float> rgb(64 * 32 * 3, radiance);
+    ASSERT_TRUE(stbi_write_hdr(path.c_str(), 64, 32, 3, rgb.data()));
+  };
+  const auto estimate = [&] {
+    EnvironmentAccumulation accumulation(kSize / 4, kSize / 4);
+    f.renderer.accumulate_environment(accumulation, EnvironmentView{}, f.scene.surface, 16);
+    return accumulation.target().read_rgba32f();
+  };
+  write_uniform(1.0f);
+  ASSERT_EQ(f.preview.load(f.renderer, path.string()), "");
+  const std::vector<float> first = estimate();
+  ASSERT_EQ(f.preview.load(f.renderer, "furnace"), "");
+  EXPECT_EQ(estimate(), first);  // the furnace is a uniform radiance 1 too
+
+  // The same size, and a time of change set one second later, so that a coarse file clock cannot hide it.
+  const auto written = std::filesystem::last_write_time(path);
+  write_uniform(2.0f);
+  std::filesystem::last_write_time(path, written + std::chrono::seconds(1));
+  ASSERT_EQ(f.preview.load(f.renderer, path.string()), "");
+  const std::vector<float> changed = estimate();
+  std::filesystem::remove(path);
+  ASSERT_EQ(changed.size(), first.size());
+  int lit = 0;
+  for (std::size_t k = 0; k < first.size(); k += 4) {
+    if (first[k] <= 0.0f) continue;
+    ++lit;
+    EXPECT_NEAR(changed[k] / first[k], 2.0, 1e-5) << "texel " << k / 4;
+  }
+  EXPECT_GT(lit, 1000);
 }
 
 }  // namespace
