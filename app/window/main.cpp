@@ -12,7 +12,7 @@
 
 int main(int argc, char** argv) {
   skinlayer::retain_freed_heap_memory();
-  skinlayer::limit_heap_arenas(2);  // a long session on several threads (heap_retention.h)
+  skinlayer::limit_heap_arenas(1);  // a long session on several threads: one arena (heap_retention.h)
   const std::vector<std::string_view> arguments(argv + 1, argv + argc);
   return skinlayer::cli::run_reporting_errors(std::cerr, [&arguments] {
     const skinlayer::WindowOptions options = skinlayer::parse_window_options(arguments);
