@@ -36,8 +36,8 @@ std::size_t upload_float_texture(GLuint texture, int width, int height, int chan
 
 EnvironmentTextures upload_environment_textures(const EnvironmentMap& map) {
   const EnvironmentDistribution distribution = environment_distribution(map);
-  EnvironmentTextures textures{gl::create_texture(), gl::create_texture(), gl::create_texture(), gl::create_texture(),
-                               map.width, map.height, 0};
+  EnvironmentTextures textures{
+      gl::create_texture(), gl::create_texture(), gl::create_texture(), gl::create_texture(), map.width, map.height, 0};
   textures.bytes =
       upload_float_texture(textures.radiance.get(), map.width, map.height, 3, map.rgb.data(), true) +
       upload_float_texture(textures.density.get(), map.width, map.height, 1, distribution.density.data()) +

@@ -133,7 +133,8 @@ void Renderer::accumulate_environment(EnvironmentAccumulation& accumulation, con
   glBlendFunc(GL_ONE, GL_ONE);
   glBindVertexArray(vertex_array_.get());
   const EnvironmentTextures& shown = environments_.shown();
-  const int per_draw = samples_per_draw(slots_.at(static_cast<std::size_t>(slot)).data.modes, shown.width, shown.height);
+  const int per_draw =
+      samples_per_draw(slots_.at(static_cast<std::size_t>(slot)).data.modes, shown.width, shown.height);
   for (int left = samples; left > 0;) {
     const int draw = std::min(left, per_draw);
     glUniform1i(location(program, "u_samples"), draw);
@@ -194,7 +195,8 @@ void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface,
   // Every sampler on a unit of its own, used or not (two sampler types on one unit fail the draw).
   bind_environment(program, view.environment.value_or(EnvironmentView{}));
   glActiveTexture(GL_TEXTURE8);
-  glBindTexture(GL_TEXTURE_2D, environment ? environment->target().color_texture() : environments_.shown().density.get());
+  glBindTexture(GL_TEXTURE_2D,
+                environment ? environment->target().color_texture() : environments_.shown().density.get());
   if (environment) {
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

@@ -43,7 +43,7 @@ TEST(KeptEnvironments, KeepOthersWithinTheBudgetDroppingTheLeastRecentlyShownFir
   for (const char* key : {"a", "b", "c", "d"}) kept.add(key, upload_environment_textures(small_map()));
   EXPECT_EQ(kept.count(), 3u);  // d shown; c and b kept; a dropped
   EXPECT_FALSE(kept.show("a"));
-  EXPECT_TRUE(kept.show("b"));  // b shown; d, then c
+  EXPECT_TRUE(kept.show("b"));                              // b shown; d, then c
   kept.add("e", upload_environment_textures(small_map()));  // e shown; b, then d; c dropped
   EXPECT_FALSE(kept.show("c"));
   EXPECT_TRUE(kept.show("d"));
