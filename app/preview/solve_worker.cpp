@@ -56,8 +56,10 @@ bool wants_preview(const SolveRequest& request) {
 
 }  // namespace
 
-SolveWorker::SolveWorker(std::function<void()> on_published)
-    : on_published_(std::move(on_published)), thread_([this](std::stop_token stop) { run(std::move(stop)); }) {}
+SolveWorker::SolveWorker(std::function<void()> on_published, SolveFunction solve)
+    : on_published_(std::move(on_published)),
+      solve_(std::move(solve)),
+      thread_([this](std::stop_token stop) { run(std::move(stop)); }) {}
 
 std::uint64_t SolveWorker::submit(SolveRequest request) {
   std::optional<SolveRequest> replaced;  // destroyed after the lock is released
@@ -133,12 +135,12 @@ void SolveWorker::run(std::stop_token stop) {
     try {
       if (wants_preview(request)) {
         options.preview = true;
-        SolveResult preview = compute_solve(request, generation, options);
+        SolveResult preview = solve_(request, generation, options);
         const bool failed = !preview.error.empty();
         if (!publish(std::move(preview), failed) || failed || superseded(generation, stop)) continue;
         options.preview = false;
       }
-      publish(compute_solve(request, generation, options), true);
+      publish(solve_(request, generation, options), true);
     } catch (const SolveCancelled&) {
       const std::lock_guard lock(mutex_);
       ++stats_.cancelled;

@@ -51,6 +51,16 @@ struct SolveResult {
   }
 };
 
+// Runs one request on the calling thread: what the worker does for each phase of a job (options.preview picks the
+// phase). Exceptions become SolveResult::error, except SolveCancelled, which propagates. `options` carry the
+// worker's cache of interface operators, the parallel-for over the RGB channels and the cancellation check.
+SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation, const SolveOptions& options = {});
+
+// What the worker runs for each phase of a job: compute_solve, unless the owner gives another (the tests give one
+// that holds a solve on a latch, or watches its cancellation checks, and then calls compute_solve).
+using SolveFunction =
+    std::function<SolveResult(const SolveRequest& request, std::uint64_t generation, const SolveOptions& options)>;
+
 // How many solves ran and how many of their results were discarded as stale (for tests and diagnostics).
 struct SolveWorkerStats {
   std::uint64_t solved = 0;     // solves run to the end (previews and full solves)
@@ -64,7 +74,8 @@ class SolveWorker {
  public:
   // on_published is called on the worker thread, without the lock held, each time a result becomes available to
   // poll() (the window passes glfwPostEmptyEvent to wake its event loop). It must not call back into the worker.
-  explicit SolveWorker(std::function<void()> on_published = {});
+  // `solve` runs each phase on the worker thread (SolveFunction).
+  explicit SolveWorker(std::function<void()> on_published = {}, SolveFunction solve = compute_solve);
   ~SolveWorker() = default;  // the jthread member requests stop and joins
 
   SolveWorker(const SolveWorker&) = delete;
@@ -93,6 +104,7 @@ class SolveWorker {
   bool publish(SolveResult&& result, bool final_result);
 
   std::function<void()> on_published_;
+  SolveFunction solve_;
   mutable std::mutex mutex_;
   std::condition_variable_any wake_;
   std::optional<SolveRequest> pending_;  // the newest request, not started yet
@@ -104,10 +116,5 @@ class SolveWorker {
   SolveCache cache_;     // used by the worker thread only: re-solves that keep the interfaces reuse their operators
   std::jthread thread_;  // last: started after every member above exists, joined before they go
 };
-
-// Runs one request on the calling thread: what the worker does for each phase of a job (options.preview picks the
-// phase). Exceptions become SolveResult::error, except SolveCancelled, which propagates. `options` carry the
-// worker's cache of interface operators, the parallel-for over the RGB channels and the cancellation check.
-SolveResult compute_solve(const SolveRequest& request, std::uint64_t generation, const SolveOptions& options = {});
 
 }  // namespace skinlayer
