@@ -17,8 +17,9 @@ std::string material_usage() {
   return "Usage: skinlayer material [material flags] [--albedo A | r,g,b] [--model M] [--name N]\n"
          "                          [--description D] [-o FILE.json]\n"
          "\n"
-         "Writes the complete material, every value explicit, as a material file (JSON; README \"Material files\"),\n"
-         "to FILE.json or to stdout. Start from --material FILE or --preset NAME and change values with flags, as in\n"
+         "Writes the complete material, every value explicit, as a material file (JSON, described in\n"
+         "docs/guide/material-files.md) to FILE.json or to stdout. Start from --material FILE or --preset NAME and\n"
+         "change values with flags, as in\n"
          "  skinlayer material --preset skin-fair --sigma 0.3 -o my-skin.json\n"
          "Any command then reads it back with --material my-skin.json.\n" +
          rgb_albedo_usage() + skin_flags_usage(false) +

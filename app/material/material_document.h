@@ -1,4 +1,4 @@
-// A material as a file holds it (docs: README "Material files"): the layer parameters with a grey or RGB albedo,
+// A material as a file holds it (docs/guide/material-files.md): the layer parameters with a grey or RGB albedo,
 // the subsurface model, and a name and a one-line description. The value the JSON reader and writer
 // (material_json.h), the presets (presets.h), the command line's --material and --preset and the previewer share.
 #pragma once

@@ -1,5 +1,5 @@
 // Material files: JSON read and written with nlohmann-json, never by hand. The keys are the command line's flag
-// names and the values their values (README "Material files"; the schema is app/material/material.schema.json):
+// names and the values their values (docs/guide/material-files.md; the schema is app/material/material.schema.json):
 //
 //   {"format": "skinlayer-material", "version": 1, "name": "...", "description": "...",
 //    "top": {"sigma": 0.5, "eta": 1.4},

@@ -52,7 +52,7 @@ TEST(ReferenceTables, DisortIntensities) {
     const double theta_i = std::acos(mu0);
     for (std::size_t r : rows) {
       const bool reflected = table.text(r, "side") == "R";
-      if (!reflected && (ground > 0.0 || tau >= 1e6)) continue;  // not the slab's own BTDF (README)
+      if (!reflected && (ground > 0.0 || tau >= 1e6)) continue;  // not the slab's own BTDF (tests/reference/README.md)
       const double expected = table.number(r, "f_per_sr");
       if (expected < kPeakFraction * (reflected ? peak_r : peak_t)) continue;
       const double theta_o = std::acos(table.number(r, "mu"));

@@ -1,7 +1,7 @@
 // Experimental validation (Stam 2001's future work): the spectral skin fitted to measured human skin, the NIST
 // reference set of directional-hemispherical reflectance (tests/reference/nist_skin_reflectance.csv, see the README
 // there), over 400-700 nm at 8 degrees as `skinlayer match --spectrum` fits it. Five of the 50 subjects, spread over
-// the file, keep the test to seconds; README "Skin from biology" reports all 50.
+// the file, keep the test to seconds; docs/guide/skin.md reports all 50.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -51,7 +51,7 @@ TEST(MeasuredSkin, TheNistSpectraAreFitWithinTheTargets) {
   const MeasuredSpectra nist = read_nist();
   ASSERT_EQ(nist.subjects.size(), 50u);
   ASSERT_EQ(nist.wavelengths.size(), 207u);
-  // Every other row (6 nm steps) halves the cost, which matters under the sanitizers; the README's figures use all.
+  // Every other row (6 nm steps) halves the cost, which matters under the sanitizers; docs/guide/skin.md uses all.
   std::vector<double> wavelengths;
   for (std::size_t k = 0; k < nist.wavelengths.size(); k += 2) wavelengths.push_back(nist.wavelengths[k]);
   std::vector<double> rms;

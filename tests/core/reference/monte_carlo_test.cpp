@@ -2,7 +2,8 @@
 // of the solver; only this test brings the two together.
 //
 // Thresholds: |MC - solver| < 4 MC standard errors + a systematic allowance for the solver's own discretization.
-//   * Albedos: 1e-3 absolute, the solver's documented accuracy for directional albedos (README "Accuracy").
+//   * Albedos: 1e-3 absolute, the solver's documented accuracy for directional albedos (docs/guide/method.md,
+//     "Accuracy").
 //   * Binned BSDF: 1% of the value, for the solver's table splines and the averaging grid over the bin.
 // Paths: 2e6 per albedo case (SE ~1e-4 to 4e-4) and 4e6 for the bins; the whole suite takes ~7 s on 2 cores.
 #include "core/reference/monte_carlo.h"
