@@ -16,7 +16,7 @@
 #include "app/export/material_export.h"
 #include "app/material/atomic_file.h"
 #include "app/process/parallel_for.h"
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer::cli {
 std::string export_usage() {

@@ -19,11 +19,11 @@
 #include "app/process/parallel_for.h"
 #include "app/render/environment_map.h"
 #include "app/render/hdr_export.h"
-#include "app/render/material_solve.h"
 #include "app/render/png_export.h"
 #include "app/render/render_target.h"
 #include "app/render/scene.h"
 #include "app/render/table_textures.h"
+#include "app/solution/material_solve.h"
 #include "core/conventions.h"
 
 namespace skinlayer::cli {

@@ -1,4 +1,4 @@
-// A solved RGB material (app/render/material_solve.h) in the exchange formats: what `skinlayer export` and the
+// A solved RGB material (app/solution/material_solve.h) in the exchange formats: what `skinlayer export` and the
 // previewer's Export buttons both write.
 #pragma once
 
@@ -7,7 +7,7 @@
 
 #include "app/export/fourier_bsdf_export.h"
 #include "app/export/merl_brdf.h"
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

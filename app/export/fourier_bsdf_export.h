@@ -1,4 +1,4 @@
-// A solved material (app/render/material_solve.h) as the tabulated Fourier BSDF of app/export/scatfun_file.h, light
+// A solved material (app/solution/material_solve.h) as the tabulated Fourier BSDF of app/export/scatfun_file.h, light
 // from above and from below, reflection and transmission.
 //
 // Entry (row, col) for node cosines mu_r, mu_c (propagation against the downward axis) holds the series of
@@ -17,7 +17,7 @@
 #include <optional>
 
 #include "app/export/scatfun_file.h"
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

@@ -9,10 +9,10 @@
 #include <string>
 #include <string_view>
 
-#include "app/export/rgl_export.h"
 #include "app/export/fourier_bsdf_export.h"
+#include "app/export/rgl_export.h"
 #include "app/material/material_document.h"
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

@@ -8,7 +8,7 @@
 #include <array>
 
 #include "app/export/rgl_export.h"
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

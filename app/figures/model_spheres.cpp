@@ -2,11 +2,11 @@
 
 #include "app/figures/canvas.h"
 #include "app/gl/osmesa_context.h"
-#include "app/render/material_solve.h"
 #include "app/render/render_target.h"
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
 #include "app/render/table_textures.h"
+#include "app/solution/material_solve.h"
 #include "core/conventions.h"
 
 namespace skinlayer::figures {

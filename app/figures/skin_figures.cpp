@@ -13,7 +13,7 @@
 #include "app/figures/xy_plot.h"
 #include "app/material/picture_metadata.h"
 #include "app/process/parallel_for.h"
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 #include "core/conventions.h"
 #include "core/skin/skin_spectrum.h"
 

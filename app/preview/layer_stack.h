@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/material/material_document.h"
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

@@ -6,8 +6,8 @@
 
 #include <array>
 
-#include "app/render/material_solve.h"
 #include "app/render/renderer.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "app/material/material_document.h"
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "app/preview/solve_request.h"
-#include "app/render/material_solve.h"
 #include "app/render/scene.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

@@ -4,7 +4,7 @@
 
 #include <array>
 
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

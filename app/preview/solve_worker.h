@@ -27,8 +27,8 @@
 #include <thread>
 
 #include "app/preview/solve_request.h"
-#include "app/render/material_solve.h"
 #include "app/render/table_textures.h"
+#include "app/solution/material_solve.h"
 #include "core/solve/solve_cache.h"
 
 namespace skinlayer {

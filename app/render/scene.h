@@ -5,8 +5,8 @@
 #include <string_view>
 #include <vector>
 
-#include "app/render/material_solve.h"
 #include "app/render/renderer.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 #include "core/unscattered/unscattered_light.h"
 
 namespace skinlayer {

@@ -10,7 +10,7 @@
 #include <string>
 #include <thread>
 
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

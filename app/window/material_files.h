@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "app/preview/material_session.h"
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 #include "app/window/file_panel.h"
 
 namespace skinlayer {

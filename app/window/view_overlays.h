@@ -7,8 +7,8 @@
 
 #include "app/preview/preview_state.h"
 #include "app/preview/view_layout.h"
-#include "app/render/material_solve.h"
 #include "app/render/scene.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "app/cli/environment_flags.h"
-#include "app/render/material_solve.h"
 #include "app/render/scene.h"
+#include "app/solution/material_solve.h"
 
 namespace skinlayer {
 

@@ -16,8 +16,8 @@
 #include "app/material/color_channels.h"
 #include "app/material/presets.h"
 #include "app/process/parallel_for.h"
-#include "app/render/material_solve.h"
 #include "app/render/table_textures.h"
+#include "app/solution/material_solve.h"
 #include "app/solution/pair_evaluation.h"
 #include "app/solution/solved_document.h"
 #include "core/conventions.h"
@@ -462,7 +462,7 @@ void BM_SkinColorSolve(benchmark::State& state) { skin_slider_step(state, false)
 BENCHMARK(BM_SkinColorSolve)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // A skin slider step while the slider moves (issue 25, target <= 30 ms): solve_color's preview
-// (app/render/material_solve.h: the preview resolution, tables at 400-700 nm in 50 nm steps scaled to the colour of
+// (app/solution/material_solve.h: the preview resolution, tables at 400-700 nm in 50 nm steps scaled to the colour of
 // all 31 wavelengths' albedos; refined to 10 nm when the slider stops).
 void BM_SkinSliderPreview(benchmark::State& state) {
   skin_slider_step(state, true);

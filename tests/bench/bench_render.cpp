@@ -15,11 +15,11 @@
 #include "app/process/parallel_for.h"
 #include "app/render/environment_map.h"
 #include "app/render/environment_preview.h"
-#include "app/render/material_solve.h"
 #include "app/render/render_target.h"
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
 #include "app/render/table_textures.h"
+#include "app/solution/material_solve.h"
 #include "core/solve/solve_cache.h"
 
 namespace {

@@ -20,10 +20,10 @@
 
 #include "app/gl/osmesa_context.h"
 #include "app/render/environment_map.h"
-#include "app/render/material_solve.h"
 #include "app/render/render_target.h"
 #include "app/render/renderer.h"
 #include "app/render/table_textures.h"
+#include "app/solution/material_solve.h"
 #include "core/solver.h"
 #include "tests/app/process_runner.h"
 

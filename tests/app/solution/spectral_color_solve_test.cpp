@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/material/color_channels.h"
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 #include "core/color/spectral_color.h"
 #include "core/conventions.h"
 #include "core/series/quadrature.h"

@@ -1,4 +1,4 @@
-#include "app/render/material_solve.h"
+#include "app/solution/material_solve.h"
 
 #include <algorithm>
 #include <chrono>
