@@ -137,7 +137,12 @@ void SolveWorker::run(std::stop_token stop) {
         options.preview = true;
         SolveResult preview = solve_(request, generation, options);
         const bool failed = !preview.error.empty();
-        if (!publish(std::move(preview), failed) || failed || superseded(generation, stop)) continue;
+        if (!publish(std::move(preview), failed) || failed) continue;
+        if (superseded(generation, stop)) {  // newer parameters came with the preview: its refinement is abandoned
+          const std::lock_guard lock(mutex_);
+          ++stats_.cancelled;
+          continue;
+        }
         options.preview = false;
       }
       publish(solve_(request, generation, options), true);

@@ -66,7 +66,8 @@ struct SolveWorkerStats {
   std::uint64_t solved = 0;     // solves run to the end (previews and full solves)
   std::uint64_t discarded = 0;  // of those, superseded before they could be published
   std::uint64_t previews = 0;   // previews published
-  std::uint64_t cancelled = 0;  // solves abandoned part-way for a newer request (or for shutdown)
+  std::uint64_t cancelled = 0;  // solves abandoned part-way, or refinements never begun, for a newer request (or for
+                                // shutdown)
   std::size_t cache_bytes = 0;  // what the worker's SolveCache holds after its last solve (its budget bounds it)
 };
 
