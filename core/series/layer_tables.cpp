@@ -105,11 +105,19 @@ double LayerTables::interpolate(std::span<const double> table, int m, double the
 
 LayerTables LayerTables::refined(int factor) const {
   if (factor < 1) throw std::invalid_argument("LayerTables::refined: factor must be at least 1");
+  return resampled(factor * (grid_size_ - 1) + 1);
+}
+
+LayerTables LayerTables::resampled(int grid_size) const {
+  if (grid_size < 2) throw std::invalid_argument("LayerTables::resampled: the grid needs at least 2 points");
   const int k = grid_size_;
-  const int fine = factor * (k - 1) + 1;
-  // On the shared map, fine sample j sits at coarse grid coordinate j / factor.
+  const int fine = grid_size;
+  // On the shared map x = j / (K' - 1), sample j of the new grid sits at this grid's coordinate j (K - 1) / (K' - 1)
+  // (j / factor exactly for refined: a quotient of exact integers is correctly rounded).
   std::vector<SplineTaps> taps(fine);
-  for (int j = 0; j < fine; ++j) taps[j] = spline_taps(static_cast<double>(j) / factor, k);
+  for (int j = 0; j < fine; ++j) {
+    taps[j] = spline_taps(static_cast<double>(j) * (k - 1) / static_cast<double>(fine - 1), k);
+  }
   const auto refine = [&](std::span<const double> table) {
     std::vector<double> result(static_cast<std::size_t>(modes_) * fine * fine);
     std::vector<double> rows(static_cast<std::size_t>(k) * fine);  // coarse theta_i x fine theta_o

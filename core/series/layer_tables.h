@@ -78,6 +78,10 @@ class LayerTables {
   // points on the same map: every value is this table's spline at the finer grid angle, so a bilinear lookup of the
   // result approximates the spline to O((h/factor)^2). Built separably: one 1-D Catmull-Rom pass per axis.
   LayerTables refined(int factor) const;
+  // The same tables on a grid of grid_size points on the same map, coarser or finer: every value is this table's
+  // spline at the new grid's angle (refined(f) is resampled(f (K - 1) + 1)). A colour's channels solved on grids of
+  // their own share one grid so (the previewer's textures, app/render/table_textures.h).
+  LayerTables resampled(int grid_size) const;
 
   // The m-th azimuthal coefficient, spline-interpolated.
   double reflection_mode(int m, double theta_i, double theta_o) const;

@@ -139,5 +139,40 @@ TEST(LayerTables, RefinedTablesHoldTheSplineAtTheFinerGridAngles) {
   }
 }
 
+// A grid of any size on the same map, finer or coarser and no multiple of this one's: each value is the spline at
+// the new grid's angle, the ends (normal and grazing) are this grid's own samples, and refined(2) is resampled to
+// 2 (K - 1) + 1 points bit for bit.
+TEST(LayerTables, ResampledTablesHoldTheSplineAtTheNewGridAngles) {
+  Material m;
+  m.bottom = parse_bottom("matched");
+  SolveOptions options;
+  options.table_size = 12;
+  const LayerTables tables = solve(m, options);
+  for (const int size : {7, 17, 30}) {
+    const LayerTables other = tables.resampled(size);
+    ASSERT_EQ(other.grid_size(), size);
+    ASSERT_EQ(other.modes(), tables.modes());
+    for (int m_index : {0, 1, 3}) {
+      for (int i = 0; i < size; ++i) {
+        for (int o = 0; o < size; o += 2) {
+          const double ti = LayerTables::grid_angle(i, size), to = LayerTables::grid_angle(o, size);
+          const double expected_r = tables.reflection_mode(m_index, ti, to);
+          const double expected_t = tables.transmission_mode(m_index, ti, to);
+          const std::size_t index = (static_cast<std::size_t>(m_index) * size + i) * size + o;
+          EXPECT_NEAR(other.reflection_coefficients()[index], expected_r, 1e-12 * (1.0 + std::abs(expected_r)));
+          EXPECT_NEAR(other.transmission_coefficients()[index], expected_t, 1e-12 * (1.0 + std::abs(expected_t)));
+        }
+      }
+    }
+    const auto corner = [](const LayerTables& t, int i, int o) {
+      return t.reflection_coefficients()[static_cast<std::size_t>(i) * t.grid_size() + o];
+    };
+    EXPECT_EQ(corner(other, 0, 0), corner(tables, 0, 0));
+    EXPECT_EQ(corner(other, size - 1, size - 1), corner(tables, 11, 11));
+  }
+  const LayerTables twice = tables.refined(2);
+  EXPECT_TRUE(std::ranges::equal(twice.reflection_coefficients(), tables.resampled(23).reflection_coefficients()));
+}
+
 }  // namespace
 }  // namespace skinlayer
