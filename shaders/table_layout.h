@@ -10,6 +10,7 @@
 //                  theta = (pi/2) sin(pi x / 2) (core/series/layer_tables.h), so a coordinate is x =
 // asin(theta/(pi/2))/(pi/2)
 //                  and the texture coordinate is (x (size - 1) + 0.5) / size
-// size             SKINLAYER_TABLE_UPSAMPLE (K - 1) + 1 texels per axis, resampled from the K-point spline tables
+// size             SKINLAYER_TABLE_UPSAMPLE (K - 1) + 1 texels per axis, resampled from the K-point spline tables;
+//                  K is the finest of the channels' grids (each channel is solved on the grid it needs)
 // channels         R, G, B: the layer solved with the red, green and blue single-scattering albedo; A unused
 #define SKINLAYER_TABLE_UPSAMPLE 2

@@ -22,10 +22,14 @@ TableTextureData make_table_textures(const ColorTables& tables) {
     if (!same) distinct_channels.push_back(c);
     source[c] = distinct_channels.size() - 1;
   }
+  // Each channel is solved on the grid it needs (solve_color); the textures share the finest of them, refined.
+  int grid_size = 0;
+  for (const LayerTables& channel : tables.channels) grid_size = std::max(grid_size, channel.grid_size());
+  const int texels = SKINLAYER_TABLE_UPSAMPLE * (grid_size - 1) + 1;
   std::vector<LayerTables> distinct(distinct_channels.size());
   parallel_for_threads(static_cast<int>(distinct.size()), [&](int k) {
     const auto index = static_cast<std::size_t>(k);
-    distinct[index] = tables.channels[distinct_channels[index]].refined(SKINLAYER_TABLE_UPSAMPLE);
+    distinct[index] = tables.channels[distinct_channels[index]].resampled(texels);
   });
   data.size = distinct.front().grid_size();
   data.unscattered = tables.channels[0].unscattered();  // the same for every channel: no albedo in it

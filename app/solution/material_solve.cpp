@@ -135,7 +135,10 @@ ColorTables solve_color(const ColorMaterial& material, double theta_i, const Sol
   const std::vector<std::vector<DirectionalAlbedo>> layer_albedo =
       directional_albedo(distinct, std::vector<double>{theta_i}, options);
   if (material.model == SubsurfaceModel::Stam) {
-    tables = solve(distinct, options);
+    // Each channel its own solve, at the resolution it needs (its table size may differ), as eval's channels are:
+    // every channel is then its grey solve exactly, which one solve of the channels together, sharing the darkest
+    // channel's resolution and the modes of the slowest to converge, is not.
+    tables = solve_batch(distinct, options);
     for (const std::vector<DirectionalAlbedo>& rows : layer_albedo) albedo.push_back(rows.front());
   } else {
     for (std::size_t d = 0; d < distinct.size(); ++d) {

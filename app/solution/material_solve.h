@@ -30,13 +30,14 @@ ColorMaterial color_material(const MaterialDocument& document);
 
 struct ColorTables {
   ColorMaterial material;
-  std::array<LayerTables, 3> channels;        // red, green, blue
+  std::array<LayerTables, 3> channels;        // red, green, blue; each on its own grid (their sizes may differ)
   std::array<DirectionalAlbedo, 3> albedo{};  // at albedo_theta_i, per channel
   double albedo_theta_i = 0.0;
   double solve_seconds = 0.0;
 };
 
-// Validates the material (every channel) and solves each distinct channel (its layers' albedos) once; a skin at each
+// Validates the material (every channel) and solves each distinct channel (its layers' albedos) once, on the grid
+// and to the modes that channel needs alone (so each channel's tables are its grey solve's); a skin at each
 // wavelength of color_channels' grid (the coarser one under options.preview), all on one table grid, each channel
 // the weighted sum of the wavelengths' tables and albedos (core/series/weighted_tables.h). Also the
 // directional albedo at theta_i (radians): the layer's from the solver, or for a comparison model its tables integrated
