@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "app/material/color_channels.h"
+#include "app/solution/skin_comparison.h"
 #include "core/conventions.h"
 #include "core/series/quadrature.h"
 #include "core/series/weighted_tables.h"
@@ -64,12 +65,11 @@ namespace {
 // scales each channel's table so that its subsurface reflectance at theta_i is the full grid's: the 50 nm grid alone
 // misses hemoglobin's bands at 542 and 577 nm and errs by up to 6% per channel; scaled, the colour on screen while a
 // slider moves is the full colour at the light's angle, and only the lobes' shape comes from the coarse grid. The
-// comparison models have no cheap albedo of their own (model_albedo integrates their tables): they tabulate every
-// wavelength, preview or not.
+// layer model only: the comparison models take the skin's RGB (app/solution/skin_comparison.h).
 void solve_spectral(const ColorMaterial& material, double theta_i, const SolveOptions& options, ColorTables& result) {
   const MaterialDocument document = material_document(material);
   const ColorChannels full = color_channels(document);
-  const bool scaled_preview = options.preview && material.model == SubsurfaceModel::Stam;
+  const bool scaled_preview = options.preview;
   const ColorChannels tabulated = scaled_preview ? color_channels(document, true) : full;
   // tabulated_index[j]: the tables' index of the colour grid's wavelength j, or none.
   std::vector<std::optional<std::size_t>> tabulated_index(full.wavelengths_nm.size());
@@ -93,13 +93,7 @@ void solve_spectral(const ColorMaterial& material, double theta_i, const SolveOp
     const Material& m = full.materials[j];
     albedo[j] = directional_albedo(m, thetas, one).front();
     const std::optional<std::size_t> t = tabulated_index[j];
-    if (!t) return;
-    if (material.model == SubsurfaceModel::Stam) {
-      tables[*t] = solve(m, one);
-    } else {
-      tables[*t] = solve_model(m, material.model, one);
-      albedo[j] = model_albedo(tables[*t], albedo[j]);
-    }
+    if (t) tables[*t] = solve(m, one);
   });
   for (int c = 0; c < 3; ++c) {
     result.albedo[c] = mixed_albedo(albedo, full.to_rgb.row(c));
@@ -122,6 +116,15 @@ ColorTables solve_color(const ColorMaterial& material, double theta_i, const Sol
   ColorTables result;
   result.material = material;
   result.albedo_theta_i = theta_i;
+  if (material.skin && material.model != SubsurfaceModel::Stam) {
+    // The comparison models describe one layer: for a skin, the layer that has its RGB (skin_comparison.h).
+    ColorMaterial layer = skin_comparison_layer(material, options).layer;
+    layer.model = material.model;
+    result = solve_color(layer, theta_i, options);
+    result.material = material;  // the surface term and the textures' channels are the skin's
+    result.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
   if (material.skin) {
     solve_spectral(material, theta_i, options, result);
     result.solve_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

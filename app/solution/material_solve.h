@@ -39,7 +39,8 @@ struct ColorTables {
 // Validates the material (every channel) and solves each distinct channel (its layers' albedos) once, on the grid
 // and to the modes that channel needs alone (so each channel's tables are its grey solve's); a skin at each
 // wavelength of color_channels' grid (the coarser one under options.preview), all on one table grid, each channel
-// the weighted sum of the wavelengths' tables and albedos (core/series/weighted_tables.h). Also the
+// the weighted sum of the wavelengths' tables and albedos (core/series/weighted_tables.h); a skin under a comparison
+// model (Lambert, Hanrahan-Krueger), the one RGB layer that stands for it (app/solution/skin_comparison.h). Also the
 // directional albedo at theta_i (radians): the layer's from the solver, or for a comparison model its tables integrated
 // over the hemisphere (with the same surface reflectance). Throws ParameterError for invalid parameters. `options` pass
 // the caller's cache and parallel-for through to core (SolveOptions).

@@ -3,6 +3,8 @@
 #include <Eigen/Core>
 #include <algorithm>
 
+#include "app/solution/material_solve.h"
+#include "app/solution/skin_comparison.h"
 #include "core/solve/batch_solve.h"
 #include "core/solve/solve_cache.h"
 #include "core/solver.h"
@@ -11,6 +13,14 @@ namespace skinlayer {
 
 SolvedDocument solve_document(const MaterialDocument& document, SubsurfaceModel model, const ParallelFor& parallel_for,
                               const std::function<bool()>& cancelled) {
+  if (document.skin && model != SubsurfaceModel::Stam) {
+    // The comparison models describe one layer: for a skin, the RGB layer that stands for it (skin_comparison.h).
+    SolveOptions options;
+    options.parallel_for = parallel_for;
+    options.cancelled = cancelled;
+    const ColorMaterial layer = skin_comparison_layer(color_material(document), options).layer;
+    return solve_document(material_document(layer), model, parallel_for, cancelled);
+  }
   SolvedDocument solved;
   solved.grey = document.grey();
   solved.model = model;

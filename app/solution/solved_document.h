@@ -28,7 +28,8 @@ struct SolvedDocument {
 };
 
 // Solves the document with `model` (the surface term is the same for every model). The colour channels' solves go
-// side by side through one interface cache (solve_batch) for the layer model. Throws ParameterError for a material
+// side by side through one interface cache (solve_batch) for the layer model. A skin under a comparison model is the
+// RGB layer that stands for it (app/solution/skin_comparison.h). Throws ParameterError for a material
 // out of range and SolveCancelled when `cancelled` returns true between the solver's stages.
 SolvedDocument solve_document(const MaterialDocument& document, SubsurfaceModel model, const ParallelFor& parallel_for,
                               const std::function<bool()>& cancelled = {});

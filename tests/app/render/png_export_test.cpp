@@ -63,6 +63,28 @@ TEST(PngExport, CompareViewDrawsThreeModels) {
   EXPECT_LT(brightness[1], 0.8 * brightness[2]) << "HK " << brightness[1] << " layer " << brightness[2];
 }
 
+// A skin compares too: the comparison models take the RGB layer that stands for it (app/solution/skin_comparison.h),
+// so the Lambert sphere sends back the skin's colour, red above blue as the skin's own sphere.
+TEST(PngExport, CompareViewTakesASkin) {
+  const std::filesystem::path out = std::filesystem::temp_directory_path() / "skinlayer_compare_skin_test.png";
+  const ProcessResult result = run_render("render --view compare --size 300x100 --preset skin-fair -o " + out.string());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(out.c_str(), &width, &height, &channels, 4);
+  ASSERT_NE(pixels, nullptr);
+  std::array<std::array<double, 3>, 3> mean{};  // each third's central square, per channel
+  for (int k = 0; k < 3; ++k) {
+    for (int y = 35; y < 65; ++y) {
+      for (int x = 100 * k + 25; x < 100 * k + 55; ++x) {
+        for (int c = 0; c < 3; ++c) mean[k][c] += pixels[4 * (y * width + x) + c];
+      }
+    }
+  }
+  stbi_image_free(pixels);
+  for (const int k : {0, 2}) EXPECT_GT(mean[k][0], 1.2 * mean[k][2]) << "sphere " << k << " is skin-coloured";
+  EXPECT_LT(mean[1][1], 0.8 * mean[2][1]) << "HK's single scattering is darker than the layer";
+}
+
 TEST(PngExport, UnwritablePathIsAClearError) {
   const ProcessResult result = run_render("render --size 64x64 -o /nonexistent-folder/x.png");
   EXPECT_NE(result.exit_code, 0);

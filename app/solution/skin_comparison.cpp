@@ -1,0 +1,45 @@
+#include "app/solution/skin_comparison.h"
+
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "app/material/color_channels.h"
+#include "core/fit/albedo_color_match.h"
+#include "core/skin/skin_optics.h"
+#include "core/solve/batch_solve.h"
+#include "core/solver.h"
+
+namespace skinlayer {
+
+SkinComparisonLayer skin_comparison_layer(const ColorMaterial& skin, const SolveOptions& options) {
+  if (!skin.skin) throw std::invalid_argument("skin_comparison_layer: the material is no skin");
+  // The skin's reflectance at normal incidence, per wavelength of its colour grid, mixed into linear sRGB.
+  const ColorChannels spectrum = color_channels(material_document(skin));
+  std::vector<DirectionalAlbedo> per_wavelength(spectrum.materials.size());
+  const double normal[1] = {0.0};
+  for_each_with_warm_cache(spectrum.materials.size(), options, [&](std::size_t k, const SolveOptions& one) {
+    per_wavelength[k] = directional_albedo(spectrum.materials[k], normal, one).front();
+  });
+  SkinComparisonLayer result;
+  for (int c = 0; c < 3; ++c) {
+    result.reflectance[c] = mixed_albedo(per_wavelength, spectrum.to_rgb.row(c)).reflectance();
+  }
+
+  Material layer;
+  layer.sigma = skin.layer.sigma;
+  layer.eta = skin.layer.eta;
+  layer.ordinates = skin.layer.ordinates;
+  layer.tau = std::numeric_limits<double>::infinity();  // semi-infinite, as the skin's dermis
+  layer.g = kSkinAnisotropy;
+  layer.bottom.kind = BottomKind::Matched;  // never reached under a semi-infinite layer
+  const std::array<Material, 3> channels = {layer, layer, layer};
+  const AlbedoColorMatch match = match_top_albedo(channels, result.reflectance);
+  layer.albedo = match.albedo[0];
+  result.layer.layer = layer;
+  result.layer.albedo_rgb = match.albedo;
+  result.layer.model = SubsurfaceModel::Stam;
+  return result;
+}
+
+}  // namespace skinlayer
