@@ -112,6 +112,30 @@ std::array<double, 3> albedo_rgb_from_text(std::string_view text) {
   return rgb;
 }
 
+namespace {
+
+// --T, --tau, --albedo and --g set the one layer of a single-layer material. On a stack from --material or --preset
+// they would change its top layer alone (a stack's --albedo 0.5 would still be RGB below), so they are refused
+// there, with the stack's own --layer flags to edit instead.
+void refuse_single_layer_flags_on_a_stack(const ParsedFlags& flags, const MaterialDocument& document,
+                                          const std::string& origin) {
+  if (document.layer.below.empty() || flags.has("layer")) return;  // with --layer, the check below speaks
+  for (const std::string_view single : kSingleLayerFlags) {
+    if (!flags.has(single)) continue;
+    std::string layers;
+    const std::vector<StackedLayer> stack = stack_layers(document.layer);
+    for (std::size_t i = 0; i < stack.size(); ++i) {
+      layers += " --layer " + format_layer_spec(stack[i], document.layer_albedo(i));
+    }
+    throw UsageError(
+        "flag --" + std::string(single) + " sets a single layer's value, and the material" + origin +
+        " is a stack of " + std::to_string(stack.size()) +
+        " layers; give every layer with --layer instead (they replace the stack's), these being its own:" + layers);
+  }
+}
+
+}  // namespace
+
 MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFlag albedo_flag) {
   if (flags.has("material") && flags.has("preset")) {
     throw UsageError("flags --material and --preset both name the material; give only one");
@@ -130,6 +154,7 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
     origin = " (from preset " + std::string(*name) + ")";
   }
   Material& material = document.layer;
+  refuse_single_layer_flags_on_a_stack(flags, document, origin);
   if (const auto value = checked_number(flags, "sigma")) material.sigma = *value;
   if (const auto value = checked_number(flags, "eta")) material.eta = *value;
   if (const auto value = checked_number(flags, "T")) material.tau = optical_depth_from_transparency(*value);

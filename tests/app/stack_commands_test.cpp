@@ -3,6 +3,7 @@
 // reads back bit for bit; every bad layer is one line naming its place, the key and the range, exit status 2.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -118,6 +119,38 @@ TEST(StackCommands, BadLayersAreOneLineNamingThePlaceTheKeyAndTheRange) {
   EXPECT_TRUE(failed_with_one_line(eval_with({"--g", "0.5", "--layer", good}), 2, {"--g", "--layer"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", good, "--layer", good, "--model", "hk"}), 2,
                                    {"model = hk", "one layer"}));
+}
+
+// --T, --tau, --albedo and --g set a single layer: on a stack from a preset or a file they would change its top layer
+// alone (--albedo 0.5 would leave the layers below RGB), so they are refused with the stack's own --layer flags, which
+// give the same material back.
+TEST(StackCommands, SingleLayerFlagsOnAStackAreRefusedWithItsLayerFlags) {
+  for (const std::string flag : {"--albedo", "--T", "--tau", "--g"}) {
+    EXPECT_TRUE(failed_with_one_line(eval_with({"--preset", "skin-two-layer", flag, "0.5"}), 2,
+                                     {flag, "skin-two-layer", "stack of 2 layers", "--layer"}));
+  }
+  const ProcessResult refused = eval_with({"--preset", "skin-two-layer", "--albedo", "0.5"});
+  const std::string marker = "these being its own:";
+  const std::size_t at = refused.err.find(marker);
+  ASSERT_NE(at, std::string::npos) << refused.err;
+  std::vector<std::string> flags = {"--preset", "skin-two-layer"};  // the layers replace the preset's
+  std::istringstream words(refused.err.substr(at + marker.size()));
+  for (std::string word; words >> word;) flags.push_back(word);
+  ASSERT_EQ(flags.size(), 6u) << refused.err;
+  const ProcessResult from_flags = eval_with(flags);
+  const ProcessResult from_preset = eval_with({"--preset", "skin-two-layer"});
+  ASSERT_EQ(from_preset.exit_code, 0) << from_preset.err;
+  ASSERT_EQ(from_flags.exit_code, 0) << from_flags.err;
+  std::string header_flags, header_preset;
+  const auto a = csv_numbers(from_flags.out, &header_flags), b = csv_numbers(from_preset.out, &header_preset);
+  EXPECT_EQ(header_flags, header_preset);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t r = 0; r < a.size(); ++r) {
+    ASSERT_EQ(a[r].size(), b[r].size());
+    for (std::size_t c = 0; c < a[r].size(); ++c) EXPECT_NEAR(a[r][c], b[r][c], 1e-12 * std::abs(b[r][c])) << r;
+  }
+  // A single-layer preset still takes them.
+  EXPECT_EQ(eval_with({"--preset", "wax", "--albedo", "0.5"}).exit_code, 0);
 }
 
 TEST(StackCommands, RenderTakesAnRgbAlbedoPerLayer) {
