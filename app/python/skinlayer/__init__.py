@@ -20,10 +20,29 @@ and its range. Solves release the GIL and stop at Ctrl-C (KeyboardInterrupt).
 
 import json as _json
 import numbers as _numbers
+import sys as _sys
 
-import numpy as _np
+from . import _interpreter
 
-from . import _skinlayer
+
+def _wrong_interpreter(what):
+    """The ImportError for an interpreter the package was not built for: which one it was built for, and what to do."""
+    here = f"{_sys.executable} (Python {_sys.version_info.major}.{_sys.version_info.minor})"
+    return ImportError(f"skinlayer {what} under {here}; it was built for {_interpreter.EXECUTABLE} "
+                       f"(Python {_interpreter.VERSION}, with Debian's python3-numpy): run it with "
+                       f"{_interpreter.EXECUTABLE}, or rebuild with cmake -DPython3_EXECUTABLE=<this interpreter>, "
+                       f"which needs numpy and pybind11 for it")
+
+
+try:
+    import numpy as _np
+except ImportError as _missing:
+    raise _wrong_interpreter("cannot import numpy") from _missing
+
+try:
+    from . import _skinlayer
+except ImportError as _mismatch:
+    raise _wrong_interpreter("cannot load its compiled module (_skinlayer)") from _mismatch
 
 __all__ = ["Material", "Solution", "solve", "presets"]
 
