@@ -15,7 +15,8 @@ namespace skinlayer {
 
 namespace {
 
-// Y of the RGB (Rec. 709 / sRGB primaries), as the format's readers rebuild G from Y, R and B.
+// Y of the RGB as pbrt-v3 writes it, to its digits: its reader rebuilds G from Y, R and B with these very weights.
+// The same Rec. 709 row as core/color/luminance.h (kRec709Luminance) to four digits; that one rounds the standard's.
 constexpr std::array<double, 3> kLuminance = {0.212671, 0.715160, 0.072169};
 
 struct Blocks {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "app/material/color_channels.h"
+#include "core/color/luminance.h"
 #include "core/color/rgb_uplift.h"
 #include "core/color/spectral_color.h"
 #include "core/models/subsurface_model.h"
@@ -13,16 +14,12 @@
 namespace skinlayer {
 namespace {
 
-// Y of linear sRGB (IEC 61966-2-1's luminance row).
-constexpr std::array<double, 3> kLuminanceOfRgb = {0.2126, 0.7152, 0.0722};
-
 // Per wavelength, its share of Y: the luminance row applied to the wavelengths' linear-sRGB weights.
 std::vector<double> luminance_weights(std::span<const double> wavelengths) {
   const Eigen::Matrix<double, 3, Eigen::Dynamic> to_rgb = linear_srgb_weights(wavelengths);
   std::vector<double> weights;
   for (Eigen::Index k = 0; k < to_rgb.cols(); ++k) {
-    weights.push_back(kLuminanceOfRgb[0] * to_rgb(0, k) + kLuminanceOfRgb[1] * to_rgb(1, k) +
-                      kLuminanceOfRgb[2] * to_rgb(2, k));
+    weights.push_back(luminance(to_rgb(0, k), to_rgb(1, k), to_rgb(2, k)));
   }
   return weights;
 }
@@ -31,7 +28,7 @@ std::vector<double> luminance_weights(std::span<const double> wavelengths) {
 
 RglChannels rgl_rgb_channels(const ColorTables& tables) {
   RglChannels channels;
-  channels.luminance_weights.assign(kLuminanceOfRgb.begin(), kLuminanceOfRgb.end());
+  channels.luminance_weights.assign(kRec709Luminance.begin(), kRec709Luminance.end());
   channels.top_sigma = tables.material.layer.sigma;
   channels.brdf = [&tables](double theta_i, double theta_o, double phi, std::span<double> values) {
     for (int c = 0; c < 3; ++c) values[c] = brdf_total(tables, c, theta_i, theta_o, phi);

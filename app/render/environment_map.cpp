@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "app/render/radiance_hdr_scan.h"
+#include "core/color/luminance.h"
 
 namespace skinlayer {
 
@@ -22,8 +23,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// Rec. 709 luminance of linear RGB.
-double luminance(const float* rgb) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
+// The luminance of a texel's linear RGB (core/color/luminance.h).
+double texel_luminance(const float* rgb) { return luminance(rgb[0], rgb[1], rgb[2]); }
 
 // A map whose texel values are radiance(direction at the texel centre).
 template <class Radiance>
@@ -195,7 +196,7 @@ EnvironmentDistribution environment_distribution(const EnvironmentMap& map) {
     const double sin_theta = std::sin(kPi * (j + 0.5) / h);
     double running = 0.0;
     for (int i = 0; i < w; ++i) {
-      const double weight = luminance(&map.rgb[(static_cast<std::size_t>(j) * w + i) * 3]) * sin_theta;
+      const double weight = texel_luminance(&map.rgb[(static_cast<std::size_t>(j) * w + i) * 3]) * sin_theta;
       d.density[static_cast<std::size_t>(j) * w + i] = static_cast<float>(weight);
       running += weight;
       d.conditional[static_cast<std::size_t>(j) * (w + 1) + i + 1] = static_cast<float>(running);

@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>  // Matrix::inverse
 #include <vector>
 
+#include "core/color/luminance.h"
 #include "core/data/embedded_table.h"
 #include "core/skin/skin_optics.h"
 
@@ -42,6 +44,15 @@ TEST(SpectralColor, TheMatrixIsTheStandardSrgbOne) {
   Eigen::Matrix3d standard;
   standard << 3.2406, -1.5372, -0.4986, -0.9689, 1.8758, 0.0415, 0.0557, -0.2040, 1.0570;
   EXPECT_LT((xyz_to_linear_srgb() - standard).cwiseAbs().maxCoeff(), 1.5e-3);
+}
+
+// core/color/luminance.h's weights are the Y row of the inverse of that matrix (linear sRGB to XYZ) to the four
+// decimals the standard prints (cut, not rounded: 0.2126 for 0.21267), and a white RGB has luminance 1.
+TEST(SpectralColor, TheLuminanceWeightsAreTheYRowOfTheSrgbMatrix) {
+  const Eigen::Matrix3d to_xyz = xyz_to_linear_srgb().inverse();
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(kRec709Luminance[c], to_xyz(1, c), 1e-4) << c;
+  EXPECT_DOUBLE_EQ(luminance(1.0, 1.0, 1.0), 1.0);
+  EXPECT_DOUBLE_EQ(luminance(0.0, 2.0, 0.0), 2.0 * 0.7152);
 }
 
 TEST(SpectralColor, APerfectWhiteReflectorIsWhiteOnAnyGrid) {
