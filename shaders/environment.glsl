@@ -6,13 +6,7 @@ uniform sampler2D u_env_density;      // R: density over (u, v), piecewise const
 uniform sampler2D u_env_marginal;     // R: (height + 1) x 1, the CDF over rows
 uniform sampler2D u_env_conditional;  // R: (width + 1) x height, each row's CDF over columns
 uniform float u_env_scale;            // 2^EV
-uniform float u_env_rotation;         // radians about +y
-
-// R_y(angle) d.
-vec3 rotate_y(vec3 d, float angle) {
-  float c = cos(angle), s = sin(angle);
-  return vec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z);
-}
+uniform mat3 u_env_from_world;        // R_y(-alpha), the environment turned by alpha about +y (environment_from_world)
 
 vec2 environment_coordinates(vec3 d) {
   float u = atan(d.x, d.z) / (2.0 * kPi);
@@ -27,20 +21,20 @@ vec3 environment_direction(vec2 uv) {
 // The radiance arriving from direction d (seen looking along d), piecewise constant per texel as the sampling
 // density is: what lights the sphere.
 vec3 environment_radiance(vec3 d) {
-  vec2 uv = environment_coordinates(rotate_y(d, -u_env_rotation));
+  vec2 uv = environment_coordinates(u_env_from_world * d);
   ivec2 size = textureSize(u_env, 0);
   return u_env_scale * texelFetch(u_env, min(ivec2(uv * vec2(size)), size - 1), 0).rgb;
 }
 
 // The same filtered for display: bilinear, or blurred from mip level lod > 0.
 vec3 environment_background(vec3 d, float lod) {
-  vec2 uv = environment_coordinates(rotate_y(d, -u_env_rotation));
+  vec2 uv = environment_coordinates(u_env_from_world * d);
   return u_env_scale * textureLod(u_env, uv, lod).rgb;
 }
 
 // The solid-angle density with which sample_environment picks d.
 float environment_pdf(vec3 d) {
-  vec2 uv = environment_coordinates(rotate_y(d, -u_env_rotation));
+  vec2 uv = environment_coordinates(u_env_from_world * d);
   ivec2 size = textureSize(u_env_density, 0);
   ivec2 texel = min(ivec2(uv * vec2(size)), size - 1);
   float sin_theta = sin(kPi * uv.y);
@@ -67,5 +61,5 @@ vec3 sample_environment(vec2 xi) {
   int i = find_interval(u_env_conditional, j, size.x + 1, xi.x);
   float d0 = texelFetch(u_env_conditional, ivec2(i, j), 0).r, d1 = texelFetch(u_env_conditional, ivec2(i + 1, j), 0).r;
   float u = (float(i) + clamp((xi.x - d0) / max(d1 - d0, 1e-12), 0.0, 1.0)) / float(size.x);
-  return rotate_y(environment_direction(vec2(u, v)), u_env_rotation);
+  return transpose(u_env_from_world) * environment_direction(vec2(u, v));  // R_y(alpha): the inverse rotation
 }

@@ -9,6 +9,9 @@ find_package(PNG REQUIRED)
 # Environment maps (.hdr) through stb_image (libstb-dev), which the GL-free fuzz targets read too.
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)
+# The GL side's vectors and matrices (glm::glm, libglm-dev): the environment's directions and rotation, the light.
+# Header-only, GLSL's types on the CPU; the environment maps, built without the app too, use it.
+find_package(glm 0.9.9 REQUIRED CONFIG)
 
 # Previewer and headless rendering (see docs/platform-notes.md): not looked for without the app.
 if(NOT SKINLAYER_BUILD_APP)

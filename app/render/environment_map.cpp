@@ -7,6 +7,9 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat4x4.hpp>
 #include <iterator>
 #include <limits>
 #include <memory>
@@ -32,7 +35,7 @@ EnvironmentMap procedural(int width, int height, const Radiance& radiance) {
   EnvironmentMap map{width, height, std::vector<float>(static_cast<std::size_t>(width) * height * 3)};
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
-      const std::array<double, 3> rgb = radiance(environment_direction((i + 0.5) / width, (j + 0.5) / height));
+      const glm::dvec3 rgb = radiance(environment_direction((i + 0.5) / width, (j + 0.5) / height));
       for (int c = 0; c < 3; ++c)
         map.rgb[(static_cast<std::size_t>(j) * width + i) * 3 + c] = static_cast<float>(rgb[c]);
     }
@@ -48,36 +51,31 @@ double smoothstep(double edge0, double edge1, double x) {
 // A soft-edged rectangle light facing the origin: centred on the unit direction `centre`, `half_width` wide along
 // `across` (perpendicular to it) and `half_height` along their cross product, in units of its distance, its edges
 // falling off over `soft`. 1 inside, 0 outside.
-double rectangle_light(const std::array<double, 3>& d, const std::array<double, 3>& centre,
-                       const std::array<double, 3>& across, double half_width, double half_height, double soft) {
-  const double t = d[0] * centre[0] + d[1] * centre[1] + d[2] * centre[2];
+double rectangle_light(const glm::dvec3& d, const glm::dvec3& centre, const glm::dvec3& across, double half_width,
+                       double half_height, double soft) {
+  const double t = glm::dot(d, centre);
   if (t <= 0.1) return 0.0;
-  const std::array<double, 3> up = {centre[1] * across[2] - centre[2] * across[1],
-                                    centre[2] * across[0] - centre[0] * across[2],
-                                    centre[0] * across[1] - centre[1] * across[0]};
-  const double a = (d[0] * across[0] + d[1] * across[1] + d[2] * across[2]) / t;
-  const double b = (d[0] * up[0] + d[1] * up[1] + d[2] * up[2]) / t;
+  const glm::dvec3 up = glm::cross(centre, across);
+  const double a = glm::dot(d, across) / t;
+  const double b = glm::dot(d, up) / t;
   return (1.0 - smoothstep(half_width, half_width + soft, std::abs(a))) *
          (1.0 - smoothstep(half_height, half_height + soft, std::abs(b)));
-}
-
-std::array<double, 3> unit(double x, double y, double z) {
-  const double n = std::sqrt(x * x + y * y + z * z);
-  return {x / n, y / n, z / n};
 }
 
 EnvironmentMap studio() {
   // The key: a 1.2 x 0.9 softbox above and in front of the sphere (55 degrees up, toward the camera), radiance 5;
   // two strip lights 0.25 x 1.8 at the sides, a little behind (rim lights), radiance 4; over a dim gradient from
   // 0.03 at the floor to 0.15 overhead.
-  const std::array<double, 3> key = unit(0.0, 1.4, 1.0), left = unit(-1.0, 0.0, -0.4), right = unit(1.0, 0.0, -0.4);
-  return procedural(512, 256, [&](const std::array<double, 3>& d) {
-    const double base = 0.03 + 0.12 * smoothstep(-1.0, 1.0, d[1]);
-    const double light = 5.0 * rectangle_light(d, key, {1.0, 0.0, 0.0}, 0.6, 0.45, 0.05) +
-                         4.0 * rectangle_light(d, left, unit(0.4, 0.0, -1.0), 0.125, 0.9, 0.03) +
-                         4.0 * rectangle_light(d, right, unit(0.4, 0.0, 1.0), 0.125, 0.9, 0.03);
+  const glm::dvec3 key = glm::normalize(glm::dvec3(0.0, 1.4, 1.0));
+  const glm::dvec3 left = glm::normalize(glm::dvec3(-1.0, 0.0, -0.4));
+  const glm::dvec3 right = glm::normalize(glm::dvec3(1.0, 0.0, -0.4));
+  return procedural(512, 256, [&](const glm::dvec3& d) {
+    const double base = 0.03 + 0.12 * smoothstep(-1.0, 1.0, d.y);
+    const double light = 5.0 * rectangle_light(d, key, glm::dvec3(1.0, 0.0, 0.0), 0.6, 0.45, 0.05) +
+                         4.0 * rectangle_light(d, left, glm::normalize(glm::dvec3(0.4, 0.0, -1.0)), 0.125, 0.9, 0.03) +
+                         4.0 * rectangle_light(d, right, glm::normalize(glm::dvec3(0.4, 0.0, 1.0)), 0.125, 0.9, 0.03);
     const double total = base + light;
-    return std::array<double, 3>{total, total, total * 1.02};
+    return glm::dvec3(total, total, total * 1.02);
   });
 }
 
@@ -85,37 +83,41 @@ EnvironmentMap sky() {
   // The sun 35 degrees above the horizon, to the upper left and slightly behind the sphere: a disk 1.5 degrees in
   // radius (wider than the real sun's 0.27, so that a 1024 x 512 map holds it in some 40 texels).
   const double elevation = 35.0 * kPi / 180.0, azimuth = -2.2;
-  const std::array<double, 3> sun = {std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
-                                     std::cos(elevation) * std::cos(azimuth)};
-  return procedural(1024, 512, [sun](const std::array<double, 3>& d) {
-    const double up = d[1];
-    const double cos_sun = d[0] * sun[0] + d[1] * sun[1] + d[2] * sun[2];
-    std::array<double, 3> rgb;
+  const glm::dvec3 sun(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                       std::cos(elevation) * std::cos(azimuth));
+  return procedural(1024, 512, [sun](const glm::dvec3& d) {
+    const double up = d.y;
+    const double cos_sun = glm::dot(d, sun);
+    glm::dvec3 rgb;
     if (up >= 0.0) {  // the sky: deep blue overhead, pale at the horizon, brighter around the sun
       const double h = std::pow(1.0 - up, 3.0);
       const double glow = 0.6 * std::pow(std::max(0.0, cos_sun), 32.0);
-      rgb = {0.18 + 0.5 * h + glow, 0.32 + 0.45 * h + glow * 0.9, 0.7 + 0.25 * h + glow * 0.7};
+      rgb = glm::dvec3(0.18 + 0.5 * h + glow, 0.32 + 0.45 * h + glow * 0.9, 0.7 + 0.25 * h + glow * 0.7);
     } else {  // the ground: a warm grey, darker straight down
       const double g = 0.12 + 0.08 * (1.0 + up);
-      rgb = {g * 1.05, g, g * 0.9};
+      rgb = glm::dvec3(g * 1.05, g, g * 0.9);
     }
     // The sun's disk: radiance 1400 over 2.15e-3 sr, an irradiance of about 3 (a white Lambertian plane under it: 1).
-    if (cos_sun > std::cos(1.5 * kPi / 180.0)) rgb = {1400.0, 1350.0, 1250.0};
+    if (cos_sun > std::cos(1.5 * kPi / 180.0)) rgb = glm::dvec3(1400.0, 1350.0, 1250.0);
     return rgb;
   });
 }
 
 }  // namespace
 
-std::array<double, 3> environment_direction(double u, double v) {
+glm::dvec3 environment_direction(double u, double v) {
   const double theta = kPi * v, phi = 2.0 * kPi * u;
   return {std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi)};
 }
 
-std::array<double, 2> environment_coordinates(const std::array<double, 3>& d) {
-  double u = std::atan2(d[0], d[2]) / (2.0 * kPi);
+glm::dvec2 environment_coordinates(const glm::dvec3& d) {
+  double u = std::atan2(d.x, d.z) / (2.0 * kPi);
   if (u < 0.0) u += 1.0;
-  return {u, std::acos(std::clamp(d[1], -1.0, 1.0)) / kPi};
+  return {u, std::acos(std::clamp(d.y, -1.0, 1.0)) / kPi};
+}
+
+glm::dmat3 environment_from_world(double alpha) {
+  return glm::dmat3(glm::rotate(glm::dmat4(1.0), -alpha, glm::dvec3(0.0, 1.0, 0.0)));
 }
 
 std::optional<EnvironmentMap> builtin_environment(std::string_view name) {

@@ -11,6 +11,9 @@
 #pragma once
 
 #include <array>
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -41,8 +44,12 @@ EnvironmentMap read_hdr_environment(const std::string& path);
 EnvironmentMap load_environment(const std::string& source);
 
 // The unit direction at the centre of texel coordinates (u, v) in [0, 1]^2, and back.
-std::array<double, 3> environment_direction(double u, double v);
-std::array<double, 2> environment_coordinates(const std::array<double, 3>& direction);
+glm::dvec3 environment_direction(double u, double v);
+glm::dvec2 environment_coordinates(const glm::dvec3& direction);
+
+// The rotation that takes a world direction d to the map's frame, R_y(-alpha) d, for an environment turned by alpha
+// radians about +y (shaders/environment.glsl applies it as u_env_from_world).
+glm::dmat3 environment_from_world(double alpha);
 
 // Importance sampling of an environment by luminance: the density over (u, v) proportional to
 // Y(texel) sin(theta), piecewise constant per texel, normalized so that it integrates to 1 over [0, 1]^2; its

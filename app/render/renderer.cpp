@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <glm/gtc/type_ptr.hpp>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -118,7 +119,8 @@ void Renderer::bind_environment(GLuint program, const EnvironmentView& environme
   }
   glActiveTexture(GL_TEXTURE0);
   glUniform1f(location(program, "u_env_scale"), static_cast<float>(environment.scale));
-  glUniform1f(location(program, "u_env_rotation"), static_cast<float>(environment.rotation));
+  const glm::mat3 from_world(environment_from_world(environment.rotation));
+  glUniformMatrix3fv(location(program, "u_env_from_world"), 1, GL_FALSE, glm::value_ptr(from_world));
 }
 
 void Renderer::accumulate_environment(EnvironmentAccumulation& accumulation, const EnvironmentView& environment,
@@ -205,8 +207,7 @@ void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface,
   }
   glUniform1i(location(program, "u_accumulation"), 8);
   glActiveTexture(GL_TEXTURE0);
-  glUniform3f(location(program, "u_light"), static_cast<float>(view.light[0]), static_cast<float>(view.light[1]),
-              static_cast<float>(view.light[2]));
+  glUniform3fv(location(program, "u_light"), 1, glm::value_ptr(glm::vec3(view.light)));
   glUniform1f(location(program, "u_irradiance"), static_cast<float>(view.irradiance));
   glUniform1f(location(program, "u_exposure"), static_cast<float>(view.exposure));
   glUniform1i(location(program, "u_output_linear"), view.linear_output ? 1 : 0);

@@ -43,9 +43,9 @@ struct EnvironmentView {
 inline constexpr std::array<float, 3> kFlatBackdrop = {0.02f, 0.02f, 0.025f};
 
 struct SphereView {
-  std::array<double, 3> light = {0.0, 0.0, 1.0};  // unit vector toward the light; camera frame, +z toward viewer
-  double irradiance = 3.141592653589793;          // E on a plane normal to the beam (pi: white Lambert -> cos); 0 off
-  double exposure = 1.0;                          // linear multiplier before the tone map
+  glm::dvec3 light = {0.0, 0.0, 1.0};     // unit vector toward the light; camera frame, +z toward viewer
+  double irradiance = 3.141592653589793;  // E on a plane normal to the beam (pi: white Lambert -> cos); 0 off
+  double exposure = 1.0;                  // linear multiplier before the tone map
   ToneMap tone_map = ToneMap::Exponential;
   bool linear_output = false;                     // write linear radiance (float targets, .hdr, tests); the flat
                                                   // backdrop is then zero radiance

@@ -25,7 +25,7 @@ std::optional<ViewKind> parse_view_kind(std::string_view name) {
 
 std::string_view view_kind_name(ViewKind view) { return kViewKindNames[static_cast<std::size_t>(view)]; }
 
-std::array<double, 3> light_direction(double theta, double phi) {
+glm::dvec3 light_direction(double theta, double phi) {
   return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
 }
 

@@ -1,6 +1,7 @@
 // What one picture shows: the sphere, the polar lobes, or both side by side, and how the views share the frame.
 #pragma once
 
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -33,7 +34,7 @@ struct Scene {
 
 // A light at polar angle theta from the view direction and azimuth phi (radians), as a unit vector in the camera
 // frame (+z toward the viewer, +x right, +y up).
-std::array<double, 3> light_direction(double theta, double phi);
+glm::dvec3 light_direction(double theta, double phi);
 
 // The scene for a solved material: light, exposure, and the lobe plot scaled so that its largest value (BRDF or
 // BTDF in the plane of incidence, from the CPU evaluation) reaches the outer circle. `previous`: the scene shown

@@ -7,6 +7,7 @@
 #include <stb_image_write.h>  // libstb.so holds the implementation
 
 #include <cmath>
+#include <glm/matrix.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -72,6 +73,34 @@ TEST(EnvironmentMap, EmptyAndOversizedHeadersAreRefusedBeforeAnyPixelIsRead) {
   EXPECT_NE(refusal(header + "-Y 8192 +X 16384\n").find("larger than 8192x4096"), std::string::npos);
   EXPECT_NE(refusal(header + "-Y 10 +X 12\n" + std::string(40, '\x01')).find("not equirectangular"), std::string::npos);
   EXPECT_NE(refusal("P6\n2 1\n255\nabcdef").find("not a Radiance .hdr image"), std::string::npos);
+}
+
+// A map's directions and coordinates are inverses, and turning the environment by alpha about +y shifts what a
+// direction sees by -alpha / (2 pi) in u (environment_map.h's conventions; shaders/environment.glsl applies the same
+// matrix), leaving v alone. The matrix is a rotation: its transpose is its inverse, and +y stays put.
+TEST(EnvironmentMap, TurningTheEnvironmentShiftsTheLongitude) {
+  constexpr double kTwoPi = 6.283185307179586;
+  for (const double alpha : {0.0, 0.4, -1.3, 3.0}) {
+    const glm::dmat3 from_world = environment_from_world(alpha);
+    const glm::dmat3 product = glm::transpose(from_world) * from_world;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(product[c][r], r == c ? 1.0 : 0.0, 1e-15);
+    }
+    const glm::dvec3 up = from_world * glm::dvec3(0.0, 1.0, 0.0);
+    EXPECT_NEAR(up.y, 1.0, 1e-15);
+    for (const double u : {0.1, 0.35, 0.5, 0.9}) {
+      for (const double v : {0.2, 0.5, 0.8}) {
+        const glm::dvec2 back = environment_coordinates(environment_direction(u, v));
+        EXPECT_NEAR(back.x, u, 1e-12);
+        EXPECT_NEAR(back.y, v, 1e-12);
+        const glm::dvec2 seen = environment_coordinates(from_world * environment_direction(u, v));
+        double expected_u = std::fmod(u - alpha / kTwoPi, 1.0);
+        if (expected_u < 0.0) expected_u += 1.0;
+        EXPECT_NEAR(seen.x, expected_u, 1e-12) << "alpha " << alpha << " u " << u;
+        EXPECT_NEAR(seen.y, v, 1e-12);
+      }
+    }
+  }
 }
 
 }  // namespace
