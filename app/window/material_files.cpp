@@ -142,4 +142,17 @@ void MaterialFiles::remember(const std::string& path) {
   }
 }
 
+MaterialSession initial_session(const WindowOptions& options) {
+  if (!options.material_path.empty()) {
+    MaterialSession session = opened_session(options.document, options.material_path);
+    session.saved = options.material;
+    return session;
+  }
+  MaterialSession session =
+      untitled_session(options.material, options.preset.empty() ? "untitled" : "preset " + options.preset);
+  session.name = options.document.name;
+  session.description = options.document.description;
+  return session;
+}
+
 }  // namespace skinlayer

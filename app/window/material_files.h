@@ -12,6 +12,7 @@
 #include "app/preview/material_session.h"
 #include "app/solution/material_solve.h"
 #include "app/window/file_panel.h"
+#include "app/window/window_options.h"
 
 namespace skinlayer {
 
@@ -48,5 +49,9 @@ class MaterialFiles {
   std::optional<std::filesystem::path> recent_list_;
   std::vector<std::string> recent_;
 };
+
+// The session the window opens with: the material file given with --material (flags given next to it count as
+// opened, not as unsaved edits), or an untitled one named for its preset.
+MaterialSession initial_session(const WindowOptions& options);
 
 }  // namespace skinlayer

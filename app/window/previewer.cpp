@@ -4,24 +4,17 @@
 
 #include <algorithm>
 #include <chrono>
-#include <deque>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "app/cli/flag_parser.h"
 #include "app/gl/gl_api.h"
-#include "app/material/material_file.h"
-#include "app/material/material_json.h"
 #include "app/material/picture_metadata.h"
-#include "app/material/presets.h"
 #include "app/preview/edit_history.h"
 #include "app/preview/material_session.h"
 #include "app/preview/preview_state.h"
 #include "app/preview/recent_files.h"
-#include "app/preview/scripted_edit.h"
 #include "app/preview/solve_worker.h"
 #include "app/preview/view_layout.h"
 #include "app/process/heap_retention.h"
@@ -30,14 +23,14 @@
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
 #include "app/window/control_panel.h"
-#include "app/window/export_job.h"
+#include "app/window/background_jobs.h"
 #include "app/window/file_panel.h"
 #include "app/window/glfw_window.h"
 #include "app/window/help_overlay.h"
-#include "app/window/match_job.h"
 #include "app/window/material_files.h"
 #include "app/window/screenshot.h"
 #include "app/window/shortcuts.h"
+#include "app/window/test_action_script.h"
 #include "app/window/ui_context.h"
 #include "app/window/view_overlays.h"
 #include "core/conventions.h"
@@ -55,7 +48,7 @@ constexpr double kCaptureWaitSeconds = 1.0 / 60.0;
 constexpr int kEagerFrames = 3;                    // frames drawn at full rate after any activity
 constexpr double kEagerWaitSeconds = 1.0 / 120.0;  // caps the full rate where vsync does not (e.g. under Xvfb)
 
-class Previewer {
+class Previewer final : private TestActionTarget {
  public:
   Previewer(const WindowOptions& options, std::ostream& out)
       : out_(out),
@@ -64,7 +57,7 @@ class Previewer {
         imgui_(window_.handle(), window_.content_scale()),
         history_(Edit{options.material, LightState{}}),
         files_(initial_session(options), recent_files_path()),
-        test_actions_(options.test_actions.begin(), options.test_actions.end()),
+        script_(options.test_actions),
         worker_(post_empty_event) {
     state_.material = options.material;
     state_.view.view = options.view;
@@ -79,7 +72,6 @@ class Previewer {
   }
 
   int run() {
-    last_action_ = std::chrono::steady_clock::now();
     double timeout = 0.0;
     while (!captured_) {
       if (window_.should_close()) {
@@ -92,7 +84,8 @@ class Previewer {
       // The capture waits for the solve of the final parameters: counted from the last scripted action, so that a
       // long script (the soak test's thousands of edits) is not cut short.
       if (capture_path_ &&
-          std::chrono::steady_clock::now() - last_action_ > std::chrono::duration<double>(kCaptureTimeoutSeconds)) {
+          std::chrono::steady_clock::now() - script_.last_action() >
+              std::chrono::duration<double>(kCaptureTimeoutSeconds)) {
         throw std::runtime_error("capture: the material was not solved within " +
                                  std::to_string(static_cast<int>(kCaptureTimeoutSeconds)) + " s");
       }
@@ -104,12 +97,7 @@ class Previewer {
   // One frame; returns how long the loop may wait for events before the next one.
   double frame() {
     bool activity = take_result();
-    if (const std::optional<std::string> outcome = export_job_.take_outcome()) {
-      last_export_ = *outcome;
-      out_ << *outcome << "\n" << std::flush;
-      activity = true;
-    }
-    activity |= take_match();
+    activity |= jobs_.take_outcomes(state_.material, out_);
     const std::array<int, 2> framebuffer = window_.framebuffer_size();
     if (framebuffer[0] < 1 || framebuffer[1] < 1) return kIdleWaitSeconds;  // minimized: nothing to draw
     update_scene();
@@ -126,53 +114,23 @@ class Previewer {
     bool save = panel.save_screenshot;
     if (panel.pin) pin_shown(edited);
     if (panel.unpin) unpin(edited);
-    if (panel.export_bsdf) start_export(ExportFormat::Bsdf);
-    if (panel.export_merl) start_export(ExportFormat::Merl);
-    if (panel.export_rgl) start_export(ExportFormat::Rgl);
-    if (panel.match_srgb) start_match(edited.material, *panel.match_srgb);
+    if (panel.export_bsdf) export_shown(ExportFormat::Bsdf);
+    if (panel.export_merl) export_shown(ExportFormat::Merl);
+    if (panel.export_rgl) export_shown(ExportFormat::Rgl);
+    if (panel.match_srgb) jobs_.start_match(edited.material, *panel.match_srgb);
     bool reset = panel.reset_material;
     bool undo = panel.file.undo, redo = panel.file.redo;
     std::vector<FileCommand> file_commands;
     if (panel.file.command.kind != FileCommand::Kind::None) file_commands.push_back(panel.file.command);
-    const std::vector<GlfwWindow::KeyPress> presses = window_.take_key_presses();
-    for (const Action action : pressed_actions(presses, ImGui::GetIO().WantTextInput)) {
-      activity = true;
-      switch (action) {
-        case Action::SaveScreenshot:
-          save = true;
-          break;
-        case Action::ResetMaterial:
-          reset = true;
-          break;
-        case Action::ToggleLogScale:
-          edited.view.log_lobes = !edited.view.log_lobes;
-          break;
-        case Action::ToggleHelp:
-          edited.show_help = !edited.show_help;
-          break;
-        case Action::CloseHelp:
-          edited.show_help = false;
-          break;
-        case Action::Quit:
-          window_.request_close();
-          break;
-        case Action::Open:
-          file_commands.push_back({FileCommand::Kind::Open, ""});
-          break;
-        case Action::Save:
-          file_commands.push_back({FileCommand::Kind::Save, ""});
-          break;
-        case Action::SaveAs:
-          file_commands.push_back({FileCommand::Kind::SaveAs, ""});
-          break;
-        case Action::Undo:
-          undo = true;
-          break;
-        case Action::Redo:
-          redo = true;
-          break;
-      }
-    }
+    const std::vector<Action> actions = pressed_actions(window_.take_key_presses(), ImGui::GetIO().WantTextInput);
+    const ActionRequests requested = apply_actions(actions, edited);
+    activity |= !actions.empty();
+    save |= requested.save_screenshot;
+    reset |= requested.reset_material;
+    undo |= requested.undo;
+    redo |= requested.redo;
+    if (requested.quit) window_.request_close();
+    file_commands.insert(file_commands.end(), requested.file_commands.begin(), requested.file_commands.end());
     draw_help_overlay(edited.show_help);
     if (reset) edited = reset_material(edited);
     state_ = edited;
@@ -182,12 +140,18 @@ class Previewer {
     if (const FileCommand confirmed = file_dialogs(files_.dialog()); confirmed.kind != FileCommand::Kind::None) {
       file_commands.push_back(confirmed);
     }
-    run_test_action(file_commands, undo, redo);
+    ActionRequests scripted;
+    script_.step(TestActionReadiness{shown_ && !solving() && !jobs_.matching(), resting_, files_.dialog().kind},
+                 *this, scripted);
+    undo |= scripted.undo;
+    redo |= scripted.redo;
+    if (scripted.quit) window_.request_close();
+    file_commands.insert(file_commands.end(), scripted.file_commands.begin(), scripted.file_commands.end());
     for (const FileCommand& command : file_commands) run_file_command(command);
     if (undo) step_history(history_.undo(current_edit()));
     if (redo) step_history(history_.redo(current_edit()));
     // One slider drag, or one drag of the light on the sphere, is one undo step: it commits on release.
-    history_.observe(current_edit(), ImGui::IsAnyItemActive() || !drag_steps_.empty());
+    history_.observe(current_edit(), ImGui::IsAnyItemActive() || script_.dragging());
     window_.set_title(window_title(files_.session(), state_.material, imgui_.unicode_labels()));
     submit_if_needed();
 
@@ -201,7 +165,7 @@ class Previewer {
     if (save && target != ExportTarget::Window) {
       const Rect& rect = target == ExportTarget::Sphere ? layout.sphere : layout.plots;
       if (rect.empty() || !shown_) {
-        last_export_ = "nothing saved: that view is not on screen";
+        jobs_.note_export("nothing saved: that view is not on screen");
       } else {
         export_picture(to_viewport(rect, scale, framebuffer[1]), state_.export_options.path);
       }
@@ -225,10 +189,7 @@ class Previewer {
   void rest_if_idle(bool activity) {
     quiet_frames_ = activity ? 0 : quiet_frames_ + 1;
     if (activity) resting_ = false;
-    if (resting_ || quiet_frames_ < kEagerFrames || worker_.settling() || export_job_.running() ||
-        match_job_.running()) {
-      return;
-    }
+    if (resting_ || quiet_frames_ < kEagerFrames || worker_.settling() || jobs_.running()) return;
     release_freed_heap_memory();
     resting_ = true;
   }
@@ -275,13 +236,13 @@ class Previewer {
     return PanelStatus{shown_ ? &*shown_ : nullptr,
                        solving(),
                        error_,
-                       last_export_,
-                       export_job_.progress(),
+                       jobs_.last_export(),
+                       jobs_.export_progress(),
                        imgui_.unicode_labels(),
                        environment_.samples(),
                        environment_error_,
-                       match_job_.running(),
-                       match_outcome_};
+                       jobs_.matching(),
+                       jobs_.match_outcome()};
   }
 
   // The scene of the shown result under the current light and view; the lobe scale (a CPU pass over the BSDF) is
@@ -408,64 +369,26 @@ class Previewer {
     }
   }
 
-  // The Export BSDF and Export MERL buttons: the shown material (what the window draws) to the screenshot path with
-  // the format's extension, on the export's own thread (app/window/export_job.h).
-  void start_export(ExportFormat format, const std::string& requested = "") {
-    if (!shown_ || !shown_->error.empty()) {
-      last_export_ = "nothing exported: no material is shown";
-      return;
-    }
-    std::string path = requested.empty() ? state_.export_options.path : requested;
-    if (!path.empty()) path = with_export_extension(path, format);
-    if (!export_job_.start(format, shown_->tables(), path)) last_export_ = "an export is already running";
-  }
-
-  // "Match colour...": the material as it is when pressed, matched on the match's own thread (match_job.h).
-  void start_match(const ColorMaterial& material, const std::array<double, 3>& srgb) {
-    if (!match_job_.start(material_document(material), Eigen::Vector3d(srgb[0], srgb[1], srgb[2]))) {
-      match_outcome_ = "a match is already running";
-    }
-  }
-
-  // A finished match sets its parameters at once, so that they are one undo step; returns true if there was one.
-  bool take_match() {
-    std::optional<MatchOutcome> outcome = match_job_.take_outcome();
-    if (!outcome) return false;
-    match_outcome_ = outcome->line;
-    out_ << "match: " << outcome->line << "\n" << std::flush;
-    if (outcome->document) {
-      const SubsurfaceModel model = state_.material.model;
-      state_.material = color_material(*outcome->document);
-      state_.material.model = model;
-    }
-    return true;
+  // The Export buttons (and the test hook's exports): the shown material, what the window draws, to the screenshot
+  // path with the format's extension.
+  void export_shown(ExportFormat format, const std::string& requested = "") {
+    const bool shown = shown_ && shown_->error.empty();
+    jobs_.start_export(format, shown ? &shown_->tables() : nullptr,
+                       requested.empty() ? state_.export_options.path : requested);
   }
 
   // Saves a region of the back buffer; failures are shown in the panel (and thrown in capture mode).
   void export_picture(const Viewport& region, const std::string& path) {
     try {
       const SavedScreenshot saved =
-          save_screenshot(region, path, {picture_metadata(shown_material(), drawing_settings())});
+          save_screenshot(region, path, {picture_metadata(shown_material(), drawing_settings(state_, comparing()))});
       out_ << "wrote " << saved.path << " (" << saved.width << "x" << saved.height << ")\n" << std::flush;
-      last_export_ =
-          "saved " + saved.path + " (" + std::to_string(saved.width) + "x" + std::to_string(saved.height) + ")";
+      jobs_.note_export("saved " + saved.path + " (" + std::to_string(saved.width) + "x" +
+                        std::to_string(saved.height) + ")");
     } catch (const std::exception& error) {
       if (capture_path_) throw;
-      last_export_ = error.what();
+      jobs_.note_export(error.what());
     }
-  }
-
-  static MaterialSession initial_session(const WindowOptions& options) {
-    if (!options.material_path.empty()) {
-      MaterialSession session = opened_session(options.document, options.material_path);
-      session.saved = options.material;  // flags given next to the file count as opened, not as unsaved edits
-      return session;
-    }
-    MaterialSession session =
-        untitled_session(options.material, options.preset.empty() ? "untitled" : "preset " + options.preset);
-    session.name = options.document.name;
-    session.description = options.document.description;
-    return session;
   }
 
   Edit current_edit() const { return Edit{state_.material, state_.light}; }
@@ -487,74 +410,23 @@ class Previewer {
     if (files_.run(command, state_.material)) window_.request_close();
   }
 
-  // --test-actions: one action a frame, once the shown result answers the current parameters, so that each edit
-  // is solved and committed as its own undo step, as a person's would be. A drag moves on one value every frame
-  // without waiting, as the mouse does, and commits once when it ends.
-  void run_test_action(std::vector<FileCommand>& commands, bool& undo, bool& redo) {
-    if (!drag_steps_.empty()) {
-      apply_scripted_edit(state_, "set", drag_steps_.front());
-      drag_steps_.pop_front();
-      return;
-    }
-    const FileDialog::Kind dialog = files_.dialog().kind;
-    if (test_actions_.empty() || !shown_ || solving() || match_job_.running() || dialog == FileDialog::Kind::Open ||
-        dialog == FileDialog::Kind::SaveAs) {
-      return;
-    }
-    const std::string action = test_actions_.front();
-    if ((action == "memory" || action == "rest") && !resting_) return;  // at rest, as a person glancing at top
-    test_actions_.pop_front();
-    last_action_ = std::chrono::steady_clock::now();
-    const std::size_t space = action.find(' ');
-    const std::string verb = action.substr(0, space);
-    const std::string argument = space == std::string::npos ? "" : action.substr(space + 1);
-    if (verb == "undo") {
-      undo = true;
-    } else if (verb == "redo") {
-      redo = true;
-    } else if (verb == "drop") {
-      commands.push_back({FileCommand::Kind::OpenPath, argument});
-    } else if (verb == "save") {
-      commands.push_back({FileCommand::Kind::SaveAs, argument});
-    } else if (verb == "preset") {
-      commands.push_back({FileCommand::Kind::LoadPreset, argument});
-    } else if (verb == "discard") {
-      if (dialog != FileDialog::Kind::ConfirmDiscard) throw std::runtime_error("test action: nothing to discard");
-      commands.push_back({FileCommand::Kind::Discard, ""});
-    } else if (verb == "quit") {
-      window_.request_close();  // as Ctrl+Q or the window's close button
-    } else if (verb == "title") {
-      out_ << "title: " << window_title(files_.session(), state_.material, false) << "\n" << std::flush;
-    } else if (verb == "export-merl") {
-      start_export(ExportFormat::Merl, argument);
-    } else if (verb == "export-bsdf") {
-      start_export(ExportFormat::Bsdf, argument);
-    } else if (verb == "export-rgl") {
-      start_export(ExportFormat::Rgl, argument);
-    } else if (verb == "match") {  // "match R,G,B": Match colour... with that sRGB-encoded colour
-      const std::vector<std::string_view> channels = cli::split_list(argument, ',');
-      if (channels.size() != 3) throw std::runtime_error("test action: match needs R,G,B");
-      start_match(state_.material, {std::stod(std::string(channels[0])), std::stod(std::string(channels[1])),
-                                    std::stod(std::string(channels[2]))});
-    } else if (verb == "drag") {
-      const std::vector<std::string> steps = drag_steps(argument);
-      drag_steps_.assign(steps.begin(), steps.end());
-    } else if (verb == "rest") {  // waits for the window to rest: no solve, export or match in flight
-    } else if (verb == "memory") {  // the soak test's reading
-      const auto kilobytes = [](std::optional<std::size_t> bytes) {
-        return bytes ? std::to_string(*bytes / 1024) + " kB" : std::string("unknown");
-      };
-      out_ << "memory: resident " << kilobytes(resident_memory_bytes()) << ", heap in use "
-           << kilobytes(heap_in_use_bytes()) << ", solve cache " << kilobytes(worker_.stats().cache_bytes) << "\n"
-           << std::flush;
-    } else if (verb == "pin") {
-      pin_shown(state_);
-    } else if (verb == "unpin") {
-      unpin(state_);
-    } else if (!apply_scripted_edit(state_, verb, argument)) {
-      throw std::runtime_error("test action: unknown action '" + action + "'");
-    }
+  // The test hook's actions on the previewer (TestActionTarget, test_action_script.h).
+  PreviewState& state() override { return state_; }
+  void print_title() override {
+    out_ << "title: " << window_title(files_.session(), state_.material, false) << "\n" << std::flush;
   }
+  void start_export(ExportFormat format, const std::string& path) override { export_shown(format, path); }
+  void start_match(const std::array<double, 3>& srgb) override { jobs_.start_match(state_.material, srgb); }
+  void print_memory() override {
+    const auto kilobytes = [](std::optional<std::size_t> bytes) {
+      return bytes ? std::to_string(*bytes / 1024) + " kB" : std::string("unknown");
+    };
+    out_ << "memory: resident " << kilobytes(resident_memory_bytes()) << ", heap in use "
+         << kilobytes(heap_in_use_bytes()) << ", solve cache " << kilobytes(worker_.stats().cache_bytes) << "\n"
+         << std::flush;
+  }
+  void pin() override { pin_shown(state_); }
+  void unpin() override { unpin(state_); }
 
   // The material of the picture on screen (the shown result's; the sliders may be ahead of it).
   MaterialDocument shown_material() const {
@@ -564,29 +436,10 @@ class Previewer {
     return document;
   }
 
-  // How the picture was drawn, for its metadata.
-  nlohmann::ordered_json drawing_settings() const {
-    nlohmann::ordered_json settings = {{"command", "previewer"},
-                                       {"view", std::string(view_kind_name(state_.view.view))},
-                                       {"light_theta", state_.light.theta_degrees},
-                                       {"light_phi", state_.light.phi_degrees},
-                                       {"exposure", exposure_multiplier(state_.view)},
-                                       {"scale", state_.view.log_lobes ? "log" : "linear"}};
-    if (!state_.lighting.environment.empty()) settings["environment"] = state_.lighting.environment;
-    if (comparing()) {  // the A/B comparison's pinned material, as a material file
-      settings["pinned"] = material_json(material_document(*state_.comparison.pinned));
-      settings["split"] = state_.comparison.split;
-    }
-    return settings;
-  }
-
   // --capture: once the shown result answers the final parameters and a few frames have shown it, save the whole
   // window through the same export path as the S key, and finish.
   void capture_if_ready(std::array<int, 2> framebuffer) {
-    if (!capture_path_ || !test_actions_.empty() || !drag_steps_.empty() || export_job_.running() ||
-        match_job_.running()) {
-      return;
-    }
+    if (!capture_path_ || !script_.finished() || jobs_.running()) return;
     const bool final_result = submitted_ && !worker_.settling();
     if (final_result && !error_.empty()) throw std::runtime_error(error_);
     if (!final_result || !shown_ || shown_->preview || !same_request(shown_->request, *submitted_)) return;
@@ -615,7 +468,6 @@ class Previewer {
   std::optional<SolveResult> shown_;       // on screen: its tables are uploaded to renderer_
   std::optional<SolveRequest> submitted_;  // the newest request given to the worker
   std::string error_;                      // the newest result's error, if it failed
-  std::string last_export_;
   Scene scene_;
   std::uint64_t scene_generation_ = 0;
   double scene_theta_ = -1.0;
@@ -626,9 +478,7 @@ class Previewer {
   int quiet_frames_ = 0;  // frames since the last input or result
   EditHistory history_;
   MaterialFiles files_;
-  std::deque<std::string> test_actions_;
-  std::deque<std::string> drag_steps_;  // a scripted drag's "set" edits still to make, one a frame
-  std::chrono::steady_clock::time_point last_action_;  // when the last scripted action ran (or the window opened)
+  TestActionScript script_;  // --test-actions
   EnvironmentPreview environment_;
   EnvironmentPreview environment_pinned_;     // B's estimate in the A/B comparison
   std::optional<ColorTables> pinned_tables_;  // B's tables (its textures are in Renderer::kPinnedSlot)
@@ -638,9 +488,7 @@ class Previewer {
   std::string environment_error_;   // why the chosen environment could not be loaded
   std::string failed_environment_;  // that source, not retried until another is chosen
   int capture_samples_ = 0;         // --capture under an environment waits for this many samples per pixel
-  ExportJob export_job_;
-  MatchJob match_job_;
-  std::string match_outcome_;  // the last match's outcome, for the Skin section
+  BackgroundJobs jobs_;  // the exports and "Match colour..."
   SolveWorker worker_;  // last: destroyed (joined) first, while GLFW, which it wakes, is still initialized
 };
 

@@ -56,4 +56,46 @@ std::vector<Action> pressed_actions(std::span<const GlfwWindow::KeyPress> presse
   return actions;
 }
 
+ActionRequests apply_actions(std::span<const Action> actions, PreviewState& state) {
+  ActionRequests requests;
+  for (const Action action : actions) {
+    switch (action) {
+      case Action::SaveScreenshot:
+        requests.save_screenshot = true;
+        break;
+      case Action::ResetMaterial:
+        requests.reset_material = true;
+        break;
+      case Action::ToggleLogScale:
+        state.view.log_lobes = !state.view.log_lobes;
+        break;
+      case Action::ToggleHelp:
+        state.show_help = !state.show_help;
+        break;
+      case Action::CloseHelp:
+        state.show_help = false;
+        break;
+      case Action::Quit:
+        requests.quit = true;
+        break;
+      case Action::Open:
+        requests.file_commands.push_back({FileCommand::Kind::Open, ""});
+        break;
+      case Action::Save:
+        requests.file_commands.push_back({FileCommand::Kind::Save, ""});
+        break;
+      case Action::SaveAs:
+        requests.file_commands.push_back({FileCommand::Kind::SaveAs, ""});
+        break;
+      case Action::Undo:
+        requests.undo = true;
+        break;
+      case Action::Redo:
+        requests.redo = true;
+        break;
+    }
+  }
+  return requests;
+}
+
 }  // namespace skinlayer

@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "app/preview/preview_state.h"
+#include "app/window/file_panel.h"
 #include "app/window/glfw_window.h"
 
 namespace skinlayer {
@@ -44,5 +46,18 @@ std::span<const Gesture> gestures();
 // The actions of these key presses, in order. None while a text field has the keyboard (typing), so typing a file
 // name never triggers a shortcut.
 std::vector<Action> pressed_actions(std::span<const GlfwWindow::KeyPress> presses, bool typing);
+
+// What one frame's actions ask of the previewer, beyond the toggles they make to its state.
+struct ActionRequests {
+  bool save_screenshot = false;
+  bool reset_material = false;
+  bool undo = false;
+  bool redo = false;
+  bool quit = false;
+  std::vector<FileCommand> file_commands;  // Open, Save, Save as, in the order pressed
+};
+
+// Makes the actions' toggles in `state` (the lobe plots' log scale, the help overlay) and returns the rest.
+ActionRequests apply_actions(std::span<const Action> actions, PreviewState& state);
 
 }  // namespace skinlayer
