@@ -25,7 +25,7 @@ void TestActionScript::step(const TestActionReadiness& ready, TestActionTarget& 
   const std::size_t space = action.find(' ');
   const std::string verb = action.substr(0, space);
   const std::string argument = space == std::string::npos ? "" : action.substr(space + 1);
-  if ((action == "memory" || action == "rest") && !ready.resting) return;  // at rest, as a person glancing at top
+  if ((verb == "memory" || verb == "rest") && !ready.resting) return;  // at rest, as a person glancing at top
   actions_.pop_front();
   last_action_ = std::chrono::steady_clock::now();
   if (verb == "undo") {
