@@ -63,29 +63,11 @@ TEST(CliDispatch, OverviewNamesTheCommands) {
   }
 }
 
-// The commands, as the executable names them in its error for an unknown one ("the commands are a, b and c").
-std::vector<std::string> command_names() {
-  const std::string err = run_skinlayer({"help", "no-such-command"}).err;
-  const std::string marker = "the commands are ";
-  const std::size_t at = err.find(marker);
-  if (at == std::string::npos) return {};
-  std::string list = err.substr(at + marker.size());
-  list = list.substr(0, list.find('\n'));
-  std::vector<std::string> names;
-  std::string name;
-  for (std::istringstream words(list); words >> name;) {
-    if (name == "and") continue;
-    if (name.back() == ',') name.pop_back();
-    names.push_back(name);
-  }
-  return names;
-}
-
 // Every command answers --help and -h with its usage on stdout and exit 0, whatever other flags stand beside it,
 // the same text as `skinlayer help COMMAND`; and the overview names every command.
 TEST(CliDispatch, EveryCommandAnswersHelp) {
   const std::string overview = run_skinlayer({"--help"}).out;
-  const std::vector<std::string> commands = command_names();
+  const std::vector<std::string> commands = skinlayer_command_names();
   ASSERT_GE(commands.size(), 10u) << "eval, albedo, spectrum, match, render, material, presets, figures, ...";
   for (const std::string& command : commands) {
     const ProcessResult help = run_skinlayer({command, "--help"});

@@ -96,22 +96,6 @@ Guide read_guide() {
   return guide;
 }
 
-// The commands, as the executable names them in its error for an unknown one ("the commands are a, b and c").
-std::vector<std::string> command_names() {
-  const std::string err = run_skinlayer({"help", "no-such-command"}).err;
-  const std::string marker = "the commands are ";
-  const std::size_t at = err.find(marker);
-  if (at == std::string::npos) return {};
-  std::istringstream words(err.substr(at + marker.size()));
-  std::vector<std::string> names;
-  for (std::string name; words >> name;) {
-    if (name == "and") continue;
-    if (name.back() == ',') name.pop_back();
-    names.push_back(name);
-  }
-  return names;
-}
-
 std::string help_of(const std::string& command) {
   const ProcessResult help =
       command == "previewer" ? run_skinlayer({"--view", "both", "--help"}) : run_skinlayer({command, "--help"});
@@ -123,7 +107,7 @@ TEST(GuideFlags, EveryFlagOfEveryHelpIsInTheGuideAndEveryFlagTheGuideGivesIsInTh
   const Guide guide = read_guide();
   ASSERT_FALSE(guide.material_flags.empty()) << "no \"## Material flags\" section in the guide";
   const FlagSet material_flags = flags_in(guide.material_flags);
-  std::vector<std::string> commands = command_names();
+  std::vector<std::string> commands = skinlayer_command_names();
   ASSERT_GE(commands.size(), 10u);
   commands.push_back("previewer");
   for (const std::string& command : commands) {

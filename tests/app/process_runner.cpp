@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <stdexcept>
 
 extern char** environ;
@@ -117,6 +118,22 @@ std::optional<std::string> find_in_path(const std::string& program) {
     if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
   }
   return std::nullopt;
+}
+
+std::vector<std::string> command_names_in(std::string_view error) {
+  constexpr std::string_view kMarker = "the commands are ";
+  const std::size_t at = error.find(kMarker);
+  if (at == std::string_view::npos) return {};
+  std::string_view list = error.substr(at + kMarker.size());
+  list = list.substr(0, list.find('\n'));
+  std::vector<std::string> names;
+  std::istringstream words{std::string(list)};
+  for (std::string name; words >> name;) {
+    if (name == "and") continue;
+    if (name.back() == ',') name.pop_back();
+    names.push_back(name);
+  }
+  return names;
 }
 
 }  // namespace skinlayer::test

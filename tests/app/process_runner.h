@@ -22,11 +22,20 @@ ProcessResult run_process(const std::vector<std::string>& argv, std::string_view
 // The program's full path if an executable of that name is in PATH.
 std::optional<std::string> find_in_path(const std::string& program);
 
+// The command names in an unknown-command error's list ("...; the commands are a, b and c"), in order; empty when
+// the text has no such list.
+std::vector<std::string> command_names_in(std::string_view error);
+
 #ifdef SKINLAYER_EXECUTABLE
 inline ProcessResult run_skinlayer(const std::vector<std::string>& arguments, std::string_view stdin_text = "") {
   std::vector<std::string> argv = {SKINLAYER_EXECUTABLE};
   argv.insert(argv.end(), arguments.begin(), arguments.end());
   return run_process(argv, stdin_text);
+}
+
+// The commands, as the executable names them in its error for an unknown one.
+inline std::vector<std::string> skinlayer_command_names() {
+  return command_names_in(run_skinlayer({"help", "no-such-command"}).err);
 }
 #endif
 
