@@ -115,12 +115,17 @@ TEST(LayerTables, SplineBetweenGridAnglesMatchesAFinerSolve) {
 namespace skinlayer {
 namespace {
 
-TEST(LayerTables, RefinedTablesHoldTheSplineAtTheFinerGridAngles) {
+// A matched-bottom layer's tables on a coarse grid of 12 angles.
+LayerTables twelve_point_tables() {
   Material m;
   m.bottom = parse_bottom("matched");
   SolveOptions options;
   options.table_size = 12;
-  const LayerTables coarse = solve(m, options);
+  return solve(m, options);
+}
+
+TEST(LayerTables, RefinedTablesHoldTheSplineAtTheFinerGridAngles) {
+  const LayerTables coarse = twelve_point_tables();
   const LayerTables fine = coarse.refined(3);
   ASSERT_EQ(fine.grid_size(), 34);
   ASSERT_EQ(fine.modes(), coarse.modes());
@@ -143,11 +148,7 @@ TEST(LayerTables, RefinedTablesHoldTheSplineAtTheFinerGridAngles) {
 // the new grid's angle, the ends (normal and grazing) are this grid's own samples, and refined(2) is resampled to
 // 2 (K - 1) + 1 points bit for bit.
 TEST(LayerTables, ResampledTablesHoldTheSplineAtTheNewGridAngles) {
-  Material m;
-  m.bottom = parse_bottom("matched");
-  SolveOptions options;
-  options.table_size = 12;
-  const LayerTables tables = solve(m, options);
+  const LayerTables tables = twelve_point_tables();
   for (const int size : {7, 17, 30}) {
     const LayerTables other = tables.resampled(size);
     ASSERT_EQ(other.grid_size(), size);
