@@ -29,7 +29,7 @@ def _wrong_interpreter(what):
     """The ImportError for an interpreter the package was not built for: which one it was built for, and what to do."""
     here = f"{_sys.executable} (Python {_sys.version_info.major}.{_sys.version_info.minor})"
     return ImportError(f"skinlayer {what} under {here}; it was built for {_interpreter.EXECUTABLE} "
-                       f"(Python {_interpreter.VERSION}, with Debian's python3-numpy): run it with "
+                       f"(Python {_interpreter.VERSION}, with its numpy): run it with "
                        f"{_interpreter.EXECUTABLE}, or rebuild with cmake -DPython3_EXECUTABLE=<this interpreter>, "
                        f"which needs numpy and pybind11 for it")
 
