@@ -34,7 +34,7 @@ SkinComparisonLayer skin_comparison_layer(const ColorMaterial& skin, const Solve
   layer.g = kSkinAnisotropy;
   layer.bottom.kind = BottomKind::Matched;  // never reached under a semi-infinite layer
   const std::array<Material, 3> channels = {layer, layer, layer};
-  const AlbedoColorMatch match = match_top_albedo(channels, result.reflectance);
+  const AlbedoColorMatch match = match_top_albedo(channels, result.reflectance, options);
   layer.albedo = match.albedo[0];
   result.layer.layer = layer;
   result.layer.albedo_rgb = match.albedo;

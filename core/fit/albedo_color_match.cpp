@@ -1,21 +1,29 @@
 #include "core/fit/albedo_color_match.h"
 
+#include "core/solve/solve_cache.h"
 #include "core/solver.h"
 
 namespace skinlayer {
 namespace {
 
 // Normal-incidence reflectance of the material with the top albedo `albedo`.
-double normal_reflectance(const Material& material, double albedo) {
+double reflectance_at_normal(const Material& material, double albedo, const SolveOptions& options) {
   const double theta[] = {0.0};
   const double albedos[] = {albedo};
-  return directional_albedo(material, theta, albedos).front().front().reflectance();
+  return directional_albedo(material, theta, albedos, options).front().front().reflectance();
 }
 
 }  // namespace
 
-AlbedoColorMatch match_top_albedo(const std::array<Material, 3>& channels, const std::array<double, 3>& target) {
+AlbedoColorMatch match_top_albedo(const std::array<Material, 3>& channels, const std::array<double, 3>& target,
+                                  const SolveOptions& options) {
   constexpr int kSteps = 40;  // 2^-40 of the albedo range
+  SolveCache own_cache;
+  SolveOptions cached = options;
+  if (cached.cache == nullptr) cached.cache = &own_cache;
+  const auto normal_reflectance = [&cached](const Material& material, double albedo) {
+    return reflectance_at_normal(material, albedo, cached);
+  };
   AlbedoColorMatch match;
   for (std::size_t c = 0; c < 3; ++c) {
     const Material& material = channels[c];

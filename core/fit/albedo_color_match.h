@@ -7,6 +7,7 @@
 #include <array>
 
 #include "core/material.h"
+#include "core/solve/solve_options.h"
 
 namespace skinlayer {
 
@@ -17,6 +18,9 @@ struct AlbedoColorMatch {
 };
 
 // channels[c]: channel c's material (its other layers' albedos are that channel's); its top albedo is replaced.
-AlbedoColorMatch match_top_albedo(const std::array<Material, 3>& channels, const std::array<double, 3>& target);
+// `options` pass the caller's cache (an own one when none is given: every bisection step reuses the interface
+// operators, which do not depend on the albedo), parallel-for and cancellation check to the solves.
+AlbedoColorMatch match_top_albedo(const std::array<Material, 3>& channels, const std::array<double, 3>& target,
+                                  const SolveOptions& options = {});
 
 }  // namespace skinlayer
