@@ -10,6 +10,7 @@
 
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
+#include "core/interfaces/smith_masking.h"
 #include "core/series/quadrature.h"
 
 namespace skinlayer {
@@ -197,14 +198,21 @@ constexpr double kSlopeRange = 5.5;  // in sigma: the density beyond holds erfc(
 //   a square-root edge of 1 - F.
 // Each row is integrated piecewise between them (integrate_pieces); the rows' integral is kinked where a conic's
 // pair of roots appears (q = 1/wz, e/wz, and e / sqrt(c^2 - sx^2) for the cone), so the q range is split there too.
-AlbedoPair integrate_slopes(double sx, double wz, double e, double sigma, double g1_in, const SmithG1Table& smith_g1,
-                            const PieceRules& rules) {
+AlbedoPair integrate_slopes(double sx, double wz, double e, double sigma, double g1_in, MicrofacetModel microfacet,
+                            const SmithG1Table& smith_g1, const PieceRules& rules) {
   const double range = kSlopeRange * sigma;
   const double step = kPieceWidth * sigma;
   const double sigma2 = sigma * sigma;
   const double critical = e < 1.0 ? std::sqrt(1.0 - e * e) : 0.0;  // cos of the critical angle at a facet
   const double centre = -sx / wz;
   const double normalization = 2.0 * g1_in / (wz * kPi * sigma2);  // 2: the q < 0 half mirrors the q > 0 half
+  // The masking-shadowing G2(wi, wo) / G1(wi) (G1(wi) is in the normalization): G1(wo) in the separable form.
+  const auto outgoing_masking = [g1_in, microfacet](double g1_out, bool transmitted) {
+    if (microfacet == MicrofacetModel::Single) return g1_out;
+    return (transmitted ? smith_g2_transmission(g1_in, g1_out, microfacet)
+                        : smith_g2_reflection(g1_in, g1_out, microfacet)) /
+           g1_in;
+  };
 
   // The largest relative density exp(-x^2 / sigma^2) over [a, b].
   const auto peak_density = [&](double a, double b) {
@@ -251,10 +259,12 @@ AlbedoPair integrate_slopes(double sx, double wz, double e, double sigma, double
       const auto [fresnel, cos_t] = fresnel_refraction(cos_i, e);
       AlbedoPair value;
       const double reflected_z = 2.0 * cos_i / s - wz;
-      if (reflected_z > 0.0) value.reflectance = fresnel * smith_g1(reflected_z) * common;
+      if (reflected_z > 0.0) value.reflectance = fresnel * outgoing_masking(smith_g1(reflected_z), false) * common;
       if (fresnel < 1.0) {
         const double transmitted_z = -wz / e + (cos_i / e - cos_t) / s;
-        if (transmitted_z < 0.0) value.transmittance = (1.0 - fresnel) * smith_g1(transmitted_z) * common;
+        if (transmitted_z < 0.0) {
+          value.transmittance = (1.0 - fresnel) * outgoing_masking(smith_g1(transmitted_z), true) * common;
+        }
       }
       return value;
     };
@@ -321,7 +331,7 @@ std::vector<InterfaceAlbedo> interface_albedo(const RoughDielectric& interface, 
       result.push_back({0.0, 0.0});  // grazing: G1(wi) = 0
       continue;
     }
-    const AlbedoPair pair = integrate_slopes(sx, wz, e, interface.sigma, g1_in, smith_g1, rules);
+    const AlbedoPair pair = integrate_slopes(sx, wz, e, interface.sigma, g1_in, interface.microfacet, smith_g1, rules);
     result.push_back({pair.reflectance, pair.transmittance});
   }
   return result;

@@ -16,7 +16,8 @@ struct InterfaceAlbedo {
 
 // Integrates over microfacet normals in slope space, where D(h) cos(alpha) d omega_h is the Gaussian slope density
 // exp(-(p^2+q^2)/sigma^2)/(pi sigma^2) dp dq. Changing variables from outgoing direction to h turns both integrands
-// into  F-or-(1-F) * G1(wi) G1(wo) * |wi.h| / (|wi.n| h.n)  (Walter et al. 2007, eqs. 14 and 17). That integrand is
+// into  F-or-(1-F) * G2(wi, wo) * |wi.h| / (|wi.n| h.n)  (Walter et al. 2007, eqs. 14 and 17; G2 the interface's
+// masking-shadowing, smith_masking.h, G1(wi) G1(wo) under MicrofacetModel::Single). That integrand is
 // smooth except on conics in slope space: the visibility cut-offs (wi.h = 0; the reflected or the refracted
 // direction on the horizon) and, for light on the denser side, the square-root edge of 1 - F at total internal
 // reflection. Rows of constant cross-slope are integrated piecewise between those curves' intersections, found in

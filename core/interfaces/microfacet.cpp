@@ -5,13 +5,13 @@
 
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
+#include "core/interfaces/smith_masking.h"
 
 namespace skinlayer {
 namespace {
 
-// Smith G1 of a direction w with respect to the microfacet h, given G1(w) for the macro surface: zero if w sees
-// the back of h.
-double masking(const Vec3& w, const Vec3& h, double g1) { return w.dot(h) * w.z() <= 0.0 ? 0.0 : g1; }
+// Whether w sees the front of the microfacet h (Smith's local masking: zero if w sees its back).
+bool sees_front(const Vec3& w, const Vec3& h) { return w.dot(h) * w.z() > 0.0; }
 
 }  // namespace
 
@@ -49,7 +49,8 @@ double microfacet_brdf(const RoughDielectric& interface, const Vec3& wi, const V
   if (h.z() < 0.0) h = -h;
   const double eta_rel = wi.z() > 0.0 ? interface.eta : 1.0 / interface.eta;
   const double c = std::abs(wi.dot(h));
-  const double g = masking(wi, h, g1_wi) * masking(wo, h, g1_wo);
+  if (!sees_front(wi, h) || !sees_front(wo, h)) return 0.0;
+  const double g = smith_g2_reflection(g1_wi, g1_wo, interface.microfacet);
   if (g == 0.0) return 0.0;
   return fresnel_dielectric(c, eta_rel) * beckmann_ndf(h.z(), interface.sigma) * g /
          (4.0 * std::abs(wi.z()) * std::abs(wo.z()));
@@ -69,7 +70,8 @@ double microfacet_btdf(const RoughDielectric& interface, const Vec3& wi, const V
   if (h.z() < 0.0) h = -h;
   const double i_h = wi.dot(h);
   const double o_h = wo.dot(h);
-  const double g = masking(wi, h, g1_wi) * masking(wo, h, g1_wo);
+  if (!sees_front(wi, h) || !sees_front(wo, h)) return 0.0;
+  const double g = smith_g2_transmission(g1_wi, g1_wo, interface.microfacet);
   if (g == 0.0) return 0.0;
   const double fresnel = fresnel_dielectric(i_h, eta_t);
   if (fresnel >= 1.0) return 0.0;

@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "core/interfaces/microfacet_model.h"
+
 namespace skinlayer {
 
 using Vec3 = Eigen::Vector3d;
@@ -25,6 +27,7 @@ double smith_g1_beckmann(double cos_theta, double sigma);
 struct RoughDielectric {
   double eta = 1.4;    // n_below / n_above
   double sigma = 0.5;  // Beckmann RMS slope
+  MicrofacetModel microfacet = MicrofacetModel::Single;  // the masking-shadowing form (smith_masking.h), and more
 
   bool operator==(const RoughDielectric&) const = default;
 };
@@ -34,13 +37,14 @@ struct RoughDielectric {
 double refracted_lobe_width(const RoughDielectric& interface);
 
 // Reflection on either side:
-//   f_r = F(|wi.h|, eta_rel) D(h) G1(wi) G1(wo) / (4 |wi.n| |wo.n|),  h = normalize(wi + wo) (flipped to h.n > 0),
-// with eta_rel = n_other_side / n_this_side. Zero unless wi and wo lie on the same side.
+//   f_r = F(|wi.h|, eta_rel) D(h) G2(wi, wo) / (4 |wi.n| |wo.n|),  h = normalize(wi + wo) (flipped to h.n > 0),
+// with eta_rel = n_other_side / n_this_side and G2 the interface's masking-shadowing (smith_masking.h: G1(wi) G1(wo)
+// under MicrofacetModel::Single). Zero unless wi and wo lie on the same side.
 double microfacet_brdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo);
 
 // Transmission from wi's side to wo's side (eta_t = n_wo_side / n_wi_side):
 //   h = -normalize(wi + eta_t wo) (flipped to h.n > 0),
-//   f_t = |wi.h| |wo.h| eta_t^2 (1 - F(|wi.h|, eta_t)) D(h) G1(wi) G1(wo) / (|wi.n| |wo.n| (wi.h + eta_t wo.h)^2).
+//   f_t = |wi.h| |wo.h| eta_t^2 (1 - F(|wi.h|, eta_t)) D(h) G2(wi, wo) / (|wi.n| |wo.n| (wi.h + eta_t wo.h)^2).
 // The eta_t^2 factor is the radiance scaling: f_t is a radiance BTDF, and int f_t |wo.n| d omega_o is the transmitted
 // energy fraction. Zero when either direction sees the back of h, under total internal reflection, when wi and wo
 // lie on the same side, and at eta = 1 (there the interface is absent and all light passes as an unscattered beam,

@@ -120,6 +120,29 @@ TEST(InterfaceAlbedo, WithinOneInAMillionOfAnAdaptiveIntegration) {
   }
 }
 
+// The height-correlated masking-shadowing of MicrofacetModel::Multiple (smith_masking.h) goes through the same
+// slope-space integration: at the square-root edge of total internal reflection, at grazing and straight on.
+TEST(InterfaceAlbedo, HeightCorrelatedMaskingWithinOneInAMillionOfAnAdaptiveIntegration) {
+  struct Case {
+    double sigma, eta, side, theta_degrees;
+  };
+  const Case cases[] = {{0.2, 1.4, -1, 45.6}, {0.5, 1.4, -1, 70.0}, {1.0, 2.0, 1, 80.0}, {1.0, 1.4, 1, 0.0}};
+  for (const Case& c : cases) {
+    const RoughDielectric interface{c.eta, c.sigma, MicrofacetModel::Multiple};
+    const Vec3 wi = c.side * direction_from_angles(c.theta_degrees * kPi / 180.0, 0.3);
+    const InterfaceAlbedo fast = interface_albedo(interface, wi);
+    const InterfaceAlbedo reference = integrate_slopes_adaptively(interface, wi);
+    const std::string where = "sigma " + std::to_string(c.sigma) + " eta " + std::to_string(c.eta) + " side " +
+                              std::to_string(c.side) + " theta " + std::to_string(c.theta_degrees);
+    EXPECT_NEAR(fast.reflectance, reference.reflectance, 1e-6) << where;
+    EXPECT_NEAR(fast.transmittance, reference.transmittance, 1e-6) << where;
+    // Against the separable form: more reflection, less transmission (or equal where nothing is masked).
+    const InterfaceAlbedo separable = interface_albedo({c.eta, c.sigma}, wi);
+    EXPECT_GE(fast.reflectance, separable.reflectance - 1e-12) << where;
+    EXPECT_LE(fast.transmittance, separable.transmittance + 1e-12) << where;
+  }
+}
+
 TEST(InterfaceAlbedo, AgreesWithBruteForceIntegrationOverOutgoingDirections) {
   for (double sigma : {0.3, 0.5, 1.0}) {
     const RoughDielectric interface { 1.4, sigma };

@@ -40,6 +40,29 @@ TEST(MicrosurfaceWalk, LambdaIsTheSolversSmithMaskingAndItsDownwardIdentity) {
   EXPECT_EQ(beckmann_lambda(Vec3(0.0, 0.0, -1.0), 0.5), -1.0);
 }
 
+// The solver's interface BSDF under MicrofacetModel::Multiple has the walk's single scattering: the height-correlated
+// BSDF written here independently, at random direction pairs on both sides and through the interface.
+TEST(MicrosurfaceWalk, TheSolversHeightCorrelatedBsdfIsTheWalksSingleScattering) {
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  int compared = 0;
+  for (const RoughDielectric base : {RoughDielectric{1.4, 0.5}, RoughDielectric{2.0, 0.1}, RoughDielectric{1.2, 1.0}}) {
+    RoughDielectric interface = base;
+    interface.microfacet = MicrofacetModel::Multiple;
+    for (int k = 0; k < 400; ++k) {
+      Vec3 wi = direction_from_angles(std::acos(uniform(random)), 2.0 * kPi * uniform(random));
+      Vec3 wo = direction_from_angles(std::acos(uniform(random)), 2.0 * kPi * uniform(random));
+      if (k % 2) wi.z() = -wi.z();
+      if (k % 3) wo.z() = -wo.z();
+      const double solver = rough_dielectric_bsdf(interface, wi, wo);
+      const double reference = height_correlated_bsdf(interface, wi, wo);
+      EXPECT_NEAR(solver, reference, 1e-12 * (1.0 + reference)) << "pair " << k;
+      compared += reference > 0.0 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(compared, 300) << "most pairs carry light";
+}
+
 // Exit tallies of many walks from one incident direction.
 struct Tally {
   long walks = 0;
