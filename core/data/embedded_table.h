@@ -1,5 +1,6 @@
 // A numeric table compiled into core from a CSV file of core/data/ (core/data/embed_csv.cmake), read-only: rows of
-// `columns` numbers, the first column the abscissa (wavelength in nm for every table here), ascending.
+// `columns` numbers, the first column the abscissa, ascending (the wavelength in nm for the spectra; the Beckmann
+// sigma, outermost of three grid columns, for the microsurface's table).
 #pragma once
 
 #include <span>
@@ -24,5 +25,8 @@ EmbeddedTable hemoglobin_prahl();
 EmbeddedTable cie1931_2deg_cmf();
 // core/data/cie_d65.csv: wavelength_nm, relative spectral power of CIE D65 (100 at 560 nm), 1 nm steps.
 EmbeddedTable cie_d65();
+// core/data/microfacet_multiple_scattering.csv: sigma, index, mu_i, then the multiply scattered BSDF (1/sr) in exit bins
+// 5 degrees wide, reflected (r0..) and transmitted (t0..); see core/interfaces/multiple_scattering.h.
+EmbeddedTable microfacet_multiple_scattering();
 
 }  // namespace skinlayer::data

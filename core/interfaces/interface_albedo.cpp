@@ -10,6 +10,7 @@
 
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
+#include "core/interfaces/multiple_scattering.h"
 #include "core/interfaces/smith_masking.h"
 #include "core/series/quadrature.h"
 
@@ -309,11 +310,28 @@ AlbedoPair integrate_slopes(double sx, double wz, double e, double sigma, double
 
 }  // namespace
 
+InterfaceAlbedo single_scattering_albedo(const RoughDielectric& interface, const Vec3& wi) {
+  return single_scattering_albedo(interface, std::span<const Vec3>(&wi, 1)).front();
+}
+
 InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& wi) {
   return interface_albedo(interface, std::span<const Vec3>(&wi, 1)).front();
 }
 
 std::vector<InterfaceAlbedo> interface_albedo(const RoughDielectric& interface, std::span<const Vec3> wi) {
+  std::vector<InterfaceAlbedo> albedo = single_scattering_albedo(interface, wi);
+  if (interface.microfacet == MicrofacetModel::Single || interface.eta == 1.0) return albedo;
+  const MultipleScatteringLobe lobe(interface);
+  for (std::size_t k = 0; k < wi.size(); ++k) {
+    const double rest = std::max(0.0, albedo[k].loss());
+    const double share = lobe.transmitted_share(wi[k].z() > 0.0, std::abs(wi[k].z()));
+    albedo[k].reflectance += rest * (1.0 - share);
+    albedo[k].transmittance += rest * share;
+  }
+  return albedo;
+}
+
+std::vector<InterfaceAlbedo> single_scattering_albedo(const RoughDielectric& interface, std::span<const Vec3> wi) {
   std::vector<InterfaceAlbedo> result;
   result.reserve(wi.size());
   if (interface.eta == 1.0) {

@@ -24,10 +24,17 @@ struct InterfaceAlbedo {
 // closed form, with Gauss-Legendre on each piece (a u^2 map near the square-root edges); absolute error < 1e-6
 // (tests/core/interfaces/interface_albedo_test.cpp, against adaptive Gauss-Kronrod over outgoing directions). At eta =
 // 1 the interface is absent: reflectance 0, transmittance 1.
-InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& wi);
+InterfaceAlbedo single_scattering_albedo(const RoughDielectric& interface, const Vec3& wi);
 
 // The same for many incident directions at once, sharing the quadrature rules and the slope grid (what the solver
 // needs per node and per table direction).
+std::vector<InterfaceAlbedo> single_scattering_albedo(const RoughDielectric& interface, std::span<const Vec3> wi);
+
+// The interface's albedos. Under MicrofacetModel::Single, the single-scattering ones above: what Smith shadowing
+// removes is lost. Under Multiple, those plus the light scattered more than once on the microsurface, which is all
+// that single scattering leaves, l = 1 - R - T, split between reflection and transmission by the multiply scattered
+// lobe's transmitted share s (core/interfaces/multiple_scattering.h): R + l (1 - s) and T + l s, so R + T = 1.
+InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& wi);
 std::vector<InterfaceAlbedo> interface_albedo(const RoughDielectric& interface, std::span<const Vec3> wi);
 
 }  // namespace skinlayer
