@@ -98,48 +98,50 @@ InterfaceAlbedo integrate_slopes_adaptively(const RoughDielectric& interface, co
   return {total(true), total(false)};
 }
 
+// One incidence on an interface, the light arriving from above (side 1) or inside (side -1).
+struct Incidence {
+  double sigma, eta, side, theta_degrees;
+  Vec3 toward_light() const { return side * direction_from_angles(theta_degrees * kPi / 180.0, 0.3); }
+  std::string where() const {
+    return "sigma " + std::to_string(sigma) + " eta " + std::to_string(eta) + " side " + std::to_string(side) +
+           " theta " + std::to_string(theta_degrees);
+  }
+};
+
+// The slope-space single-scattering albedos of the interface, within 1e-6 of the adaptive integration.
+InterfaceAlbedo expect_within_a_millionth(const Incidence& c, MicrofacetModel microfacet) {
+  const RoughDielectric interface{c.eta, c.sigma, microfacet};
+  const InterfaceAlbedo fast = single_scattering_albedo(interface, c.toward_light());
+  const InterfaceAlbedo reference = integrate_slopes_adaptively(interface, c.toward_light());
+  EXPECT_NEAR(fast.reflectance, reference.reflectance, 1e-6) << c.where();
+  EXPECT_NEAR(fast.transmittance, reference.transmittance, 1e-6) << c.where();
+  return fast;
+}
+
 // Near total internal reflection (light inside at 44-47 degrees for eta 1.4; 30 degrees is critical for eta 2) and
 // at grazing incidence the integrand has square-root edges and kinks across the slope density's peak.
 TEST(InterfaceAlbedo, WithinOneInAMillionOfAnAdaptiveIntegration) {
-  struct Case {
-    double sigma, eta, side, theta_degrees;
-  };
-  const Case cases[] = {{0.05, 1.4, -1, 45.6}, {0.05, 2.0, -1, 30.0}, {0.2, 1.4, -1, 44.0}, {0.2, 1.4, -1, 45.6},
-                        {0.2, 1.4, -1, 47.0},  {0.2, 2.0, -1, 30.0},  {0.2, 1.4, -1, 80.0}, {0.5, 1.4, -1, 45.6},
-                        {0.5, 1.05, 1, 89.0},  {1.0, 2.0, -1, 80.0},  {1.0, 1.05, 1, 89.0}, {1.0, 1.4, 1, 0.0},
-                        {0.5, 1.4, 1, 30.0},   {0.05, 1.4, 1, 60.0}};
-  for (const Case& c : cases) {
-    const RoughDielectric interface { c.eta, c.sigma };
-    const Vec3 wi = c.side * direction_from_angles(c.theta_degrees * kPi / 180.0, 0.3);
-    const InterfaceAlbedo fast = interface_albedo(interface, wi);
-    const InterfaceAlbedo reference = integrate_slopes_adaptively(interface, wi);
-    const std::string where = "sigma " + std::to_string(c.sigma) + " eta " + std::to_string(c.eta) + " side " +
-                              std::to_string(c.side) + " theta " + std::to_string(c.theta_degrees);
-    EXPECT_NEAR(fast.reflectance, reference.reflectance, 1e-6) << where;
-    EXPECT_NEAR(fast.transmittance, reference.transmittance, 1e-6) << where;
+  const Incidence cases[] = {{0.05, 1.4, -1, 45.6}, {0.05, 2.0, -1, 30.0}, {0.2, 1.4, -1, 44.0}, {0.2, 1.4, -1, 45.6},
+                             {0.2, 1.4, -1, 47.0},  {0.2, 2.0, -1, 30.0},  {0.2, 1.4, -1, 80.0}, {0.5, 1.4, -1, 45.6},
+                             {0.5, 1.05, 1, 89.0},  {1.0, 2.0, -1, 80.0},  {1.0, 1.05, 1, 89.0}, {1.0, 1.4, 1, 0.0},
+                             {0.5, 1.4, 1, 30.0},   {0.05, 1.4, 1, 60.0}};
+  for (const Incidence& c : cases) {
+    const InterfaceAlbedo single = expect_within_a_millionth(c, MicrofacetModel::Single);
+    const InterfaceAlbedo whole = interface_albedo({c.eta, c.sigma}, c.toward_light());
+    EXPECT_EQ(single.reflectance, whole.reflectance) << "Single is its single scattering, " << c.where();
   }
 }
 
 // The height-correlated masking-shadowing of MicrofacetModel::Multiple (smith_masking.h) goes through the same
 // slope-space integration: at the square-root edge of total internal reflection, at grazing and straight on.
 TEST(InterfaceAlbedo, HeightCorrelatedMaskingWithinOneInAMillionOfAnAdaptiveIntegration) {
-  struct Case {
-    double sigma, eta, side, theta_degrees;
-  };
-  const Case cases[] = {{0.2, 1.4, -1, 45.6}, {0.5, 1.4, -1, 70.0}, {1.0, 2.0, 1, 80.0}, {1.0, 1.4, 1, 0.0}};
-  for (const Case& c : cases) {
-    const RoughDielectric interface{c.eta, c.sigma, MicrofacetModel::Multiple};
-    const Vec3 wi = c.side * direction_from_angles(c.theta_degrees * kPi / 180.0, 0.3);
-    const InterfaceAlbedo fast = single_scattering_albedo(interface, wi);
-    const InterfaceAlbedo reference = integrate_slopes_adaptively(interface, wi);
-    const std::string where = "sigma " + std::to_string(c.sigma) + " eta " + std::to_string(c.eta) + " side " +
-                              std::to_string(c.side) + " theta " + std::to_string(c.theta_degrees);
-    EXPECT_NEAR(fast.reflectance, reference.reflectance, 1e-6) << where;
-    EXPECT_NEAR(fast.transmittance, reference.transmittance, 1e-6) << where;
+  const Incidence cases[] = {{0.2, 1.4, -1, 45.6}, {0.5, 1.4, -1, 70.0}, {1.0, 2.0, 1, 80.0}, {1.0, 1.4, 1, 0.0}};
+  for (const Incidence& c : cases) {
+    const InterfaceAlbedo correlated = expect_within_a_millionth(c, MicrofacetModel::Multiple);
     // Against the separable form: more reflection, less transmission (or equal where nothing is masked).
-    const InterfaceAlbedo separable = interface_albedo({c.eta, c.sigma}, wi);
-    EXPECT_GE(fast.reflectance, separable.reflectance - 1e-12) << where;
-    EXPECT_LE(fast.transmittance, separable.transmittance + 1e-12) << where;
+    const InterfaceAlbedo separable = single_scattering_albedo({c.eta, c.sigma}, c.toward_light());
+    EXPECT_GE(correlated.reflectance, separable.reflectance - 1e-12) << c.where();
+    EXPECT_LE(correlated.transmittance, separable.transmittance + 1e-12) << c.where();
   }
 }
 
