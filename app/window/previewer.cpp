@@ -111,52 +111,41 @@ class Previewer final : private TestActionTarget {
     ViewOverlayInput overlay{layout, shown_ ? &plot_tables() : nullptr, scene_.lobes, imgui_.unicode_labels()};
     activity |= view_overlays(overlay, edited.light, edited.comparison);
     const PanelActions panel = control_panel(layout.panel, edited, panel_status(), file_section_input());
-    bool save = panel.save_screenshot;
     if (panel.pin) pin_shown(edited);
     if (panel.unpin) unpin(edited);
     if (panel.export_bsdf) export_shown(ExportFormat::Bsdf);
     if (panel.export_merl) export_shown(ExportFormat::Merl);
     if (panel.export_rgl) export_shown(ExportFormat::Rgl);
     if (panel.match_srgb) jobs_.start_match(edited.material, *panel.match_srgb);
-    bool reset = panel.reset_material;
-    bool undo = panel.file.undo, redo = panel.file.redo;
-    std::vector<FileCommand> file_commands;
-    if (panel.file.command.kind != FileCommand::Kind::None) file_commands.push_back(panel.file.command);
+    // What the panel, the keys, drops, dialogs and the test script ask of this frame, in that order.
+    ActionRequests requests{panel.save_screenshot, panel.reset_material, panel.file.undo, panel.file.redo, false, {}};
+    if (panel.file.command.kind != FileCommand::Kind::None) requests.file_commands.push_back(panel.file.command);
     const std::vector<Action> actions = pressed_actions(window_.take_key_presses(), ImGui::GetIO().WantTextInput);
-    const ActionRequests requested = apply_actions(actions, edited);
+    apply_actions(actions, edited, requests);
     activity |= !actions.empty();
-    save |= requested.save_screenshot;
-    reset |= requested.reset_material;
-    undo |= requested.undo;
-    redo |= requested.redo;
-    if (requested.quit) window_.request_close();
-    file_commands.insert(file_commands.end(), requested.file_commands.begin(), requested.file_commands.end());
     draw_help_overlay(edited.show_help);
-    if (reset) edited = reset_material(edited);
+    if (requests.reset_material) edited = reset_material(edited);
     state_ = edited;
     for (const std::string& path : window_.take_dropped_paths()) {
-      file_commands.push_back({FileCommand::Kind::OpenPath, path});
+      requests.file_commands.push_back({FileCommand::Kind::OpenPath, path});
     }
     if (const FileCommand confirmed = file_dialogs(files_.dialog()); confirmed.kind != FileCommand::Kind::None) {
-      file_commands.push_back(confirmed);
+      requests.file_commands.push_back(confirmed);
     }
-    ActionRequests scripted;
     script_.step(TestActionReadiness{shown_ && !solving() && !jobs_.matching(), resting_, files_.dialog().kind},
-                 *this, scripted);
-    undo |= scripted.undo;
-    redo |= scripted.redo;
-    if (scripted.quit) window_.request_close();
-    file_commands.insert(file_commands.end(), scripted.file_commands.begin(), scripted.file_commands.end());
-    for (const FileCommand& command : file_commands) run_file_command(command);
-    if (undo) step_history(history_.undo(current_edit()));
-    if (redo) step_history(history_.redo(current_edit()));
+                 *this, requests);
+    if (requests.quit) window_.request_close();
+    for (const FileCommand& command : requests.file_commands) run_file_command(command);
+    if (requests.undo) step_history(history_.undo(current_edit()));
+    if (requests.redo) step_history(history_.redo(current_edit()));
     // One slider drag, or one drag of the light on the sphere, is one undo step: it commits on release.
     history_.observe(current_edit(), ImGui::IsAnyItemActive() || script_.dragging());
     window_.set_title(window_title(files_.session(), state_.material, imgui_.unicode_labels()));
     submit_if_needed();
 
     const ImGuiIO& io = ImGui::GetIO();
-    activity |= save || reset || ImGui::IsAnyItemActive() || io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f ||
+    const bool save = requests.save_screenshot;
+    activity |= save || requests.reset_material || ImGui::IsAnyItemActive() || io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f ||
                 ImGui::IsAnyMouseDown();
 
     const bool refining = refine_environment(layout, scale, framebuffer, activity);

@@ -56,8 +56,7 @@ std::vector<Action> pressed_actions(std::span<const GlfwWindow::KeyPress> presse
   return actions;
 }
 
-ActionRequests apply_actions(std::span<const Action> actions, PreviewState& state) {
-  ActionRequests requests;
+void apply_actions(std::span<const Action> actions, PreviewState& state, ActionRequests& requests) {
   for (const Action action : actions) {
     switch (action) {
       case Action::SaveScreenshot:
@@ -95,7 +94,6 @@ ActionRequests apply_actions(std::span<const Action> actions, PreviewState& stat
         break;
     }
   }
-  return requests;
 }
 
 }  // namespace skinlayer

@@ -47,17 +47,19 @@ std::span<const Gesture> gestures();
 // name never triggers a shortcut.
 std::vector<Action> pressed_actions(std::span<const GlfwWindow::KeyPress> presses, bool typing);
 
-// What one frame's actions ask of the previewer, beyond the toggles they make to its state.
+// What one frame asks of the previewer, from its panel, its keys and its test script, beyond the toggles they make
+// to its state.
 struct ActionRequests {
   bool save_screenshot = false;
   bool reset_material = false;
   bool undo = false;
   bool redo = false;
   bool quit = false;
-  std::vector<FileCommand> file_commands;  // Open, Save, Save as, in the order pressed
+  std::vector<FileCommand> file_commands;  // in the order asked
 };
 
-// Makes the actions' toggles in `state` (the lobe plots' log scale, the help overlay) and returns the rest.
-ActionRequests apply_actions(std::span<const Action> actions, PreviewState& state);
+// Makes the actions' toggles in `state` (the lobe plots' log scale, the help overlay) and adds the rest to
+// `requests` (file commands after those already there).
+void apply_actions(std::span<const Action> actions, PreviewState& state, ActionRequests& requests);
 
 }  // namespace skinlayer
