@@ -4,7 +4,7 @@
 #include <string>
 
 #include "app/material/color_channels.h"
-#include "core/solve/solve_cache.h"
+#include "core/solve/batch_solve.h"
 
 namespace skinlayer {
 namespace {
@@ -25,6 +25,12 @@ std::vector<std::vector<DirectionalAlbedo>> document_albedo(const MaterialDocume
   SolveOptions options;
   options.parallel_for = parallel_for;
   options.cancelled = cancelled;
+  return document_albedo(document, thetas_radians, options);
+}
+
+std::vector<std::vector<DirectionalAlbedo>> document_albedo(const MaterialDocument& document,
+                                                            std::span<const double> thetas_radians,
+                                                            const SolveOptions& options) {
   if (document.grey()) {
     std::vector<std::vector<DirectionalAlbedo>> grey = {directional_albedo(document.layer, thetas_radians, options)};
     require_rows(grey.front(), thetas_radians.size());
@@ -32,12 +38,11 @@ std::vector<std::vector<DirectionalAlbedo>> document_albedo(const MaterialDocume
   }
   const ColorChannels channels = color_channels(document);
   std::vector<std::vector<DirectionalAlbedo>> solved;
-  if (document.skin) {  // one stack per wavelength, the interfaces cached
-    SolveCache cache;
-    options.cache = &cache;
-    for (const Material& material : channels.materials) {
-      solved.push_back(directional_albedo(material, thetas_radians, options));
-    }
+  if (document.skin) {  // one stack per wavelength, side by side with warm caches of the interfaces
+    solved.resize(channels.materials.size());
+    for_each_with_warm_cache(channels.materials.size(), options, [&](std::size_t k, const SolveOptions& one) {
+      solved[k] = directional_albedo(channels.materials[k], thetas_radians, one);
+    });
   } else {  // the distinct channels in one solve, sharing every albedo-independent step
     solved = directional_albedo(channels.materials, thetas_radians, options);
   }

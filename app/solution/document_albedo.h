@@ -15,8 +15,14 @@ namespace skinlayer {
 
 // One row list per channel, each row one of theta_i (radians, in order): a grey document has one channel, a colour
 // document (RGB, or a skin's spectrum mixed into linear sRGB under D65) three, red, green, blue. An RGB document's
-// distinct channels are solved together; a skin's wavelengths one after another through one interface cache.
-// Throws ParameterError for a material out of range and SolveCancelled when `cancelled` returns true.
+// distinct channels are solved together; a skin's wavelengths side by side, each chunk with a copy of a warm
+// interface cache (core/solve/batch_solve.h: for_each_with_warm_cache). `options` carry the caller's cache,
+// parallel-for, cancellation check and preview. Throws ParameterError for a material out of range and SolveCancelled
+// when the check says stop.
+std::vector<std::vector<DirectionalAlbedo>> document_albedo(const MaterialDocument& document,
+                                                            std::span<const double> thetas_radians,
+                                                            const SolveOptions& options);
+// The same with the parallel-for and the cancellation check alone.
 std::vector<std::vector<DirectionalAlbedo>> document_albedo(const MaterialDocument& document,
                                                             std::span<const double> thetas_radians,
                                                             const ParallelFor& parallel_for,

@@ -4,27 +4,20 @@
 #include <stdexcept>
 #include <vector>
 
-#include "app/material/color_channels.h"
+#include "app/solution/document_albedo.h"
 #include "core/fit/albedo_color_match.h"
 #include "core/skin/skin_optics.h"
-#include "core/solve/batch_solve.h"
 #include "core/solver.h"
 
 namespace skinlayer {
 
 SkinComparisonLayer skin_comparison_layer(const ColorMaterial& skin, const SolveOptions& options) {
   if (!skin.skin) throw std::invalid_argument("skin_comparison_layer: the material is no skin");
-  // The skin's reflectance at normal incidence, per wavelength of its colour grid, mixed into linear sRGB.
-  const ColorChannels spectrum = color_channels(material_document(skin));
-  std::vector<DirectionalAlbedo> per_wavelength(spectrum.materials.size());
+  // The skin's reflectance at normal incidence per channel (its spectrum mixed into linear sRGB).
   const double normal[1] = {0.0};
-  for_each_with_warm_cache(spectrum.materials.size(), options, [&](std::size_t k, const SolveOptions& one) {
-    per_wavelength[k] = directional_albedo(spectrum.materials[k], normal, one).front();
-  });
+  const std::vector<std::vector<DirectionalAlbedo>> rgb = document_albedo(material_document(skin), normal, options);
   SkinComparisonLayer result;
-  for (int c = 0; c < 3; ++c) {
-    result.reflectance[c] = mixed_albedo(per_wavelength, spectrum.to_rgb.row(c)).reflectance();
-  }
+  for (std::size_t c = 0; c < 3; ++c) result.reflectance[c] = rgb[c].front().reflectance();
 
   Material layer;
   layer.sigma = skin.layer.sigma;
