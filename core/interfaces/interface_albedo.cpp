@@ -319,16 +319,24 @@ InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& w
 }
 
 std::vector<InterfaceAlbedo> interface_albedo(const RoughDielectric& interface, std::span<const Vec3> wi) {
-  std::vector<InterfaceAlbedo> albedo = single_scattering_albedo(interface, wi);
-  if (interface.microfacet == MicrofacetModel::Single || interface.eta == 1.0) return albedo;
+  std::vector<InterfaceAlbedo> albedo;
+  albedo.reserve(wi.size());
+  for (const InterfaceAlbedoParts& parts : interface_albedo_parts(interface, wi)) albedo.push_back(parts.total());
+  return albedo;
+}
+
+std::vector<InterfaceAlbedoParts> interface_albedo_parts(const RoughDielectric& interface, std::span<const Vec3> wi) {
+  std::vector<InterfaceAlbedoParts> parts;
+  parts.reserve(wi.size());
+  for (const InterfaceAlbedo& single : single_scattering_albedo(interface, wi)) parts.push_back({single, {0.0, 0.0}});
+  if (interface.microfacet == MicrofacetModel::Single || interface.eta == 1.0) return parts;
   const MultipleScatteringLobe lobe(interface);
   for (std::size_t k = 0; k < wi.size(); ++k) {
-    const double rest = std::max(0.0, albedo[k].loss());
+    const double rest = std::max(0.0, parts[k].single.loss());
     const double share = lobe.transmitted_share(wi[k].z() > 0.0, std::abs(wi[k].z()));
-    albedo[k].reflectance += rest * (1.0 - share);
-    albedo[k].transmittance += rest * share;
+    parts[k].multiple = {rest * (1.0 - share), rest * share};
   }
-  return albedo;
+  return parts;
 }
 
 std::vector<InterfaceAlbedo> single_scattering_albedo(const RoughDielectric& interface, std::span<const Vec3> wi) {

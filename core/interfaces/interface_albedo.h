@@ -37,4 +37,15 @@ std::vector<InterfaceAlbedo> single_scattering_albedo(const RoughDielectric& int
 InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& wi);
 std::vector<InterfaceAlbedo> interface_albedo(const RoughDielectric& interface, std::span<const Vec3> wi);
 
+// The same albedos in their two parts: the single scattering's, and the multiply scattered light's, {l (1 - s), l s}
+// ({0, 0} under MicrofacetModel::Single). The solver matches each part of its interface operators to its own.
+struct InterfaceAlbedoParts {
+  InterfaceAlbedo single;
+  InterfaceAlbedo multiple;
+  InterfaceAlbedo total() const {
+    return {single.reflectance + multiple.reflectance, single.transmittance + multiple.transmittance};
+  }
+};
+std::vector<InterfaceAlbedoParts> interface_albedo_parts(const RoughDielectric& interface, std::span<const Vec3> wi);
+
 }  // namespace skinlayer

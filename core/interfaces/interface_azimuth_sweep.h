@@ -8,13 +8,14 @@
 // h ~ wi + b wo with b = 1 for reflection and b = eta_t for transmission, whose parts are
 //   |h_xy|^2 = (s_i - b s_o)^2 + 2 b s_i s_o v,   h_z = z_i + b z_o,   tan^2 theta_h = |h_xy|^2 / h_z^2,
 // free of the cancellation that 1 + wi.wo suffers for nearly opposite grazing directions. Then
-//   reflection (z_i z_o > 0):  wi.h = |wi + wo| / 2,   f_r = F(wi.h, eta_rel) D G1(wi) G1(wo) / (4 |z_i| |z_o|);
+//   reflection (z_i z_o > 0):  wi.h = |wi + wo| / 2,   f_r = F(wi.h, eta_rel) D G2 / (4 |z_i| |z_o|);
 //   transmission (z_i z_o < 0), L = |wi + eta_t wo|, h = s (wi + eta_t wo) / L with the sign s that makes h_z >= 0,
 //   w = wi.wo = z_i z_o - s_i s_o + s_i s_o v:
 //                              wi.h = s (1 + eta_t w) / L,  wo.h = s (w + eta_t) / L,  wi.h + eta_t wo.h = s L,
-//                              f_t = |wi.h| |wo.h| eta_t^2 (1 - F(wi.h, eta_t)) D G1(wi) G1(wo) / (|z_i| |z_o| L^2),
+//                              f_t = |wi.h| |wo.h| eta_t^2 (1 - F(wi.h, eta_t)) D G2 / (|z_i| |z_o| L^2),
 //                              zero unless (wi.h) z_i > 0 and (wo.h) z_o > 0 (neither sees the back of h);
-// with pi sigma^2 D = exp(-tan^2 / sigma^2) (1 + tan^2)^2. Reflection always passes the masking test. In 1/sr, not
+// with pi sigma^2 D = exp(-tan^2 / sigma^2) (1 + tan^2)^2 and G2 the interface's masking-shadowing of the pair
+// (core/interfaces/smith_masking.h), which depends on the polar angles alone. Reflection always passes the masking test. In 1/sr, not
 // cosine-weighted; 0 at eta = 1.
 #pragma once
 
@@ -24,6 +25,7 @@
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
 #include "core/interfaces/microfacet.h"
+#include "core/interfaces/smith_masking.h"
 
 namespace skinlayer {
 
@@ -41,7 +43,8 @@ class InterfaceAzimuthSweep {
     const double cosines = std::abs(z_i_) * std::abs(z_o_);
     absent_ = interface.eta == 1.0 || cosines == 0.0;
     if (absent_) return;
-    const double g = g1_wi * g1_wo;
+    const double g = reflection_ ? smith_g2_reflection(g1_wi, g1_wo, interface.microfacet)
+                                 : smith_g2_transmission(g1_wi, g1_wo, interface.microfacet);
     const double pi_sigma2 = kPi * interface.sigma * interface.sigma;
     scale_ = reflection_ ? g / (4.0 * cosines * pi_sigma2) : eta_ * eta_ * g / (cosines * pi_sigma2);
     h_z_ = z_i_ + b_ * z_o_;
