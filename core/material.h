@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/interfaces/microfacet_model.h"
+
 namespace skinlayer {
 
 // Thrown for a parameter outside its valid range (or not a number). The message names the parameter and its range.
@@ -61,6 +63,9 @@ struct Material {
   std::optional<int> ordinates;  // discrete ordinates per hemisphere; unset = automatic
   // Layers 2..n of a stack, top to bottom; empty = the single layer above. The bottom is under the last one.
   std::vector<StackedLayer> below;
+  // What every rough interface of the material keeps of the light that meets its microsurface
+  // (core/interfaces/microfacet_model.h). Multiple conserves energy; Single is Stam 2001's model.
+  MicrofacetModel microfacet = MicrofacetModel::Multiple;
 
   double transparency() const { return std::exp(-tau); }  // T = exp(-tau_b), of the first layer
   double bottom_sigma() const { return bottom.sigma.value_or(sigma); }

@@ -163,6 +163,7 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
     Material bounce = material;  // one layer, or a stack whose path ends at the bottom: the material's own kernels
     if (internal) {
       bounce = Material{};
+      bounce.microfacet = material.microfacet;
       bounce.sigma = unscattered.top().sigma;
       bounce.eta = unscattered.top().eta;
       bounce.tau = unscattered.tau();
@@ -262,7 +263,7 @@ LayerTables solve(const Material& material, const SolveOptions& options) {
 double brdf_surface(const Material& material, double theta_i, double theta_o, double phi) {
   const Vec3 wi = direction_from_angles(theta_i, 0.0);
   const Vec3 wo = direction_from_angles(theta_o, phi);
-  return microfacet_brdf({material.eta, material.sigma}, wi, wo);
+  return microfacet_brdf({material.eta, material.sigma, material.microfacet}, wi, wo);
 }
 
 namespace {

@@ -32,14 +32,18 @@ std::vector<LayerTables> solve(std::span<const Material> channels, const SolveOp
 std::vector<LayerTables> solve(const Material& material, std::span<const double> albedos,
                                const SolveOptions& options = {});
 
-// The surface term: the top interface's rough-dielectric BRDF (Fresnel x Beckmann x Smith), in 1/sr.
+// The surface term: the top interface's specular lobe, its single-scattering rough-dielectric BRDF (Fresnel x
+// Beckmann x Smith masking-shadowing of the material's microfacet model), in 1/sr. Under MicrofacetModel::Multiple the
+// light the top's microsurface reflects after more than one meeting is smooth and uniform in azimuth: the tables
+// carry it, in brdf_subsurface.
 double brdf_surface(const Material& material, double theta_i, double theta_o, double phi);
 
 // Directional-hemispherical energy fractions for light incident at theta_i (radians).
 struct DirectionalAlbedo {
   double theta_i;
-  double reflectance_surface;     // reflected by the top interface
-  double reflectance_subsurface;  // entered, scattered, left through the top
+  double reflectance_surface;     // reflected by the top interface's specular lobe (brdf_surface)
+  double reflectance_subsurface;  // entered, scattered, left through the top; and under MicrofacetModel::Multiple the
+                                  // top's multiply scattered reflection (what brdf_subsurface holds)
   double transmittance;           // left through the bottom (including any unscattered beam)
   double absorptance;             // 1 - reflectance - transmittance: medium, base, and shadowing losses
   double interface_loss;          // the part of absorptance that Smith shadowing-masking removes at the interfaces

@@ -7,6 +7,7 @@
 
 #include "core/conventions.h"
 #include "core/interfaces/interface_azimuth_sweep.h"
+#include "core/interfaces/multiple_scattering.h"
 
 namespace skinlayer {
 
@@ -107,6 +108,78 @@ FourierKernel interface_fourier(const RoughDielectric& interface, std::span<cons
   return kernel;
 }
 
+Eigen::MatrixXd multiple_scattering_fourier(const RoughDielectric& interface, std::span<const double> mu_from,
+                                            std::span<const double> mu_to) {
+  const auto rows = static_cast<Eigen::Index>(mu_to.size()), columns = static_cast<Eigen::Index>(mu_from.size());
+  Eigen::MatrixXd result = Eigen::MatrixXd::Zero(rows, columns);
+  if (interface.microfacet == MicrofacetModel::Single || interface.eta == 1.0) return result;
+  const MultipleScatteringLobe lobe(interface);
+  for (Eigen::Index a = 0; a < columns; ++a) {
+    const double from = mu_from[static_cast<std::size_t>(a)];
+    const bool from_above = from < 0.0;  // travelling down: arriving from above
+    for (Eigen::Index b = 0; b < rows; ++b) {
+      const double to = mu_to[static_cast<std::size_t>(b)];
+      if (from == 0.0 || to == 0.0) continue;
+      result(b, a) = from * to < 0.0 ? lobe.reflection(from_above, std::abs(from), std::abs(to))
+                                     : lobe.transmission(from_above, std::abs(from), std::abs(to));
+    }
+  }
+  return result;
+}
+
+InterfaceKernel matched_interface_kernel(const RoughDielectric& interface, std::span<const double> mu_from,
+                                         std::span<const double> mu_to, const CosineProjector& projector,
+                                         EnergyMatch match, std::span<const InterfaceAlbedoParts> albedos,
+                                         std::span<const double> nodes, std::span<const double> weights,
+                                         const CancelCheck& cancelled) {
+  InterfaceKernel result{interface_fourier(interface, mu_from, mu_to, projector, cancelled), {}};
+  const bool multiple = interface.microfacet == MicrofacetModel::Multiple && interface.eta != 1.0;
+  FourierKernel lobe;
+  if (multiple) lobe.push_back(multiple_scattering_fourier(interface, mu_from, mu_to));
+  if (match != EnergyMatch::None) {
+    const bool reflected = match != EnergyMatch::TransmittedColumns;
+    std::vector<double> single, rest;
+    for (const InterfaceAlbedoParts& a : albedos) {
+      single.push_back(reflected ? a.single.reflectance : a.single.transmittance);
+      rest.push_back(reflected ? a.multiple.reflectance : a.multiple.transmittance);
+    }
+    const auto matched = [&](FourierKernel& kernel, const std::vector<double>& target) {
+      if (match == EnergyMatch::Reflection) {
+        match_reflection_energy(kernel, nodes, weights, target);
+      } else {
+        match_column_energy(kernel, nodes, weights, target);
+      }
+    };
+    matched(result.kernel, single);
+    if (multiple) matched(lobe, rest);
+  }
+  if (multiple) {
+    result.multiple = std::move(lobe.front());
+    result.kernel.front() += result.multiple;
+  }
+  return result;
+}
+
+InterfaceKernel interface_kernel(const RoughDielectric& interface, std::span<const double> mu_from,
+                                 std::span<const double> mu_to, const CosineProjector& projector,
+                                 const CancelCheck& cancelled) {
+  return matched_interface_kernel(interface, mu_from, mu_to, projector, EnergyMatch::None, {}, {}, {}, cancelled);
+}
+
+void apply_quadrature_weights(InterfaceKernel& kernel, std::span<const double> nodes, std::span<const double> weights) {
+  apply_quadrature_weights(kernel.kernel, nodes, weights);
+  if (!kernel.has_multiple()) return;
+  FourierKernel mode0{std::move(kernel.multiple)};
+  apply_quadrature_weights(mode0, nodes, weights);
+  kernel.multiple = std::move(mode0.front());
+}
+
+InterfaceKernel transmission_by_reciprocity(const InterfaceKernel& a_to_b, double eta) {
+  InterfaceKernel b_to_a{transmission_by_reciprocity(a_to_b.kernel, eta), {}};
+  if (a_to_b.has_multiple()) b_to_a.multiple = a_to_b.multiple.transpose() / (eta * eta);
+  return b_to_a;
+}
+
 void apply_quadrature_weights(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights) {
   for (std::size_t m = 0; m < kernel.size(); ++m) {
     const double c_m = fourier_azimuth_weight(static_cast<int>(m));
@@ -164,12 +237,24 @@ FourierKernel transmission_by_reciprocity(const FourierKernel& a_to_b, double et
 
 std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
                                                      double z_sign) {
+  return totals(interface_albedo_parts_along(interface, cosines, z_sign));
+}
+
+std::vector<InterfaceAlbedoParts> interface_albedo_parts_along(const RoughDielectric& interface,
+                                                               std::span<const double> cosines, double z_sign) {
   std::vector<Vec3> toward_light;
   toward_light.reserve(cosines.size());
   for (const double mu : cosines) {
     toward_light.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, z_sign * std::abs(mu));
   }
-  return interface_albedo(interface, toward_light);
+  return interface_albedo_parts(interface, toward_light);
+}
+
+std::vector<InterfaceAlbedo> totals(std::span<const InterfaceAlbedoParts> parts) {
+  std::vector<InterfaceAlbedo> result;
+  result.reserve(parts.size());
+  for (const InterfaceAlbedoParts& p : parts) result.push_back(p.total());
+  return result;
 }
 
 std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos) {

@@ -19,6 +19,45 @@ FourierKernel interface_fourier(const RoughDielectric& interface, std::span<cons
                                 std::span<const double> mu_to, const CosineProjector& projector,
                                 const CancelCheck& cancelled = {});
 
+// Fourier mode 0 of the interface's multiply scattered lobe (core/interfaces/multiple_scattering.h), which is all of
+// it (the lobe is uniform in azimuth), between signed propagation cosines: an (n_to x n_from) matrix in 1/sr, zero
+// under MicrofacetModel::Single and without an interface.
+Eigen::MatrixXd multiple_scattering_fourier(const RoughDielectric& interface, std::span<const double> mu_from,
+                                            std::span<const double> mu_to);
+
+// An interface's kernel with its parts: `kernel` the whole BSDF (the single scattering in every mode and the
+// multiply scattered lobe added to mode 0), `multiple` the lobe's share of mode 0 alone (0 x 0 under
+// MicrofacetModel::Single). The exact unscattered light (core/unscattered/unscattered_light.h) is single scattering
+// only, so the solver takes its node image from kernel[0] - multiple.
+struct InterfaceKernel {
+  FourierKernel kernel;
+  Eigen::MatrixXd multiple;
+
+  bool has_multiple() const { return multiple.size() != 0; }
+  // Mode m without the multiply scattered part.
+  Eigen::MatrixXd single(int m) const {
+    return m == 0 && has_multiple() ? Eigen::MatrixXd(kernel[0] - multiple) : kernel[static_cast<std::size_t>(m)];
+  }
+};
+
+// How an interface kernel's energy is matched, part by part, to the accurate albedos (interface_albedo_parts):
+// per column to the reflectances or the transmittances (match_column_energy), between the nodes to the reflectances
+// (match_reflection_energy), or not at all (rows to outside directions, which carry no energy of their own).
+enum class EnergyMatch { None, ReflectedColumns, TransmittedColumns, Reflection };
+
+// The kernel from mu_from to mu_to: interface_fourier, plus the multiply scattered lobe under
+// MicrofacetModel::Multiple, each part matched to its own share of `albedos` (one per column, along mu_from) over the
+// quadrature `nodes` and `weights` (the rows), then summed. Without weights applied.
+InterfaceKernel matched_interface_kernel(const RoughDielectric& interface, std::span<const double> mu_from,
+                                         std::span<const double> mu_to, const CosineProjector& projector,
+                                         EnergyMatch match, std::span<const InterfaceAlbedoParts> albedos,
+                                         std::span<const double> nodes, std::span<const double> weights,
+                                         const CancelCheck& cancelled = {});
+// Unmatched (EnergyMatch::None): to rows of outside directions.
+InterfaceKernel interface_kernel(const RoughDielectric& interface, std::span<const double> mu_from,
+                                 std::span<const double> mu_to, const CosineProjector& projector,
+                                 const CancelCheck& cancelled = {});
+
 // Turns coefficients over quadrature directions (from = nodes with weights a_j) into operators that map node
 // radiance to outgoing radiance:  K^m(o, j) = c_m f^m(mu_j -> mu_o) |mu_j| a_j  (dimensionless).
 void apply_quadrature_weights(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights);
@@ -45,12 +84,18 @@ void match_reflection_energy(FourierKernel& kernel, std::span<const double> node
 // The reversed pair of propagation directions has the same azimuth difference, so for a kernel carrying light from
 // medium a into medium b, the kernel from b back into a is its transpose / eta^2, eta = n_b / n_a.
 FourierKernel transmission_by_reciprocity(const FourierKernel& a_to_b, double eta);
+// Both parts of an InterfaceKernel alike.
+InterfaceKernel transmission_by_reciprocity(const InterfaceKernel& a_to_b, double eta);
+void apply_quadrature_weights(InterfaceKernel& kernel, std::span<const double> nodes, std::span<const double> weights);
 
 // The accurate albedos (interface_albedo) of an interface for light arriving along each cosine, with the direction
 // back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame (+z up): light from above has
 // z_sign +1, light from below -1.
 std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
                                                      double z_sign);
+std::vector<InterfaceAlbedoParts> interface_albedo_parts_along(const RoughDielectric& interface,
+                                                               std::span<const double> cosines, double z_sign);
+std::vector<InterfaceAlbedo> totals(std::span<const InterfaceAlbedoParts> parts);
 std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos);
 std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos);
 

@@ -1,7 +1,9 @@
 #include "core/interfaces/internal_interface.h"
 
+#include <algorithm>
 #include <functional>
 
+#include "core/conventions.h"
 #include "core/interfaces/interface_operators.h"
 #include "core/interfaces/layer_interfaces.h"
 
@@ -13,6 +15,10 @@ std::size_t InternalInterfaceKernels::bytes() const {
                                  &transmit_up_rows, &reflect_below_rows, &transmit_down_rows, &beam_reflect,
                                  &beam_transmit, &beam_reflect_rows, &beam_transmit_rows}) {
     total += fourier_kernel_bytes(*k);
+  }
+  for (const Eigen::MatrixXd* m : {&transmit_down_rows_multiple, &beam_transmit_multiple, &beam_reflect_rows_multiple,
+                                   &beam_transmit_rows_multiple}) {
+    total += sizeof(double) * static_cast<std::size_t>(m->size());
   }
   return total + sizeof(InterfaceAlbedo) * (from_above.size() + from_below.size() + beam_albedo.size());
 }
@@ -31,53 +37,90 @@ InternalInterfaceKernels internal_interface_kernels(const RoughDielectric& inter
   const std::vector<double> down_in = negated(mu_in);
   const std::vector<double> down_out = negated(mu_out);
 
-  // The slope-space albedos per node first: the reflections and the downward transmission are matched to them.
+  // The slope-space albedos per node first: the reflections and the downward transmission are matched to them, each
+  // part (single and multiple scattering) to its own (matched_interface_kernel).
+  std::vector<InterfaceAlbedoParts> above, below;
   run_parallel(parallel_for, 2, [&](int side) {
-    (side == 0 ? k.from_above : k.from_below) = interface_albedos_along(interface, up, side == 0 ? 1.0 : -1.0);
+    (side == 0 ? above : below) = interface_albedo_parts_along(interface, up, side == 0 ? 1.0 : -1.0);
   });
+  k.from_above = totals(above);
+  k.from_below = totals(below);
+  // The downward transmission first: its multiply scattered part, matched from above, fixes by reciprocity what
+  // that part carries up from below, E(j), and the reflection below keeps the rest of the multiply scattered light,
+  // l - E(j), so that every node conserves exactly from both sides (the table's shares satisfy reciprocity only to
+  // its noise, about 1% of l s).
+  InterfaceKernel down_kernel = matched_interface_kernel(interface, down, down, projector,
+                                                         EnergyMatch::TransmittedColumns, above, up, weights, cancelled);
+  if (down_kernel.has_multiple()) {
+    const double c0 = fourier_azimuth_weight(0);
+    for (Eigen::Index j = 0; j < down_kernel.multiple.rows(); ++j) {
+      double carried = 0.0;  // sum_o c_0 a_o mu_o f_up(o <- j), f_up = f_down^T / eta^2
+      for (Eigen::Index o = 0; o < down_kernel.multiple.cols(); ++o) {
+        carried += c0 * weights[static_cast<std::size_t>(o)] * up[static_cast<std::size_t>(o)] *
+                   down_kernel.multiple(j, o) / (interface.eta * interface.eta);
+      }
+      InterfaceAlbedo& rest = below[static_cast<std::size_t>(j)].multiple;
+      const double total = rest.reflectance + rest.transmittance;
+      rest = {std::max(0.0, total - carried), std::min(carried, total)};
+    }
+    k.from_below = totals(below);
+  }
+  k.transmit_down = std::move(down_kernel.kernel);
+  k.transmit_up = transmission_by_reciprocity(k.transmit_down, interface.eta);
+  apply_quadrature_weights(k.transmit_down, up, weights);
+  apply_quadrature_weights(k.transmit_up, up, weights);
   std::vector<std::function<void()>> tasks;
   tasks.emplace_back([&] {
-    k.reflect_above = interface_fourier(interface, down, up, projector, cancelled);
-    match_reflection_energy(k.reflect_above, up, weights, reflectances(k.from_above));
+    k.reflect_above = matched_interface_kernel(interface, down, up, projector, EnergyMatch::Reflection, above, up,
+                                               weights, cancelled)
+                          .kernel;
     apply_quadrature_weights(k.reflect_above, up, weights);
   });
   tasks.emplace_back([&] {
-    k.reflect_below = interface_fourier(interface, up, down, projector, cancelled);
-    match_reflection_energy(k.reflect_below, up, weights, reflectances(k.from_below));
+    k.reflect_below = matched_interface_kernel(interface, up, down, projector, EnergyMatch::Reflection, below, up,
+                                               weights, cancelled)
+                          .kernel;
     apply_quadrature_weights(k.reflect_below, up, weights);
-  });
-  tasks.emplace_back([&] {
-    k.transmit_down = interface_fourier(interface, down, down, projector, cancelled);
-    match_column_energy(k.transmit_down, up, weights, transmittances(k.from_above));
-    k.transmit_up = transmission_by_reciprocity(k.transmit_down, interface.eta);
-    apply_quadrature_weights(k.transmit_down, up, weights);
-    apply_quadrature_weights(k.transmit_up, up, weights);
   });
   if (needs.up_rows) {
     tasks.emplace_back([&] {
-      k.reflect_above_rows = interface_fourier(interface, down, mu_out, projector, cancelled);
+      k.reflect_above_rows = interface_kernel(interface, down, mu_out, projector, cancelled).kernel;
       apply_quadrature_weights(k.reflect_above_rows, up, weights);
-      k.transmit_up_rows = interface_fourier(interface, up, mu_out, projector, cancelled);
+      k.transmit_up_rows = interface_kernel(interface, up, mu_out, projector, cancelled).kernel;
       apply_quadrature_weights(k.transmit_up_rows, up, weights);
     });
   }
   if (needs.down_rows) {
     tasks.emplace_back([&] {
-      k.reflect_below_rows = interface_fourier(interface, up, down_out, projector, cancelled);
+      k.reflect_below_rows = interface_kernel(interface, up, down_out, projector, cancelled).kernel;
       apply_quadrature_weights(k.reflect_below_rows, up, weights);
-      k.transmit_down_rows = interface_fourier(interface, down, down_out, projector, cancelled);
-      apply_quadrature_weights(k.transmit_down_rows, up, weights);
+      InterfaceKernel rows = interface_kernel(interface, down, down_out, projector, cancelled);
+      apply_quadrature_weights(rows, up, weights);
+      k.transmit_down_rows = std::move(rows.kernel);
+      k.transmit_down_rows_multiple = std::move(rows.multiple);
     });
   }
   if (needs.beam) {
     tasks.emplace_back([&] {
-      k.beam_albedo = interface_albedos_along(interface, mu_in, 1.0);
-      k.beam_reflect = interface_fourier(interface, down_in, up, projector, cancelled);
-      match_column_energy(k.beam_reflect, up, weights, reflectances(k.beam_albedo));
-      k.beam_transmit = interface_fourier(interface, down_in, down, projector, cancelled);
-      match_column_energy(k.beam_transmit, up, weights, transmittances(k.beam_albedo));
-      if (needs.up_rows) k.beam_reflect_rows = interface_fourier(interface, down_in, mu_out, projector, cancelled);
-      if (needs.down_rows) k.beam_transmit_rows = interface_fourier(interface, down_in, down_out, projector, cancelled);
+      const std::vector<InterfaceAlbedoParts> beam = interface_albedo_parts_along(interface, mu_in, 1.0);
+      k.beam_albedo = totals(beam);
+      k.beam_reflect = matched_interface_kernel(interface, down_in, up, projector, EnergyMatch::ReflectedColumns, beam,
+                                                up, weights, cancelled)
+                           .kernel;
+      InterfaceKernel transmit = matched_interface_kernel(interface, down_in, down, projector,
+                                                          EnergyMatch::TransmittedColumns, beam, up, weights, cancelled);
+      k.beam_transmit = std::move(transmit.kernel);
+      k.beam_transmit_multiple = std::move(transmit.multiple);
+      if (needs.up_rows) {
+        InterfaceKernel rows = interface_kernel(interface, down_in, mu_out, projector, cancelled);
+        k.beam_reflect_rows = std::move(rows.kernel);
+        k.beam_reflect_rows_multiple = std::move(rows.multiple);
+      }
+      if (needs.down_rows) {
+        InterfaceKernel rows = interface_kernel(interface, down_in, down_out, projector, cancelled);
+        k.beam_transmit_rows = std::move(rows.kernel);
+        k.beam_transmit_rows_multiple = std::move(rows.multiple);
+      }
     });
   }
   run_parallel(parallel_for, static_cast<int>(tasks.size()), [&](int i) { tasks[static_cast<std::size_t>(i)](); });

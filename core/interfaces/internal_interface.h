@@ -41,6 +41,10 @@ struct InternalInterfaceKernels {
   FourierKernel beam_reflect, beam_transmit, beam_reflect_rows, beam_transmit_rows;
   // Per incident direction, the interface's albedos for the beam.
   std::vector<InterfaceAlbedo> beam_albedo;
+  // Under MicrofacetModel::Multiple, the multiply scattered part of mode 0 (InterfaceKernel::multiple) of the kernels
+  // the exact unscattered light replaces in part (0 x 0 otherwise).
+  Eigen::MatrixXd transmit_down_rows_multiple, beam_transmit_multiple, beam_reflect_rows_multiple,
+      beam_transmit_rows_multiple;
 
   std::size_t bytes() const;
 };

@@ -17,7 +17,7 @@ std::vector<double> negated(std::span<const double> cosines) {
 LayerGeometry classify_layer(const Material& material) {
   LayerGeometry geometry;
   geometry.top_open = material.eta == 1.0;
-  geometry.top = {material.eta, material.sigma};
+  geometry.top = {material.eta, material.sigma, material.microfacet};
   switch (material.bottom.kind) {
     case BottomKind::Air:
       geometry.base = material.bottom_eta() == 1.0 ? LayerBase::Open : LayerBase::Rough;
@@ -29,7 +29,9 @@ LayerGeometry classify_layer(const Material& material) {
       geometry.base = LayerBase::Lambert;
       break;
   }
-  if (geometry.base == LayerBase::Rough) geometry.bottom = {1.0 / material.bottom_eta(), material.bottom_sigma()};
+  if (geometry.base == LayerBase::Rough) {
+    geometry.bottom = {1.0 / material.bottom_eta(), material.bottom_sigma(), material.microfacet};
+  }
   geometry.bottom_mirrors_top = geometry.base == LayerBase::Rough && material.bottom_eta() == material.eta &&
                                 material.bottom_sigma() == material.sigma;
   return geometry;
@@ -47,6 +49,10 @@ std::size_t InterfaceKernels::bytes() const {
   for (const FourierKernel* k : {&r_top, &t_source, &t_exit, &t_source_exterior, &r_top_rows, &r_bottom, &t_bottom_exit,
                                  &s_bottom_beam, &t_bottom_beam, &r_bottom_rows, &r_bottom_beam_rows}) {
     total += fourier_kernel_bytes(*k);
+  }
+  for (const Eigen::MatrixXd* m : {&t_source_multiple, &t_bottom_exit_multiple, &t_source_exterior_multiple,
+                                   &t_bottom_beam_multiple, &r_bottom_beam_rows_multiple, &r_surface_multiple}) {
+    total += sizeof(double) * static_cast<std::size_t>(m->size());
   }
   return total + sizeof(InterfaceAlbedo) * (top_inside.size() + bottom_inside.size());
 }
@@ -73,39 +79,56 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   const bool bottom_is_top = rough_bottom && geometry.bottom_mirrors_top && !geometry.top_open;
   const bool all = set == KernelSet::All;
 
-  // Independent kernels, each written by one task: they run side by side on the caller's parallel-for.
+  // Independent kernels, each written by one task: they run side by side on the caller's parallel-for. Each part of a
+  // kernel (single and multiple scattering) is energy-matched to its own share of the accurate albedos
+  // (matched_interface_kernel).
   std::vector<std::function<void()>> tasks;
+  Eigen::MatrixXd exit_multiple_of_top;  // t_exit's multiply scattered part, for a bottom that mirrors the top
   if (!geometry.top_open && (all || bottom_is_top)) {
     tasks.emplace_back([&] {
-      k.r_top = interface_fourier(geometry.top, up, down, surface, cancelled);
-      k.top_inside = interface_albedos_along(geometry.top, up, -1.0);
-      match_reflection_energy(k.r_top, up, weights, reflectances(k.top_inside));
+      const std::vector<InterfaceAlbedoParts> inside = interface_albedo_parts_along(geometry.top, up, -1.0);
+      k.top_inside = totals(inside);
+      k.r_top = matched_interface_kernel(geometry.top, up, down, surface, EnergyMatch::Reflection, inside, up, weights,
+                                         cancelled)
+                    .kernel;
       apply_quadrature_weights(k.r_top, up, weights);
     });
   }
   if (!geometry.top_open) {
     tasks.emplace_back([&] {
-      k.t_source = interface_fourier(geometry.top, down_in, down, surface, cancelled);
-      match_column_energy(k.t_source, up, weights, transmittances(interface_albedos_along(geometry.top, mu_in, 1.0)));
+      InterfaceKernel source =
+          matched_interface_kernel(geometry.top, down_in, down, surface, EnergyMatch::TransmittedColumns,
+                                   interface_albedo_parts_along(geometry.top, mu_in, 1.0), up, weights, cancelled);
       if (want_exit) {
         // By reciprocity the exit operator inherits the energy matching of the source columns, row by row.
-        k.t_exit = transmission_by_reciprocity(k.t_source, geometry.top.eta);
-        apply_quadrature_weights(k.t_exit, up, weights);
+        InterfaceKernel exit = transmission_by_reciprocity(source, geometry.top.eta);
+        apply_quadrature_weights(exit, up, weights);
+        k.t_exit = std::move(exit.kernel);
+        exit_multiple_of_top = std::move(exit.multiple);
       }
+      k.t_source = std::move(source.kernel);
+      k.t_source_multiple = std::move(source.multiple);
     });
     if (all && want_exit && geometry.base == LayerBase::Open) {
       tasks.emplace_back([&] {
-        k.t_source_exterior = interface_fourier(geometry.top, down_in, down_out, surface, cancelled);
-        k.r_top_rows = interface_fourier(geometry.top, up, down_out, surface, cancelled);
+        InterfaceKernel exterior = interface_kernel(geometry.top, down_in, down_out, surface, cancelled);
+        k.t_source_exterior = std::move(exterior.kernel);
+        k.t_source_exterior_multiple = std::move(exterior.multiple);
+        k.r_top_rows = interface_kernel(geometry.top, up, down_out, surface, cancelled).kernel;
         apply_quadrature_weights(k.r_top_rows, up, weights);
       });
+    }
+    if (all && want_exit && geometry.top.microfacet == MicrofacetModel::Multiple) {
+      tasks.emplace_back([&] { k.r_surface_multiple = multiple_scattering_fourier(geometry.top, down_in, mu_out); });
     }
   }
   if (rough_bottom && !bottom_is_top) {
     tasks.emplace_back([&] {
-      k.r_bottom = interface_fourier(geometry.bottom, down, up, surface, cancelled);
-      k.bottom_inside = interface_albedos_along(geometry.bottom, up, 1.0);
-      match_reflection_energy(k.r_bottom, up, weights, reflectances(k.bottom_inside));
+      const std::vector<InterfaceAlbedoParts> inside = interface_albedo_parts_along(geometry.bottom, up, 1.0);
+      k.bottom_inside = totals(inside);
+      k.r_bottom = matched_interface_kernel(geometry.bottom, down, up, surface, EnergyMatch::Reflection, inside, up,
+                                            weights, cancelled)
+                       .kernel;
       apply_quadrature_weights(k.r_bottom, up, weights);
     });
     if (all && want_exit) {
@@ -114,33 +137,43 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
         // matched to its slope-space transmittance. A sharp, low-contrast bottom (sigma3 0.2, eta3 1.2) has an
         // interior lobe ~ sigma3 (1 - 1/eta3) wide, narrower than the node spacing: its unmatched node sums ripple
         // by percents across exit angles.
-        FourierKernel from_below = interface_fourier(geometry.bottom, mu_out, up, surface, cancelled);
-        match_column_energy(from_below, up, weights,
-                            transmittances(interface_albedos_along(geometry.bottom, mu_out, -1.0)));
-        k.t_bottom_exit = transmission_by_reciprocity(from_below, 1.0 / geometry.bottom.eta);
-        apply_quadrature_weights(k.t_bottom_exit, up, weights);
+        const InterfaceKernel from_below = matched_interface_kernel(
+            geometry.bottom, mu_out, up, surface, EnergyMatch::TransmittedColumns,
+            interface_albedo_parts_along(geometry.bottom, mu_out, -1.0), up, weights, cancelled);
+        InterfaceKernel exit = transmission_by_reciprocity(from_below, 1.0 / geometry.bottom.eta);
+        apply_quadrature_weights(exit, up, weights);
+        k.t_bottom_exit = std::move(exit.kernel);
+        k.t_bottom_exit_multiple = std::move(exit.multiple);
       });
     }
   }
   if (all && rough_bottom && geometry.top_open) {
     tasks.emplace_back([&] {
-      k.s_bottom_beam = interface_fourier(geometry.bottom, down_in, up, surface, cancelled);
-      match_column_energy(k.s_bottom_beam, up, weights,
-                          reflectances(interface_albedos_along(geometry.bottom, mu_in, 1.0)));
+      k.s_bottom_beam = matched_interface_kernel(geometry.bottom, down_in, up, surface, EnergyMatch::ReflectedColumns,
+                                                 interface_albedo_parts_along(geometry.bottom, mu_in, 1.0), up,
+                                                 weights, cancelled)
+                            .kernel;
     });
     if (want_exit) {
       tasks.emplace_back([&] {
-        k.t_bottom_beam = interface_fourier(geometry.bottom, down_in, down_out, surface, cancelled);
-        k.r_bottom_rows = interface_fourier(geometry.bottom, down, mu_out, surface, cancelled);
+        InterfaceKernel beam = interface_kernel(geometry.bottom, down_in, down_out, surface, cancelled);
+        k.t_bottom_beam = std::move(beam.kernel);
+        k.t_bottom_beam_multiple = std::move(beam.multiple);
+        k.r_bottom_rows = interface_kernel(geometry.bottom, down, mu_out, surface, cancelled).kernel;
         apply_quadrature_weights(k.r_bottom_rows, up, weights);
-        k.r_bottom_beam_rows = interface_fourier(geometry.bottom, down_in, mu_out, surface, cancelled);
+        InterfaceKernel beam_rows = interface_kernel(geometry.bottom, down_in, mu_out, surface, cancelled);
+        k.r_bottom_beam_rows = std::move(beam_rows.kernel);
+        k.r_bottom_beam_rows_multiple = std::move(beam_rows.multiple);
       });
     }
   }
   run_parallel(parallel_for, static_cast<int>(tasks.size()), [&](int i) { tasks[static_cast<std::size_t>(i)](); });
   if (bottom_is_top) {
     k.r_bottom = k.r_top;
-    if (all) k.t_bottom_exit = k.t_exit;
+    if (all) {
+      k.t_bottom_exit = k.t_exit;
+      k.t_bottom_exit_multiple = exit_multiple_of_top;
+    }
     k.bottom_inside = k.top_inside;
   }
   return k;

@@ -48,6 +48,12 @@ struct InterfaceKernels {
   std::vector<InterfaceAlbedo> top_inside, bottom_inside;
   FourierKernel r_top, t_source, t_exit, t_source_exterior, r_top_rows;
   FourierKernel r_bottom, t_bottom_exit, s_bottom_beam, t_bottom_beam, r_bottom_rows, r_bottom_beam_rows;
+  // Under MicrofacetModel::Multiple, the multiply scattered part of mode 0 (InterfaceKernel::multiple) of the kernels
+  // whose single scattering the exact unscattered light replaces (0 x 0 otherwise), and the top's multiply scattered
+  // reflection from outside to the exit rows, which the tables carry (brdf_surface is the single scattering's
+  // specular lobe alone).
+  Eigen::MatrixXd t_source_multiple, t_bottom_exit_multiple, t_source_exterior_multiple, t_bottom_beam_multiple,
+      r_bottom_beam_rows_multiple, r_surface_multiple;
 
   std::size_t bytes() const;  // the kernels' memory
 };

@@ -1,6 +1,7 @@
 // Monte Carlo reference: see monte_carlo.h. Nothing of the solver is used here.
 #include "core/reference/monte_carlo.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -8,11 +9,10 @@
 #include <string>
 #include <thread>
 
-#include <Eigen/Geometry>
-
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
 #include "core/interfaces/microfacet.h"
+#include "core/reference/microsurface_walk.h"
 
 namespace skinlayer {
 
@@ -72,7 +72,12 @@ struct Crossing {
 
 // One interaction with a rough dielectric interface, in a frame whose macro normal +z is on the incident side.
 // w: unit direction toward where the photon came from (w.z > 0); eta_rel = n_other_side / n_this_side.
-Crossing cross_rough_interface(const Vec3& w, double eta_rel, double sigma, Rng& rng) {
+Crossing cross_rough_interface(const Vec3& w, double eta_rel, double sigma, MicrofacetModel model, Rng& rng) {
+  if (model == MicrofacetModel::Multiple) {
+    // Every meeting with the microsurface followed until the photon leaves it: nothing is lost, weight 1.
+    const MicrosurfaceExit exit = MicrosurfaceWalk({eta_rel, sigma, model}).walk(w, rng);
+    return {true, exit.direction.z() > 0.0, exit.direction, 1.0};
+  }
   Crossing out;
   std::normal_distribution<double> slope(0.0, sigma / std::sqrt(2.0));
   const double sx = slope(rng);
@@ -175,7 +180,7 @@ class Walker {
     bool refracted = false;
     Vec3 d;
     if (top_present_) {
-      const Crossing c = cross_rough_interface(omega_i_, m_.eta, m_.sigma, rng);
+      const Crossing c = cross_rough_interface(omega_i_, m_.eta, m_.sigma, m_.microfacet, rng);
       if (!c.alive) return;
       weight *= c.weight;
       if (c.reflected) {
@@ -203,7 +208,7 @@ class Walker {
         tau = here.bottom;
         const WalkLayer& below = layers_[layer + 1];
         if (below.interface_above) {
-          const Crossing c = cross_rough_interface(-d, below.eta_above, below.sigma_above, rng);
+          const Crossing c = cross_rough_interface(-d, below.eta_above, below.sigma_above, m_.microfacet, rng);
           if (!c.alive) return;
           weight *= c.weight;
           refracted = true;
@@ -214,7 +219,8 @@ class Walker {
       } else if (d.z() > 0.0 && tau_new <= here.top && layer > 0) {  // reaches the next slab up
         tau = here.top;
         if (here.interface_above) {
-          const Crossing c = cross_rough_interface(flip_z(-d), 1.0 / here.eta_above, here.sigma_above, rng);
+          const Crossing c =
+              cross_rough_interface(flip_z(-d), 1.0 / here.eta_above, here.sigma_above, m_.microfacet, rng);
           if (!c.alive) return;
           weight *= c.weight;
           refracted = true;
@@ -233,7 +239,7 @@ class Walker {
               exit_bottom(tallies, d, weight, !scattered && !refracted);
               return;
             }
-            const Crossing c = cross_rough_interface(-d, 1.0 / eta_b_, sigma_b_, rng);
+            const Crossing c = cross_rough_interface(-d, 1.0 / eta_b_, sigma_b_, m_.microfacet, rng);
             if (!c.alive) return;
             weight *= c.weight;
             refracted = true;
@@ -257,7 +263,7 @@ class Walker {
           exit_top(tallies, d, weight);
           return;
         }
-        const Crossing c = cross_rough_interface(flip_z(-d), 1.0 / m_.eta, m_.sigma, rng);
+        const Crossing c = cross_rough_interface(flip_z(-d), 1.0 / m_.eta, m_.sigma, m_.microfacet, rng);
         if (!c.alive) return;
         weight *= c.weight;
         const Vec3 wo = flip_z(c.wo);

@@ -1,7 +1,8 @@
 // An independent Monte Carlo reference for the skin layer: a random walk of photons through the same layer the
 // solver models, written without any of the solver's machinery (no discrete ordinates, Fourier series, eigen-
 // decompositions or tables). It shares only the Fresnel and Beckmann/Smith functions (core/interfaces/fresnel.h,
-// core/interfaces/microfacet.h, which have their own unit tests), the Material type and its validation.
+// core/interfaces/microfacet.h, which have their own unit tests), the microsurface random walk of core/reference
+// (itself written from Fresnel and the Beckmann statistics alone), the Material type and its validation.
 //
 // Threads: this reference module uses std::thread, because a useful number of paths needs both cores; it is built
 // as its own library (skinlayer_reference), so the solver library itself stays free of threads. Each thread owns its
@@ -16,8 +17,10 @@
 //       - reflect about h with probability F(|w.h|, n_other/n_this), otherwise refract by Snell's law at h;
 //       - weight *= G1(wo); a photon sent to the wrong side of the macro surface is lost.
 //     This is an unbiased estimator of the energy transport of core's rough_dielectric_bsdf (Smith G1 on both
-//     directions; what shadowing removes is lost). At eta = 1 the interface is absent and the photon passes
-//     straight through.
+//     directions; what shadowing removes is lost): MicrofacetModel::Single, Stam 2001's interfaces. Under
+//     MicrofacetModel::Multiple (the material's microfacet field) the photon instead walks on the microsurface
+//     (core/reference/microsurface_walk.h, Heitz et al. 2016) until it leaves it, above or below, with weight 1:
+//     nothing is lost. At eta = 1 the interface is absent and the photon passes straight through.
 //   * Medium: free path s = -ln(u) in optical depth along the direction (the depth changes by s |cos|); at a
 //     collision weight *= Omega (with Russian roulette for small weights) and the direction is resampled from the
 //     Henyey-Greenstein phase function (analytic inversion, uniform azimuth about the current direction).

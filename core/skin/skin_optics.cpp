@@ -46,6 +46,7 @@ Material skin_material(const SkinParameters& skin, double wavelength_nm, const M
   m.sigma = interfaces.sigma;
   m.eta = interfaces.eta;
   m.ordinates = interfaces.ordinates;
+  m.microfacet = interfaces.microfacet;
   m.tau = (epidermis.scattering() + epidermis.absorption) * skin.epidermis;
   m.albedo = epidermis.albedo();
   m.g = kSkinAnisotropy;

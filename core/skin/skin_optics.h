@@ -49,9 +49,9 @@ double blood_absorption(double wavelength_nm, double oxygenation);
 LayerOptics epidermis_optics(const SkinParameters& skin, double wavelength_nm);
 LayerOptics dermis_optics(const SkinParameters& skin, double wavelength_nm);
 
-// The skin at one wavelength as a layered Material: the top interface (sigma, eta) and the ordinates from
-// `interfaces`; the epidermis as the first layer and the dermis semi-infinite under it, with no interface between
-// them, both with g = kSkinAnisotropy.
+// The skin at one wavelength as a layered Material: the top interface (sigma, eta), its microfacet model and the
+// ordinates from `interfaces`; the epidermis as the first layer and the dermis semi-infinite under it, with no
+// interface between them, both with g = kSkinAnisotropy.
 Material skin_material(const SkinParameters& skin, double wavelength_nm, const Material& interfaces = {});
 
 // The wavelengths from..to (inclusive) in steps of step nm.

@@ -21,6 +21,17 @@ Eigen::RowVectorXd flux_weights(const QuadratureRule& q) {
   return w;
 }
 
+// Mode m of a kernel without its multiply scattered part (InterfaceKernel::single): `multiple` is mode 0's share,
+// 0 x 0 where there is none.
+Eigen::MatrixXd single_scattering(const FourierKernel& kernel, const Eigen::MatrixXd& multiple, int m) {
+  const Eigen::MatrixXd& mode = kernel[static_cast<std::size_t>(m)];
+  return m == 0 && multiple.size() != 0 ? Eigen::MatrixXd(mode - multiple) : mode;
+}
+
+// Where the exact unscattered light replaces a kernel's single scattering, the multiply scattered part of mode m
+// stays in the tables: mode 0's share, or nothing.
+bool has_multiple(const Eigen::MatrixXd& multiple, int m) { return m == 0 && multiple.size() != 0; }
+
 }  // namespace
 
 StackSolver::StackSolver(const Material& material, const Resolution& resolution,
@@ -48,7 +59,7 @@ StackSolver::StackSolver(const Material& material, const Resolution& resolution,
       needs.up_rows = want_exit_ && geometry.top_open;
       needs.down_rows = want_exit_ && geometry.base == LayerBase::Open;
       needs.beam = amplitude.size() != 0;
-      const InternalInterfaceKey key{{layer.interface->eta, layer.interface->sigma},
+      const InternalInterfaceKey key{{layer.interface->eta, layer.interface->sigma, material.microfacet},
                                      resolution.ordinates,
                                      resolution.interface_modes,
                                      resolution.interface_azimuths,
@@ -97,10 +108,14 @@ StackSolver::StackSolver(const Material& material, const Resolution& resolution,
 }
 
 Eigen::MatrixXd StackSolver::exact_image_at_second(int m) const {
-  if (exact_first_ == kTop) return exact_between_.asDiagonal() * kernels_->t_source[m];
+  if (exact_first_ == kTop) {
+    return exact_between_.asDiagonal() * single_scattering(kernels_->t_source, kernels_->t_source_multiple, m);
+  }
   const std::size_t face = static_cast<std::size_t>(exact_first_);
   const Eigen::VectorXd arriving = beam_amplitude_[face].cwiseProduct(beam_attenuation_[face]);
-  return exact_between_.asDiagonal() * faces_[face]->beam_transmit[m] * arriving.asDiagonal();
+  return exact_between_.asDiagonal() *
+         single_scattering(faces_[face]->beam_transmit, faces_[face]->beam_transmit_multiple, m) *
+         arriving.asDiagonal();
 }
 
 ExitScattering StackSolver::exit_rows(int m, std::size_t slab, double albedo, bool upward) const {
@@ -186,6 +201,8 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
   // Out through the top.
   if (!geometry.top_open) {
     result.reflection = kernels_->t_exit[m] * field.slabs.front().up_top;
+    // The top's multiply scattered reflection: smooth, so the tables carry it (brdf_surface is the specular lobe).
+    if (has_multiple(kernels_->r_surface_multiple, m)) result.reflection += kernels_->r_surface_multiple;
   } else {
     // The upward radiance at each slab's bottom face along the exits, from the bottom up.
     Eigen::MatrixXd below;  // at the current slab's bottom
@@ -193,6 +210,8 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
       below = kernels_->r_bottom_rows[m] * field.slabs.back().down_bottom;
       if (beam_at_bottom && exact_path_ != UnscatteredPath::BottomOnly) {
         below += kernels_->r_bottom_beam_rows[m] * beam_at_bottom_.asDiagonal();
+      } else if (beam_at_bottom && has_multiple(kernels_->r_bottom_beam_rows_multiple, m)) {
+        below += kernels_->r_bottom_beam_rows_multiple * beam_at_bottom_.asDiagonal();
       }
     } else if (!infinite && lambert_mode) {
       Eigen::RowVectorXd flux = flux_weights(q) * field.slabs.back().down_bottom;
@@ -215,8 +234,9 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
               face.transmit_up_rows[m] * field.slabs[i].up_top;
       // The beam's reflection off this interface: UnscatteredLight::brdf when it is the exact path's.
       const bool exact = exact_path_ == UnscatteredPath::BottomOnly && exact_first_ == static_cast<int>(i - 1);
-      if (beam_amplitude_[i - 1].size() != 0 && !exact) {
-        below += face.beam_reflect_rows[m] * beam_amplitude_[i - 1].cwiseProduct(beam_attenuation_[i - 1]).asDiagonal();
+      if (beam_amplitude_[i - 1].size() != 0 && (!exact || has_multiple(face.beam_reflect_rows_multiple, m))) {
+        const Eigen::MatrixXd& rows = exact ? face.beam_reflect_rows_multiple : face.beam_reflect_rows[m];
+        below += rows * beam_amplitude_[i - 1].cwiseProduct(beam_attenuation_[i - 1]).asDiagonal();
       }
     }
   }
@@ -227,20 +247,30 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
   } else if (geometry.base == LayerBase::Rough) {
     // As for one layer: the light that crossed the interfaces unscattered is on the nodes as the first-pass part
     // of the bottom's downward field; it is UnscatteredLight::btdf when evaluated exactly.
-    if (exact_path_ == UnscatteredPath::TopThenBottom && exact_second_ == kBottom) {
-      result.transmission = kernels_->t_bottom_exit[m] * (field.slabs.back().down_bottom - exact_image_at_second(m));
+    const FourierKernel& exit = kernels_->t_bottom_exit;
+    if (exact_path_ != UnscatteredPath::TopThenBottom || exact_second_ != kBottom) {
+      result.transmission = exit[m] * field.slabs.back().down_bottom;
+    } else if (has_multiple(kernels_->t_bottom_exit_multiple, m)) {
+      result.transmission = exit[m] * field.slabs.back().down_bottom -
+                            single_scattering(exit, kernels_->t_bottom_exit_multiple, m) * exact_image_at_second(m);
     } else {
-      result.transmission = kernels_->t_bottom_exit[m] * field.slabs.back().down_bottom;
+      result.transmission = exit[m] * (field.slabs.back().down_bottom - exact_image_at_second(m));
     }
     if (beam_at_bottom && exact_path_ != UnscatteredPath::BottomOnly) {
       result.transmission += kernels_->t_bottom_beam[m] * beam_at_bottom_.asDiagonal();
+    } else if (beam_at_bottom && has_multiple(kernels_->t_bottom_beam_multiple, m)) {
+      result.transmission += kernels_->t_bottom_beam_multiple * beam_at_bottom_.asDiagonal();
     }
   } else {
     // The downward radiance at each slab's top face along the exits, from the top down.
     Eigen::MatrixXd above;
     if (!geometry.top_open) {
       above = kernels_->r_top_rows[m] * field.slabs.front().up_top;
-      if (exact_path_ != UnscatteredPath::TopOnly) above += kernels_->t_source_exterior[m];
+      if (exact_path_ != UnscatteredPath::TopOnly) {
+        above += kernels_->t_source_exterior[m];
+      } else if (has_multiple(kernels_->t_source_exterior_multiple, m)) {
+        above += kernels_->t_source_exterior_multiple;
+      }
     }
     for (std::size_t i = 0; i < count; ++i) {
       const Eigen::MatrixXd at_bottom =
@@ -258,13 +288,18 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
       // UnscatteredLight::btdf when evaluated exactly.
       const int position = static_cast<int>(i);
       Eigen::MatrixXd arriving = field.slabs[i].down_bottom;
-      if (exact_path_ == UnscatteredPath::TopThenBottom && exact_second_ == position) {
-        arriving -= exact_image_at_second(m);
-      }
+      const bool second = exact_path_ == UnscatteredPath::TopThenBottom && exact_second_ == position;
+      const bool multiple = has_multiple(face.transmit_down_rows_multiple, m);
+      if (second && !multiple) arriving -= exact_image_at_second(m);
       above = face.reflect_below_rows[m] * field.slabs[i + 1].up_top + face.transmit_down_rows[m] * arriving;
+      if (second && multiple) {
+        above -= single_scattering(face.transmit_down_rows, face.transmit_down_rows_multiple, m) *
+                 exact_image_at_second(m);
+      }
       const bool exact = exact_path_ == UnscatteredPath::BottomOnly && exact_first_ == position;
-      if (beam_amplitude_[i].size() != 0 && !exact) {
-        above += face.beam_transmit_rows[m] * beam_amplitude_[i].cwiseProduct(beam_attenuation_[i]).asDiagonal();
+      if (beam_amplitude_[i].size() != 0 && (!exact || has_multiple(face.beam_transmit_rows_multiple, m))) {
+        const Eigen::MatrixXd& rows = exact ? face.beam_transmit_rows_multiple : face.beam_transmit_rows[m];
+        above += rows * beam_amplitude_[i].cwiseProduct(beam_attenuation_[i]).asDiagonal();
       }
     }
   }
@@ -290,7 +325,7 @@ std::vector<DirectionalAlbedo> StackSolver::directional_albedo(const ModeResult&
 
   std::vector<Vec3> incident;
   for (const double mu : kernels_->mu_in) incident.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, mu);
-  const std::vector<InterfaceAlbedo> entries = interface_albedo(geometry.top, incident);
+  const std::vector<InterfaceAlbedoParts> entries = interface_albedo_parts(geometry.top, incident);
   const bool beam_at_bottom = beam_at_bottom_.size() != 0;
   const std::vector<InterfaceAlbedo> beam_exits = beam_at_bottom && geometry.base == LayerBase::Rough
                                                       ? interface_albedo(geometry.bottom, incident)
@@ -310,9 +345,11 @@ std::vector<DirectionalAlbedo> StackSolver::directional_albedo(const ModeResult&
     const Eigen::Index col = static_cast<Eigen::Index>(k);
     DirectionalAlbedo row{};
     row.theta_i = std::acos(kernels_->mu_in[k]);
-    row.reflectance_surface = entries[k].reflectance;
-    row.interface_loss = entries[k].loss() + top_lost.dot(field.slabs.front().up_top.col(col));
-    row.reflectance_subsurface = top_out.dot(field.slabs.front().up_top.col(col));
+    // The specular lobe is the single scattering's; the top's multiply scattered reflection is smooth and counted
+    // with the light from below, as the tables carry it.
+    row.reflectance_surface = entries[k].single.reflectance;
+    row.interface_loss = entries[k].total().loss() + top_lost.dot(field.slabs.front().up_top.col(col));
+    row.reflectance_subsurface = top_out.dot(field.slabs.front().up_top.col(col)) + entries[k].multiple.reflectance;
     const Eigen::VectorXd& down_last = field.slabs.back().down_bottom.col(col);
     const double direct = beam_at_bottom ? beam_at_bottom_(col) : 0.0;
     switch (geometry.base) {

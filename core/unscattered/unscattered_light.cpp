@@ -141,8 +141,8 @@ UnscatteredLight::UnscatteredLight(const Material& material)
                        ? material.eta * material.internal_index_ratio()
                        : material.eta * material.internal_index_ratio() / material.bottom_eta()) {
   const bool top_open = material.eta == 1.0;
-  top_ = {material.eta, material.sigma};
-  bottom_ = {1.0 / material.bottom_eta(), material.bottom_sigma()};
+  top_ = {material.eta, material.sigma, material.microfacet};
+  bottom_ = {1.0 / material.bottom_eta(), material.bottom_sigma(), material.microfacet};
   if (std::isinf(tau_)) return;
   if (material.has_internal_interfaces()) {
     set_stack_path(material);
@@ -175,7 +175,7 @@ void UnscatteredLight::set_stack_path(const Material& material) {
   double depth = material.tau;
   for (const StackedLayer& layer : material.below) {
     if (layer.interface && layer.interface->eta != 1.0) {
-      crossings.push_back({{layer.interface->eta, layer.interface->sigma}, depth});
+      crossings.push_back({{layer.interface->eta, layer.interface->sigma, material.microfacet}, depth});
     }
     depth += layer.tau;
   }

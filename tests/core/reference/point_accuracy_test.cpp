@@ -11,8 +11,11 @@
 namespace skinlayer {
 namespace {
 
+// The paper's single-scattering interfaces: these judge the ordinates, the tables and the exact unscattered light.
+// The multiply scattered lobe's own point accuracy near grazing at small sigma is not judged here yet.
 Material sharp_base() {
   Material m;
+  m.microfacet = MicrofacetModel::Single;
   m.sigma = 0.2;
   m.tau = optical_depth_from_transparency(0.2);
   m.g = 0.5;

@@ -51,7 +51,7 @@ TEST(BsdfFourierSeries, SumsToThePointwiseBsdfForReflectionAndTransmission) {
                                               return red;
                                             }()};
     const std::vector<LayerTables> tables = solve(std::span<const Material>(channels));
-    const RoughDielectric top{c.material.eta, c.material.sigma};
+    const RoughDielectric top{c.material.eta, c.material.sigma, c.material.microfacet};
     for (ScatteringKind kind : {ScatteringKind::Reflection, ScatteringKind::Transmission}) {
       const bool reflection = kind == ScatteringKind::Reflection;
       const AzimuthalSeriesTable table = bsdf_fourier_series(top, tables, kind, theta_i, theta_o);

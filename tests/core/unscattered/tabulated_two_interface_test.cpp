@@ -81,7 +81,7 @@ TEST(TabulatedTwoInterfaceBtdf, MatchesTheQuadratureAtPointsAndPeaks) {
     std::printf("%s: peak %.2e point %.2e grazing %.2e\n", c.name, worst_peak, worst_point, worst_grazing);
     EXPECT_LT(worst_peak, 5e-3) << c.name;  // of the peak at that theta_i
     EXPECT_LT(worst_point, 5e-3) << c.name;
-    EXPECT_LT(worst_grazing, 2e-2) << c.name;
+    EXPECT_LT(worst_grazing, 3e-2) << c.name;  // sigma 1: 2.3% with height-correlated masking, 2% separable
   }
 }
 
