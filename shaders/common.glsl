@@ -46,11 +46,19 @@ float smith_g1_beckmann(float cos_theta, float sigma) {
   return 1.0 / (1.0 + lambda);
 }
 
+// Smith masking-shadowing in reflection (core's smith_g2_reflection): separable G1 G1 for the single-scattering
+// model (height_correlated 0, Stam 2001), height-correlated 1 / (1 + Lambda_i + Lambda_o) for the multiple one.
+float smith_g2_reflection(float g1_i, float g1_o, int height_correlated) {
+  if (g1_i <= 0.0 || g1_o <= 0.0) return 0.0;
+  if (height_correlated == 0) return g1_i * g1_o;
+  return 1.0 / (1.0 / g1_i + 1.0 / g1_o - 1.0);
+}
+
 // The rough-dielectric BRDF seen from above, eta = n_below / n_above (the surface term).
-float microfacet_brdf(vec3 wi, vec3 wo, float eta, float sigma) {
+float microfacet_brdf(vec3 wi, vec3 wo, float eta, float sigma, int height_correlated) {
   if (wi.z <= 0.0 || wo.z <= 0.0 || eta == 1.0) return 0.0;
   vec3 h = normalize(wi + wo);
   if (dot(wi, h) <= 0.0 || dot(wo, h) <= 0.0) return 0.0;
-  float g = smith_g1_beckmann(wi.z, sigma) * smith_g1_beckmann(wo.z, sigma);
+  float g = smith_g2_reflection(smith_g1_beckmann(wi.z, sigma), smith_g1_beckmann(wo.z, sigma), height_correlated);
   return fresnel_dielectric(dot(wi, h), eta) * beckmann_ndf(h.z, sigma) * g / (4.0 * wi.z * wo.z);
 }

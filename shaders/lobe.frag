@@ -8,6 +8,7 @@ uniform vec2 u_extent;        // half-size of the view in plot radii, per axis
 uniform float u_theta_i;      // incident polar angle
 uniform float u_eta;
 uniform float u_sigma;
+uniform int u_microfacet;  // 1: multiple-scattering interfaces (height-correlated masking); 0: single (Stam 2001)
 uniform int u_log_scale;      // 0: radius = f / u_peak; 1: radius = 1 + log10(f / u_peak) / u_decades
 uniform float u_peak;         // the BSDF value drawn at radius 1  [1/sr]
 uniform float u_decades;      // decades shown by the log scale
@@ -42,7 +43,7 @@ void main() {
   float phi = p.x >= 0.0 ? kPi : 0.0;
   vec3 wi = vec3(sin(u_theta_i), 0.0, cos(u_theta_i));
   vec3 wo = vec3(sin(theta_o) * cos(phi), 0.0, cos(theta_o));
-  float surface = reflection ? microfacet_brdf(wi, wo, u_eta, u_sigma) : 0.0;
+  float surface = reflection ? microfacet_brdf(wi, wo, u_eta, u_sigma, u_microfacet) : 0.0;
   int forward = p.x >= 0.0 ? 1 : 0;
   vec3 sub = reflection ? in_plane_profile(forward, theta_o) + vec3(unscattered_brdf(wi, wo))
                         : in_plane_profile(2 + forward, theta_o) + vec3(unscattered_btdf_in_plane(p.x >= 0.0 ? theta_o : -theta_o));

@@ -3,6 +3,7 @@
 
 uniform float u_eta;    // top interface relative index
 uniform float u_sigma;  // top interface RMS slope
+uniform int u_microfacet;  // 1: multiple-scattering interfaces (height-correlated masking); 0: single (Stam 2001)
 
 // The shading geometry at normal n: polar angles from n and the azimuth difference about n (pi = mirror side).
 vec3 local_angles(vec3 n, vec3 l, vec3 v) {
@@ -21,7 +22,7 @@ vec3 sphere_brdf(vec3 n, vec3 l, vec3 v) {
   vec3 a = local_angles(n, l, v);
   vec3 wi = vec3(sin(a.x), 0.0, cos(a.x));
   vec3 wo = vec3(sin(a.y) * cos(a.z), sin(a.y) * sin(a.z), cos(a.y));
-  return vec3(microfacet_brdf(wi, wo, u_eta, u_sigma) + unscattered_brdf(wi, wo)) + brdf_subsurface(a.x, a.y, a.z);
+  return vec3(microfacet_brdf(wi, wo, u_eta, u_sigma, u_microfacet) + unscattered_brdf(wi, wo)) + brdf_subsurface(a.x, a.y, a.z);
 }
 
 // The sphere's unit normal at the view's point p (in sphere radii), clamped onto the silhouette outside it, so that

@@ -8,6 +8,7 @@ uniform int u_unscattered_reflects;  // 1: the open-top closed-form BRDF above a
 uniform float u_tau;                 // optical depth of the slab
 uniform float u_bottom_eta;          // n_below / n_layer
 uniform float u_bottom_sigma;
+uniform int u_bottom_microfacet;  // 1: height-correlated masking (multiple-scattering interfaces); 0: separable
 uniform sampler2D u_unscattered_plane;  // R: unscattered BTDF at the samples [1/sr]
 uniform vec4 u_unscattered_map;         // (centre, scale, u_min, u_max)
 
@@ -19,7 +20,7 @@ float slab_attenuation(float mu) {
 
 float unscattered_brdf(vec3 wi, vec3 wo) {
   if (u_unscattered_reflects == 0) return 0.0;
-  return slab_attenuation(wi.z) * microfacet_brdf(wi, wo, u_bottom_eta, u_bottom_sigma) * slab_attenuation(wo.z);
+  return slab_attenuation(wi.z) * microfacet_brdf(wi, wo, u_bottom_eta, u_bottom_sigma, u_bottom_microfacet) * slab_attenuation(wo.z);
 }
 
 // signed_theta_o > 0: forward (phi = pi); < 0: back toward the light (phi = 0).

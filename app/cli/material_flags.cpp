@@ -21,8 +21,9 @@ namespace {
 // --bottom lambert:A.
 constexpr std::string_view kLambertParameter = "lambert";
 
-constexpr std::array<std::string_view, 11> kMaterialFlags = {
-    "sigma", "eta", "T", "tau", "albedo", "g", "layer", "bottom", "bottom-sigma", "bottom-eta", "ordinates",
+constexpr std::array<std::string_view, 12> kMaterialFlags = {
+    "sigma", "eta",        "T",          "tau",       "albedo",     "g",
+    "layer", "bottom",     "bottom-sigma", "bottom-eta", "ordinates", "microfacet",
 };
 // The single layer's own flags, which --layer replaces.
 constexpr std::array<std::string_view, 4> kSingleLayerFlags = {"T", "tau", "albedo", "g"};
@@ -202,6 +203,15 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
   if (const auto value = checked_number(flags, "bottom-sigma")) material.bottom.sigma = *value;
   if (const auto value = checked_number(flags, "bottom-eta")) material.bottom.eta = *value;
   if (const std::optional<int> ordinates = checked_ordinates(flags)) material.ordinates = ordinates;
+  if (const auto text = flags.value("microfacet")) {
+    const std::optional<MicrofacetModel> model = parse_microfacet_model(*text);
+    if (!model) {
+      throw UsageError("microfacet = " + quoted(*text) +
+                       " is not a microfacet model; valid values are multiple (energy-conserving, the default) and "
+                       "single (Stam 2001)");
+    }
+    material.microfacet = *model;
+  }
   if (const auto text = flags.value(kSkinFlag)) {
     document.skin = parse_skin_spec(*text, document.skin.value_or(SkinParameters{}));
   }
@@ -253,6 +263,9 @@ std::string material_to_flags(const Material& material) {
   if (material.bottom.sigma) text += " --bottom-sigma " + format_shortest(*material.bottom.sigma);
   if (material.bottom.eta) text += " --bottom-eta " + format_shortest(*material.bottom.eta);
   if (material.ordinates) text += " --ordinates " + std::to_string(*material.ordinates);
+  if (material.microfacet != Material{}.microfacet) {
+    text += " --microfacet " + std::string(microfacet_model_name(material.microfacet));
+  }
   return text;
 }
 
@@ -286,6 +299,11 @@ std::string material_flags_usage() {
           "      neither). Only the last layer may be semi-infinite (T=0). --bottom applies under the last layer.\n";
     }
   }
+  text +=
+      "  --microfacet multiple|single\n"
+      "      what every rough interface keeps of the light that meets its microsurface; default multiple.\n"
+      "      multiple: also the light scattered more than once on the microsurface (Heitz et al. 2016), so\n"
+      "      that no interface absorbs; single: one microfacet meeting, the rest lost (Stam 2001's model).\n";
   return text;
 }
 

@@ -47,7 +47,7 @@ Lobe sample_lobe(const FigureCurve& curve, FigureKind kind, SolveCache& cache) {
   const Material material = curve.params.material();
   const double theta_i = degrees_to_radians(curve.theta_i_deg);
   const LayerTables* tables = kind == FigureKind::SurfaceLobes ? nullptr : &cache.tables(curve.params, curve.model);
-  const RoughDielectric interface{material.eta, material.sigma};
+  const RoughDielectric interface{material.eta, material.sigma, material.microfacet};
   const Vec3 wi = direction_from_angles(theta_i, 0.0);
   for (int s = -90; s <= 90; s += kStepDeg) {
     const double theta_o = degrees_to_radians(theta_of(s)), phi = degrees_to_radians(phi_of(s));

@@ -39,7 +39,8 @@ FigureSpec subsurface(std::string name, std::string title, std::string subtitle,
   spec.kind = FigureKind::SubsurfaceLobes;
   spec.separate_scales = true;  // the transmitted lobes reach several times the reflected ones
   spec.curves = std::move(curves);
-  spec.caption = "Subsurface lobes (Stam's model, subsurface part only: brdf_subsurface above the surface line, "
+  spec.caption = "Subsurface lobes (Stam's model with his single-scattering interfaces, --microfacet single; "
+                 "subsurface part only: brdf_subsurface above the surface line, "
                  "the layer's btdf below), in the plane of incidence, sampled every 1°; reflection and transmission have separate radial scales. " +
                  what_it_shows + " Fixed: " + subtitle + "; bottom air.";
   return spec;
@@ -55,6 +56,7 @@ Material LayerParams::material() const {
   m.albedo = albedo;
   m.g = g;
   m.below = below;
+  m.microfacet = microfacet;
   return m;
 }
 
@@ -89,7 +91,8 @@ void append_skin_figures(std::vector<FigureSpec>& set) {
   for (const double m : {0.01, 0.035, 0.135, 0.30, 0.43}) {
     melanin.curves.push_back(skin_curve("melanin", m, "melanin " + percent(m)));
   }
-  melanin.caption = "The spectral skin's directional-hemispherical reflectance at 8° (surface and subsurface) from "
+  melanin.caption = "The spectral skin's directional-hemispherical reflectance at 8° (surface and subsurface, "
+                    "energy-conserving interfaces, --microfacet multiple) from "
                     "400 to 700 nm as the epidermal melanin fraction rises from 1% to 43%, across Jacques' (1998) "
                     "ranges for light (1.3-6.3%), moderately (11-16%) and darkly (18-43%) pigmented adults. Melanin "
                     "absorbs most at short wavelengths, so it lowers blue more than red; hemoglobin's dips at 542 "
@@ -146,7 +149,8 @@ std::vector<FigureSpec> figure_set() {
   surface.curves = vary("σ", {0.5}, paper, [](FigureCurve& c, double v) { c.params.sigma = v; });
   surface.curves.front().label = "rough dielectric interface: σ 0.5 · η 1.4";
   surface.separate_scales = true;  // the BTDF into the layer peaks ~50 times higher than the BRDF
-  surface.caption = "The top interface alone (Beckmann microfacets, exact Fresnel, Smith shadowing): its BRDF "
+  surface.caption = "The top interface alone (Beckmann microfacets, exact Fresnel, Smith shadowing; one microfacet "
+                    "meeting, as in Stam 2001, --microfacet single): its BRDF "
                     "(brdf_surface) above the surface line and its radiance BTDF into the layer below, at σ 0.5, "
                     "η 1.4, θi 45°. Reflection and transmission have separate radial scales (the BTDF peaks about "
                     "50 times higher).";
@@ -159,7 +163,7 @@ std::vector<FigureSpec> figure_set() {
   sigma.curves = vary("σ", {0.1, 0.2, 0.3, 0.5, 0.9}, paper, [](FigureCurve& c, double v) { c.params.sigma = v; });
   sigma.log_decades = 3;
   sigma.caption = "The top interface's BRDF (above) and radiance BTDF into the layer (below) for σ ∈ {0.1, 0.2, 0.3, "
-                  "0.5, 0.9}, at η 1.4, θi 45°. The radius is log10 of the value over 3 decades, with separate scales "
+                  "0.5, 0.9}, at η 1.4, θi 45°, with one microfacet meeting (--microfacet single). The radius is log10 of the value over 3 decades, with separate scales "
                   "for reflection and transmission: the smooth interfaces' peaks are orders of magnitude above the "
                   "rough ones'.";
   set.push_back(sigma);
@@ -172,7 +176,8 @@ std::vector<FigureSpec> figure_set() {
   eta.curves = vary("η", {1.2, 1.4, 1.6, 2.0}, paper, [](FigureCurve& c, double v) { c.params.eta = v; });
   eta.log_decades = 0;
   eta.caption = "The top interface's BRDF (above) and radiance BTDF into the layer (below) for η ∈ {1.2, 1.4, 1.6, "
-                "2.0}, at σ 0.5, θi 45°. Reflection and transmission have separate radial scales.";
+                "2.0}, at σ 0.5, θi 45°, with one microfacet meeting (--microfacet single). Reflection and "
+                "transmission have separate radial scales.";
   set.push_back(eta);
 
   set.push_back(subsurface("subsurface-theta0", "Subsurface lobes, varying incident angle θ0",
@@ -258,7 +263,7 @@ std::vector<FigureSpec> figure_set() {
   }
   spheres.caption = "The three subsurface models on a sphere under one directional light 45° from the view "
                     "direction, at skin-like settings: σ 0.35, η 1.4, T 0.05, g 0.8, Ω (0.95, 0.7, 0.55) per RGB "
-                    "channel; the same surface term on each. Rendered with skinlayer render's OSMesa renderer. The "
+                    "channel; the same surface term on each, single-scattering interfaces as in the paper. Rendered with skinlayer render's OSMesa renderer. The "
                     "CSV holds each model's subsurface BRDF per channel in the plane of incidence at θi 45°.";
   set.push_back(spheres);
   append_skin_figures(set);

@@ -23,6 +23,8 @@ struct LayerParams {
   double albedo = 1.0;        // Omega
   double g = 0.8;
   std::vector<StackedLayer> below;  // a stack's layers 2..n (the fields above are the first layer's)
+  // The paper's figures are drawn with the paper's single-scattering interfaces (core/interfaces/microfacet_model.h).
+  MicrofacetModel microfacet = MicrofacetModel::Single;
 
   Material material() const;  // bottom air, automatic ordinates
 };

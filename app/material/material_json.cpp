@@ -197,6 +197,7 @@ Json material_json(const MaterialDocument& document) {
   if (!document.description.empty()) json["description"] = document.description;
   const Material& m = document.layer;
   json["top"] = {{"sigma", m.sigma}, {"eta", m.eta}};
+  json["microfacet"] = microfacet_model_name(m.microfacet);
   if (document.skin) {  // the skin makes the layers and the bottom
     Json skin = Json::object();
     for (const ParameterInfo& info : skin_parameter_table()) {
@@ -334,7 +335,8 @@ MaterialDocument material_from_json(const Json& json, std::string_view source) {
   if (version.get<long long>() < 1)
     reader.fail("version", "must be 1, not " + std::to_string(version.get<long long>()));
   reader.only_keys(
-      json, "", {"format", "version", "name", "description", "top", "layers", "bottom", "skin", "ordinates", "model"});
+      json, "", {"format", "version", "name", "description", "top", "microfacet", "layers", "bottom", "skin", "ordinates",
+                 "model"});
 
   MaterialDocument document;
   if (json.contains("name")) document.name = reader.text(json["name"], "name");
@@ -361,6 +363,14 @@ MaterialDocument material_from_json(const Json& json, std::string_view source) {
     const double ordinates = reader.parameter(json["ordinates"], "ordinates", "ordinates");
     if (ordinates != std::floor(ordinates)) reader.fail("ordinates", "must be a whole number");
     document.layer.ordinates = static_cast<int>(ordinates);
+  }
+  // A file written before the field existed was solved with one microfacet meeting, and reads so, to look as it did.
+  document.layer.microfacet = MicrofacetModel::Single;
+  if (json.contains("microfacet")) {
+    const std::string name = reader.text(json["microfacet"], "microfacet");
+    const std::optional<MicrofacetModel> model = parse_microfacet_model(name);
+    if (!model) reader.fail("microfacet", "is \"" + name + "\", not one of multiple, single");
+    document.layer.microfacet = *model;
   }
   if (json.contains("model")) {
     const std::string name = reader.text(json["model"], "model");

@@ -89,6 +89,21 @@ bool albedo_controls(std::array<double, 3>& albedo_rgb, bool unicode) {
   return changed;
 }
 
+// What the rough interfaces keep of the light meeting their microsurface more than once: all of it (multiple, the
+// default), or nothing, as in Stam 2001 (single).
+bool microfacet_controls(Material& layer) {
+  constexpr std::array<const char*, 2> kModels = {"multiple (keeps all light)", "single (Stam 2001)"};
+  int model = layer.microfacet == MicrofacetModel::Multiple ? 0 : 1;
+  const bool changed = combo_row("microfacet", model, kModels.data(), static_cast<int>(kModels.size()));
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "multiple: light that one microfacet sends into another goes on (Heitz et al. 2016); no interface\n"
+        "absorbs, and a white layer is white. single: the paper's model, which loses that light.");
+  }
+  if (changed) layer.microfacet = model == 0 ? MicrofacetModel::Multiple : MicrofacetModel::Single;
+  return changed;
+}
+
 bool ordinates_controls(Material& layer, bool unicode) {
   const ParameterInfo& info = parameter_info("ordinates");
   bool automatic = !layer.ordinates.has_value();
@@ -241,6 +256,7 @@ bool material_controls(ColorMaterial& material, bool unicode) {
   bool changed = false;
   changed |= slider_row(spec_from_table("sigma", unicode), layer.sigma);
   changed |= slider_row(spec_from_table("eta", unicode), layer.eta);
+  changed |= microfacet_controls(layer);
   if (material.skin) {  // its layers come from the chromophores (the Skin section)
     ImGui::TextColored(ImVec4(0.7f, 0.7f, 0.7f, 1.0f), "layers: a skin's, from its chromophores (Skin, below)");
     return changed;

@@ -173,6 +173,7 @@ void Renderer::bind_tables(GLuint program, int slot) const {
   glUniform1f(location(program, "u_tau"), static_cast<float>(light.tau()));
   glUniform1f(location(program, "u_bottom_eta"), static_cast<float>(light.bottom().eta));
   glUniform1f(location(program, "u_bottom_sigma"), static_cast<float>(light.bottom().sigma));
+  glUniform1i(location(program, "u_bottom_microfacet"), light.bottom().microfacet == MicrofacetModel::Multiple ? 1 : 0);
 }
 
 GLuint Renderer::begin_view(GLuint program, const SurfaceParams& surface, const Viewport& viewport, double margin,
@@ -184,6 +185,7 @@ GLuint Renderer::begin_view(GLuint program, const SurfaceParams& surface, const 
   glUniform2f(location(program, "u_extent"), static_cast<float>(extent[0]), static_cast<float>(extent[1]));
   glUniform1f(location(program, "u_eta"), static_cast<float>(surface.eta));
   glUniform1f(location(program, "u_sigma"), static_cast<float>(surface.sigma));
+  glUniform1i(location(program, "u_microfacet"), surface.microfacet == MicrofacetModel::Multiple ? 1 : 0);
   return program;
 }
 

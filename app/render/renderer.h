@@ -26,6 +26,7 @@ struct Viewport {
 struct SurfaceParams {
   double eta = 1.4;
   double sigma = 0.5;
+  MicrofacetModel microfacet = MicrofacetModel::Multiple;
 };
 
 enum class ToneMap { Exponential, Aces, None };  // 1 - e^{-x}; ACES (Narkowicz 2015); clamped

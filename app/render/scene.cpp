@@ -33,7 +33,7 @@ Scene make_scene(const ColorTables& tables, ViewKind view, double light_theta, d
                  bool log_scale, const Scene* previous) {
   Scene scene;
   scene.view = view;
-  scene.surface = {tables.material.layer.eta, tables.material.layer.sigma};
+  scene.surface = {tables.material.layer.eta, tables.material.layer.sigma, tables.material.layer.microfacet};
   scene.sphere.light = light_direction(light_theta, light_phi);
   scene.sphere.exposure = exposure;
   scene.lobes.theta_i = light_theta;

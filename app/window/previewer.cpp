@@ -288,7 +288,8 @@ class Previewer final : private TestActionTarget {
     return state_.comparison.pinned && pinned_tables_ && shown_ && scene_.view != ViewKind::Compare;
   }
   SurfaceParams pinned_surface() const {
-    return {state_.comparison.pinned->layer.eta, state_.comparison.pinned->layer.sigma};
+    const Material& pinned = state_.comparison.pinned->layer;
+    return {pinned.eta, pinned.sigma, pinned.microfacet};
   }
 
   // Loads a newly chosen environment and refines the sphere's estimate under it for a slice of this frame: a few
