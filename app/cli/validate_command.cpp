@@ -72,7 +72,7 @@ std::string with_thousands(std::uint64_t n) {
 }  // namespace
 
 std::string validate_usage() {
-  return "Usage: skinlayer validate [--quick] [-o DIR] [--set NAMES] [--seed N] [--threads N]\n"
+  return "Usage: skinlayer validate [--quick] [-o DIR] [--set NAMES] [--seed N] [--threads N] [--microfacet M]\n"
          "\n"
          "Checks the solver against an independent Monte Carlo random walk through the same layer, over a grid of\n"
          "parameter sets (the paper's figure settings; g 0, 0.5, 0.9; Ω 0.5, 0.99, 1; σ 0.1, 0.5, 1; η 1, 1.4, 2;\n"
@@ -85,11 +85,15 @@ std::string validate_usage() {
          "  --set NAMES        only these sets, comma-separated (default: all)\n"
          "  --seed N           Monte Carlo seed of the grid's first set; set k of the grid uses N + k (default 1)\n"
          "  --threads N        Monte Carlo threads, a whole number in [1, 256] (default: the cores)\n"
+         "  --microfacet M     the interfaces of every set, multiple or single (default multiple). Under multiple\n"
+         "                     the photons walk on the microsurface; the solver keeps that light as a lobe uniform\n"
+         "                     in azimuth, so bins in the plane of incidence differ by up to ~15% where it matters\n"
+         "                     (rings of exit angle agree); single is Stam 2001's model, which agrees everywhere.\n"
          "Exit status: 0 when every set agrees, 1 when any set disagrees.\n";
 }
 
 int run_validate_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  const std::vector<std::string_view> known = {"output", "set", "seed", "threads"};
+  const std::vector<std::string_view> known = {"output", "set", "seed", "threads", "microfacet"};
   const std::vector<std::string_view> switches = {"quick"};
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer validate", switches);
   const bool quick = flags.has("quick");
@@ -97,7 +101,15 @@ int run_validate_command(std::span<const std::string_view> arguments, std::ostre
   const int threads = flags.has("threads")
                           ? static_cast<int>(whole_number("threads", *flags.value("threads"), 1, 256))
                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const std::vector<validation::ValidationSet> sets = chosen_sets(flags.value("set"));
+  std::vector<validation::ValidationSet> sets = chosen_sets(flags.value("set"));
+  if (const auto text = flags.value("microfacet")) {
+    const std::optional<MicrofacetModel> model = parse_microfacet_model(*text);
+    if (!model) {
+      throw UsageError("microfacet = " + quoted(*text) + " is not a microfacet model; valid values are multiple and "
+                       "single");
+    }
+    for (validation::ValidationSet& set : sets) set.material.microfacet = *model;
+  }
   const std::filesystem::path dir{std::string(flags.value("output").value_or("validation"))};
   std::error_code error;
   std::filesystem::create_directories(dir, error);

@@ -92,12 +92,13 @@ void write_csv(const std::vector<Lobe>& lobes, const FigureSpec& spec, const std
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path.string());
   out << "curve,parameter,value,theta_i,theta_o,phi,side,quantity,f" << (spec.rescale_to_peak ? ",plotted" : "")
-      << ",model,sigma,eta,T,albedo,g,layers\n";
+      << ",model,sigma,eta,T,albedo,g,layers,microfacet\n";
   for (const Lobe& lobe : lobes) {
     const std::string material = std::string(subsurface_model_name(lobe.model)) + "," +
                                  format_shortest(lobe.params.sigma) + "," + format_shortest(lobe.params.eta) + "," +
                                  format_shortest(lobe.params.transparency) + "," + format_shortest(lobe.params.albedo) +
-                                 "," + format_shortest(lobe.params.g) + "," + layers_field(lobe.params);
+                                 "," + format_shortest(lobe.params.g) + "," + layers_field(lobe.params) + "," +
+                                 std::string(microfacet_model_name(lobe.params.microfacet));
     const bool surface = spec.kind == FigureKind::SurfaceLobes;
     for (const char side : {'R', 'T'}) {
       const char* quantity = side == 'R' ? (surface ? "brdf_surface" : "brdf_subsurface")

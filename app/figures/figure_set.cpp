@@ -75,6 +75,7 @@ std::string percent(double fraction) {
 void append_skin_figures(std::vector<FigureSpec>& set) {
   LayerParams top;
   top.sigma = 0.35;
+  top.microfacet = MicrofacetModel::Multiple;  // skinlayer's own figures: the default interfaces, as `spectrum`'s
   const auto skin_curve = [&](const std::string& key, double value, const std::string& label) {
     FigureCurve curve{label, shortest(value), top};
     curve.theta_i_deg = 8.0;

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <span>
 
 #include "core/conventions.h"
+#include "core/interfaces/interface_albedo.h"
 #include "core/reference/bin_average.h"
 #include "core/solver.h"
 #include "core/unscattered/unscattered_light.h"
@@ -190,8 +192,16 @@ SetResult run_validation_set(const ValidationSet& set, const RunOptions& options
     c.verdict = judge(c.monte_carlo, c.standard_error, c.solver, expected_counts);
     return c;
   };
-  result.albedos.push_back(compare("R surface", mc.reflectance_surface, albedo.reflectance_surface, -1.0));
-  result.albedos.push_back(compare("R subsurface", mc.reflectance_subsurface, albedo.reflectance_subsurface, -1.0));
+  // The walk's light that never entered is all the top reflects, its multiply scattered part included, which the
+  // solver counts with the subsurface reflectance (core/solver.h).
+  const Vec3 toward_light = direction_from_angles(theta_i, 0.0);
+  const RoughDielectric top{material.eta, material.sigma, material.microfacet};
+  const double top_multiple =
+      interface_albedo_parts(top, std::span<const Vec3>(&toward_light, 1)).front().multiple.reflectance;
+  result.albedos.push_back(
+      compare("R surface", mc.reflectance_surface, albedo.reflectance_surface + top_multiple, -1.0));
+  result.albedos.push_back(
+      compare("R subsurface", mc.reflectance_subsurface, albedo.reflectance_subsurface - top_multiple, -1.0));
   result.albedos.push_back(compare("T", mc.transmittance, albedo.transmittance, -1.0));
   for (std::size_t k = 0; k < result.bins.size(); ++k) {
     const double expected = static_cast<double>(mc.paths) * solver_bins[k] * tallies[k].projected_solid_angle();

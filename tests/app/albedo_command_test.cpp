@@ -62,9 +62,10 @@ TEST_P(CliAlbedoEnergy, FractionsSumToOne) {
     EXPECT_NEAR(total, 1.0, 1e-9) << "theta_i " << row[0];
     EXPECT_NEAR(row[kReflectance], row[kReflectanceSurface] + row[kReflectanceSubsurface], 1e-12)
         << "theta_i " << row[0];
+    // A white semi-infinite layer returns all light to a few 1e-9 (the solve's Omega is 1 - 1e-9), either side.
     for (std::size_t column = 1; column < row.size(); ++column) {
-      EXPECT_GE(row[column], -1e-9) << kAlbedoHeader[column] << " at theta_i " << row[0];
-      EXPECT_LE(row[column], 1.0 + 1e-9) << kAlbedoHeader[column] << " at theta_i " << row[0];
+      EXPECT_GE(row[column], -1e-8) << kAlbedoHeader[column] << " at theta_i " << row[0];
+      EXPECT_LE(row[column], 1.0 + 1e-8) << kAlbedoHeader[column] << " at theta_i " << row[0];
     }
   }
 }

@@ -173,7 +173,7 @@ TEST_F(FiguresCommand, CsvValuesEqualEvalAtThosePoints) {
       ASSERT_EQ(row.size(), csv.column.size()) << figure.name << " row " << k;
       if (field(row, "quantity") == "interface_btdf") continue;  // core's microfacet_btdf: no eval column
       std::vector<std::string> flags = {"eval",  "--model",        field(row, "model"), "--sigma", field(row, "sigma"),
-                                        "--eta", field(row, "eta")};
+                                        "--eta", field(row, "eta"), "--microfacet", field(row, "microfacet")};
       const std::string layers = field(row, "layers");
       if (layers.empty()) {
         flags.insert(flags.end(), {"--T", field(row, "T"), "--albedo", field(row, "albedo"), "--g", field(row, "g")});
