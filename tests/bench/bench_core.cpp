@@ -41,8 +41,10 @@ namespace {
 
 // A full single-channel solve at the paper's default (sigma 0.5, eta 1.4, T 0.2, Omega 1, g 0.8, bottom air) at the
 // automatic resolution, which tests/core/solver_limits_test.cpp checks is converged to 0.5% in the BRDF.
+// Arg 1: the default multiple-scattering interfaces; Arg 0: Stam's single-scattering ones, to price the difference.
 void BM_SolveDefault(benchmark::State& state) {
-  const Material material;
+  Material material;
+  material.microfacet = state.range(0) == 1 ? MicrofacetModel::Multiple : MicrofacetModel::Single;
   for (auto _ : state) {
     LayerTables tables = solve(material);
     benchmark::DoNotOptimize(tables);
@@ -50,7 +52,7 @@ void BM_SolveDefault(benchmark::State& state) {
   state.counters["ordinates"] = choose_resolution(material).ordinates;
   state.counters["modes"] = solve(material).modes();
 }
-BENCHMARK(BM_SolveDefault)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SolveDefault)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 
 // The machine's unit of dense linear algebra: the eigen-decomposition of one symmetric 64 x 64 matrix (Eigen's
 // SelfAdjointEigenSolver, eigenvalues and vectors), the size of the default solve's per-mode eigen-problem (2N = 48
@@ -243,6 +245,10 @@ BENCHMARK_CAPTURE(BM_Resolve, g, [](Material& m, int step) {
   m.g = 0.8 - 1e-5 * (step % 1000);
 })->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Resolve, sigma, [](Material& m, int step) {
+  m.sigma = 0.5 + 1e-4 * step;
+})->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Resolve, sigma_single, [](Material& m, int step) {
+  m.microfacet = MicrofacetModel::Single;  // Stam's interfaces: the price of the multiply scattered lobe
   m.sigma = 0.5 + 1e-4 * step;
 })->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_ResolveParallel, albedo, [](Material& m, int step) { m.albedo = step % 2 ? 0.9 : 0.95; })
