@@ -6,7 +6,6 @@
 
 #include "core/conventions.h"
 #include "core/data/embedded_table.h"
-#include "core/interfaces/interface_albedo.h"
 #include "core/series/quadrature.h"
 
 namespace skinlayer {
@@ -75,121 +74,34 @@ MultipleScatteringLobe::MultipleScatteringLobe(const RoughDielectric& interface)
       }
     }
   }
-  // The shares, from the table's reciprocal lobes: over the exit hemisphere int f mu_o d omega_o = pi int_0^1 f du,
-  // u = mu_o^2.
-  const QuadratureRule u = gauss_legendre(96, 0.0, 1.0);
-  for (int from = 0; from < 2; ++from) {
-    Side& side = sides_[static_cast<std::size_t>(from)];
-    for (const double mu : grid.mus) {
-      double reflected = 0.0, transmitted = 0.0;
-      for (int k = 0; k < u.size(); ++k) {
-        const double mu_o = std::sqrt(u.nodes[k]);
-        reflected += u.weights[k] * symmetric_reflection(from == 0, mu, mu_o);
-        transmitted += u.weights[k] * (from == 0 ? symmetric_transmission(mu, mu_o)
-                                                 : symmetric_transmission(mu_o, mu) / (eta_ * eta_));
-      }
-      side.share.push_back(reflected + transmitted > 0.0 ? transmitted / (reflected + transmitted) : 0.5);
-    }
-  }
-  balance(interface);
-}
-
-void MultipleScatteringLobe::balance(const RoughDielectric& interface) {
-  constexpr int kMaxSteps = 200;
-  constexpr double kTolerance = 1e-9;
+  // The shares, from the table's reciprocal lobes on its own grid (the exit bins are centred on the incident
+  // angles, so the swapped pair is a table entry too): over a bin theta in [a, b], int f mu_o d omega_o =
+  // pi (sin^2 b - sin^2 a) f.
   const std::size_t n = angles_.size();
-  for (Side& side : sides_) {
-    side.reflection_scale.assign(n, 1.0);
-    side.transmission_scale.assign(n, 1.0);
+  std::vector<double> bin_weight(n);
+  for (std::size_t b = 0; b < n; ++b) {
+    const double half = b + 1 < n ? 0.5 * (angles_[b + 1] - angles_[b]) : 0.5 * (angles_[b] - angles_[b - 1]);
+    const double lo = std::max(0.0, angles_[b] - half), hi = std::min(0.5 * kPi, angles_[b] + half);
+    bin_weight[b] = kPi * (std::sin(hi) * std::sin(hi) - std::sin(lo) * std::sin(lo));
   }
-  if (eta_ == 1.0) return;
-  // The energies wanted at the grid's angles, from the exact single-scattering loss.
-  std::array<std::vector<double>, 2> reflect_target, transmit_target;
+  const Side& above = sides_[0];
+  const Side& below = sides_[1];
   for (std::size_t from = 0; from < 2; ++from) {
-    std::vector<Vec3> wi;
-    for (const double angle : angles_) wi.emplace_back(std::sin(angle), 0.0, (from == 0 ? 1.0 : -1.0) * std::cos(angle));
-    const std::vector<InterfaceAlbedo> single = single_scattering_albedo(interface, wi);
-    for (std::size_t k = 0; k < n; ++k) {
-      const double rest = std::max(0.0, single[k].loss());
-      reflect_target[from].push_back(rest * (1.0 - sides_[from].share[k]));
-      transmit_target[from].push_back(rest * sides_[from].share[k]);
-    }
-  }
-  // The table's values between each grid angle and the exit quadrature's cosines, and where those fall on the grid.
-  const QuadratureRule u = gauss_legendre(96, 0.0, 1.0);
-  const std::size_t q_count = static_cast<std::size_t>(u.size());
-  std::vector<double> exit_mu(q_count);
-  for (std::size_t q = 0; q < q_count; ++q) exit_mu[q] = std::sqrt(u.nodes[static_cast<int>(q)]);
-  std::array<std::vector<double>, 2> reflection_values, transmission_values;  // [side][k * q_count + q]
-  for (std::size_t from = 0; from < 2; ++from) {
-    for (std::size_t k = 0; k < n; ++k) {
-      const double mu = std::cos(angles_[k]);
-      for (std::size_t q = 0; q < q_count; ++q) {
-        reflection_values[from].push_back(kPi * u.weights[static_cast<int>(q)] *
-                                          symmetric_reflection(from == 0, mu, exit_mu[q]));
-        transmission_values[from].push_back(kPi * u.weights[static_cast<int>(q)] *
-                                            (from == 0 ? symmetric_transmission(mu, exit_mu[q])
-                                                       : symmetric_transmission(exit_mu[q], mu) / (eta_ * eta_)));
+    const Side& side = sides_[from];
+    std::vector<double> shares;
+    for (std::size_t i = 0; i < n; ++i) {
+      double reflected = 0.0, transmitted = 0.0;
+      for (std::size_t o = 0; o < n; ++o) {
+        reflected += bin_weight[o] * 0.5 * (side.reflection[i][o] + side.reflection[o][i]);
+        // above i -> below o, or below i -> above o (the reciprocal of above o -> below i, / eta^2).
+        const double t = from == 0 ? 0.5 * (above.transmission[i][o] + eta_ * eta_ * below.transmission[o][i])
+                                   : 0.5 * (above.transmission[o][i] / (eta_ * eta_) + below.transmission[i][o]);
+        transmitted += bin_weight[o] * t;
       }
+      shares.push_back(reflected + transmitted > 0.0 ? transmitted / (reflected + transmitted) : 0.5);
     }
+    sides_[from].share = std::move(shares);
   }
-  // Per grid angle, int f mu_o d omega_o with the factors `own` at the incident end and `exit` at the other.
-  const auto energies = [&](const std::vector<double>& values, const std::vector<double>& own,
-                            const std::vector<double>& exit) {
-    std::vector<double> energy(n, 0.0);
-    for (std::size_t k = 0; k < n; ++k) {
-      for (std::size_t q = 0; q < q_count; ++q) energy[k] += values[k * q_count + q] * scale(exit, exit_mu[q]);
-      energy[k] *= own[k];
-    }
-    return energy;
-  };
-  // d_k <- d_k sqrt(target_k / energy_k): for the reflection, d on both ends; for the transmission, each side's factor
-  // on its own end, the two updated together (the mean of their disagreement, where the targets are inconsistent).
-  // A factor is held to at most kMaxScale: where the table holds almost nothing at an angle (the walk's few multiply
-  // scattered paths at the smallest sigma), a large factor there would spread, interpolated in angle, over its
-  // neighbours; the solver matches its node operators' energy on its own (interface_operators.h).
-  static constexpr double kMaxScale = 4.0;
-  const auto update = [](std::vector<double>& factors, const std::vector<double>& energy,
-                         const std::vector<double>& target) {
-    double residual = 0.0;
-    for (std::size_t k = 0; k < factors.size(); ++k) {
-      if (target[k] <= 0.0 || energy[k] <= 0.0) {
-        factors[k] = target[k] <= 0.0 ? 0.0 : factors[k];
-        continue;
-      }
-      const double scaled = factors[k] * std::sqrt(target[k] / energy[k]);
-      if (scaled < kMaxScale) residual = std::max(residual, std::abs(energy[k] / target[k] - 1.0));
-      factors[k] = std::min(scaled, kMaxScale);
-    }
-    return residual;
-  };
-  for (std::size_t from = 0; from < 2; ++from) {
-    std::vector<double>& r = sides_[from].reflection_scale;
-    for (int step = 0; step < kMaxSteps; ++step) {
-      if (update(r, energies(reflection_values[from], r, r), reflect_target[from]) < kTolerance) break;
-    }
-  }
-  std::vector<double>& above = sides_[0].transmission_scale;
-  std::vector<double>& below = sides_[1].transmission_scale;
-  for (int step = 0; step < kMaxSteps; ++step) {
-    const std::vector<double> from_above = energies(transmission_values[0], above, below);
-    const std::vector<double> from_below = energies(transmission_values[1], below, above);
-    std::vector<double> old_above = above, old_below = below;
-    update(above, from_above, transmit_target[0]);
-    update(below, from_below, transmit_target[1]);
-    double change = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (old_above[k] > 0.0 && old_below[k] > 0.0) {
-        change = std::max(change, std::abs(above[k] * below[k] / (old_above[k] * old_below[k]) - 1.0));
-      }
-    }
-    if (change < kTolerance) break;
-  }
-}
-
-double MultipleScatteringLobe::scale(const std::vector<double>& factors, double mu) const {
-  const auto [i, w] = node(mu);
-  return (1.0 - w) * factors[i] + w * factors[i + 1];
 }
 
 std::pair<std::size_t, double> MultipleScatteringLobe::node(double mu) const {
@@ -239,14 +151,12 @@ double MultipleScatteringLobe::symmetric_transmission(double mu_above, double mu
 }
 
 double MultipleScatteringLobe::reflection(bool from_above, double mu_i, double mu_o) const {
-  const std::vector<double>& r = sides_[from_above ? 0 : 1].reflection_scale;
-  return scale(r, mu_i) * symmetric_reflection(from_above, mu_i, mu_o) * scale(r, mu_o);
+  return symmetric_reflection(from_above, mu_i, mu_o);
 }
 
 double MultipleScatteringLobe::transmission(bool from_above, double mu_i, double mu_o) const {
   if (!from_above) return transmission(true, mu_o, mu_i) / (eta_ * eta_);
-  return scale(sides_[0].transmission_scale, mu_i) * symmetric_transmission(mu_i, mu_o) *
-         scale(sides_[1].transmission_scale, mu_o);
+  return symmetric_transmission(mu_i, mu_o);
 }
 
 double MultipleScatteringLobe::transmitted_share(bool from_above, double mu_i) const {

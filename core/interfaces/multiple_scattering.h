@@ -11,20 +11,15 @@
 // beyond its first and last).
 // What it returns is made reciprocal: the reflection symmetric in (mu_i, mu_o), the transmission with its radiance
 // scaling, f_t(above mu_i -> below mu_o) = eta^2 f_t(below mu_o -> above mu_i) (eta = n_below / n_above), each the
-// mean of the table's two estimates. Its magnitude carries Monte Carlo noise (30,000-200,000 walks a row), so the
-// table gives the shape and the split between reflection and transmission, and the energy comes from the exact
-// single-scattering albedos: from a direction of cosine mu the multiply scattered light is
+// mean of the table's two estimates. Its magnitude carries Monte Carlo noise (30,000-200,000 walks a row, about 1% of
+// the multiply scattered energy), so the solver takes from it the shape and the split between reflection and
+// transmission, and the energy from the exact single-scattering albedos: from a direction of cosine mu the multiply
+// scattered light is
 //   l(mu) = 1 - R_single(mu) - T_single(mu)   (the height-correlated single scattering's loss, interface_albedo.h),
-// of which the share s(mu) (this table's) is transmitted. The lobe is rescaled to carry exactly that, keeping its
-// reciprocity, by factors of each direction alone (a Sinkhorn balancing on the grid's angles, interpolated linearly
-// in angle between them):
-//   f_r(mu_i, mu_o) = r(mu_i) f_r,table(mu_i, mu_o) r(mu_o)               per side, r > 0;
-//   f_t(above mu_i -> below mu_o) = a(mu_i) f_t,table(mu_i, mu_o) b(mu_o)  a above, b below,
-// balanced until int f_r mu_o d omega_o = l (1 - s) at every grid angle of either side, to 1e-9 relative, and
-// int f_t mu_o d omega_o = l s on both sides as nearly as reciprocity allows: their flux-weighted totals must agree
-// (int T_above mu dmu = eta^2 int T_below mu dmu), which the table's noisy shares meet only to about 1%, and the
-// balance splits that remainder between the two sides. All values are in 1/sr, not cosine-weighted; the cosines are from the normal of each
-// direction's own side.
+// of which the share s(mu) (this table's, on its grid, linear in angle between) is transmitted. The interface
+// operators match each node's lobe to that energy (core/interfaces/interface_operators.h); what this class returns
+// at a pair of directions is the table's lobe as it is. All values are in 1/sr, not cosine-weighted; the cosines
+// are from the normal of each direction's own side.
 #pragma once
 
 #include <array>
@@ -54,12 +49,7 @@ class MultipleScatteringLobe {
   struct Side {
     std::vector<std::vector<double>> reflection, transmission;  // [incident angle][exit angle], on the grid
     std::vector<double> share;                                  // per incident angle
-    // The balancing factors per grid angle: r of the reflection, and this side's factor of the transmission.
-    std::vector<double> reflection_scale, transmission_scale;
   };
-  void balance(const RoughDielectric& interface);
-  // A side's factor at a cosine, linear in angle between the grid's.
-  double scale(const std::vector<double>& factors, double mu) const;
   double symmetric_reflection(bool from_above, double mu_i, double mu_o) const;
   double symmetric_transmission(double mu_above, double mu_below) const;  // above -> below
   double raw(const Side& side, bool reflect, double mu_i, double mu_o) const;
