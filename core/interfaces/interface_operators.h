@@ -28,16 +28,12 @@ Eigen::MatrixXd multiple_scattering_fourier(const RoughDielectric& interface, st
 // An interface's kernel with its parts: `kernel` the whole BSDF (the single scattering in every mode and the
 // multiply scattered lobe added to mode 0), `multiple` the lobe's share of mode 0 alone (0 x 0 under
 // MicrofacetModel::Single). The exact unscattered light (core/unscattered/unscattered_light.h) is single scattering
-// only, so the solver takes its node image from kernel[0] - multiple.
+// only, so the solver takes its node image from kernel[0] - multiple (core/solve/stack_solver.cpp).
 struct InterfaceKernel {
   FourierKernel kernel;
   Eigen::MatrixXd multiple;
 
   bool has_multiple() const { return multiple.size() != 0; }
-  // Mode m without the multiply scattered part.
-  Eigen::MatrixXd single(int m) const {
-    return m == 0 && has_multiple() ? Eigen::MatrixXd(kernel[0] - multiple) : kernel[static_cast<std::size_t>(m)];
-  }
 };
 
 // How an interface kernel's energy is matched, part by part, to the accurate albedos (interface_albedo_parts):

@@ -21,8 +21,8 @@ Eigen::RowVectorXd flux_weights(const QuadratureRule& q) {
   return w;
 }
 
-// Mode m of a kernel without its multiply scattered part (InterfaceKernel::single): `multiple` is mode 0's share,
-// 0 x 0 where there is none.
+// Mode m of a kernel without its multiply scattered part (InterfaceKernel::multiple is mode 0's share,
+// 0 x 0 where there is none).
 Eigen::MatrixXd single_scattering(const FourierKernel& kernel, const Eigen::MatrixXd& multiple, int m) {
   const Eigen::MatrixXd& mode = kernel[static_cast<std::size_t>(m)];
   return m == 0 && multiple.size() != 0 ? Eigen::MatrixXd(mode - multiple) : mode;
