@@ -6,7 +6,6 @@
 
 #include "core/conventions.h"
 #include "core/data/embedded_table.h"
-#include "core/series/quadrature.h"
 
 namespace skinlayer {
 namespace {
@@ -142,21 +141,13 @@ double MultipleScatteringLobe::raw_transmission(bool from_above, double mu_i, do
   return raw(sides_[from_above ? 0 : 1], false, mu_i, mu_o);
 }
 
-double MultipleScatteringLobe::symmetric_reflection(bool from_above, double mu_i, double mu_o) const {
-  return 0.5 * (raw_reflection(from_above, mu_i, mu_o) + raw_reflection(from_above, mu_o, mu_i));
-}
-
-double MultipleScatteringLobe::symmetric_transmission(double mu_above, double mu_below) const {
-  return 0.5 * (raw_transmission(true, mu_above, mu_below) + eta_ * eta_ * raw_transmission(false, mu_below, mu_above));
-}
-
 double MultipleScatteringLobe::reflection(bool from_above, double mu_i, double mu_o) const {
-  return symmetric_reflection(from_above, mu_i, mu_o);
+  return 0.5 * (raw_reflection(from_above, mu_i, mu_o) + raw_reflection(from_above, mu_o, mu_i));
 }
 
 double MultipleScatteringLobe::transmission(bool from_above, double mu_i, double mu_o) const {
   if (!from_above) return transmission(true, mu_o, mu_i) / (eta_ * eta_);
-  return symmetric_transmission(mu_i, mu_o);
+  return 0.5 * (raw_transmission(true, mu_i, mu_o) + eta_ * eta_ * raw_transmission(false, mu_o, mu_i));
 }
 
 double MultipleScatteringLobe::transmitted_share(bool from_above, double mu_i) const {

@@ -50,8 +50,6 @@ class MultipleScatteringLobe {
     std::vector<std::vector<double>> reflection, transmission;  // [incident angle][exit angle], on the grid
     std::vector<double> share;                                  // per incident angle
   };
-  double symmetric_reflection(bool from_above, double mu_i, double mu_o) const;
-  double symmetric_transmission(double mu_above, double mu_below) const;  // above -> below
   double raw(const Side& side, bool reflect, double mu_i, double mu_o) const;
   // The grid's interpolation at a cosine: the node below and the weight of the next one (polar angles ascending).
   std::pair<std::size_t, double> node(double mu) const;
