@@ -133,6 +133,24 @@ TEST(MaterialJson, TauInfAndMinimalFilesRead) {
   EXPECT_EQ(document.model, SubsurfaceModel::Lambert);
 }
 
+// A file written before the microfacet field existed was made under Stam's single-scattering interfaces and reads
+// so, to look as it did; skinlayer writes the field, and a material made from flags takes the default, multiple.
+TEST(MaterialJson, AFileWithoutTheMicrofacetFieldReadsAsSingle) {
+  const std::string older = R"({"format": "skinlayer-material", "version": 1, "top": {"sigma": 0.5, "eta": 1.4},
+    "layers": [{"T": 0.2, "albedo": 1, "g": 0.8}], "bottom": {"type": "air"}})";
+  EXPECT_EQ(read_material_json(older, "old.json").layer.microfacet, MicrofacetModel::Single);
+  std::string newer = older;
+  newer.insert(newer.find("\"layers\""), "\"microfacet\": \"multiple\", ");
+  EXPECT_EQ(read_material_json(newer, "new.json").layer.microfacet, MicrofacetModel::Multiple);
+  MaterialDocument made;
+  ASSERT_EQ(made.layer.microfacet, MicrofacetModel::Multiple);
+  const std::string written = material_json_text(made);
+  EXPECT_NE(written.find("\"microfacet\": \"multiple\""), std::string::npos) << written;
+  EXPECT_EQ(read_material_json(written, "written.json").layer.microfacet, MicrofacetModel::Multiple);
+  made.layer.microfacet = MicrofacetModel::Single;
+  EXPECT_EQ(read_material_json(material_json_text(made), "single.json").layer.microfacet, MicrofacetModel::Single);
+}
+
 struct BadFile {
   std::string text;
   std::vector<std::string> message_has;  // each must appear in the one-line message
@@ -193,6 +211,8 @@ TEST(MaterialJson, EachKindOfErrorIsOneLineNamingTheFileAndTheKey) {
       {valid_with("\"top\": {\"sigma\": 0.5, \"eta\": 1.4},", ""), {"\"top\"", "missing"}},
       {valid_with("\"version\": 1,", "\"version\": 1, \"ordinates\": 10.5,"), {"\"ordinates\"", "whole number"}},
       {valid_with("\"version\": 1,", "\"version\": 1, \"model\": \"phong\","), {"\"model\"", "phong", "stam"}},
+      {valid_with("\"version\": 1,", "\"version\": 1, \"microfacet\": \"double\","),
+       {"\"microfacet\"", "double", "multiple, single"}},
       {"[1, 2, 3]", {"bad.json", "not a skinlayer material file"}},
       // Stacks: an interface above the first layer, a semi-infinite layer above another, an interface out of range.
       {valid_with("\"g\": 0.8}]", "\"g\": 0.8, \"interface\": {\"sigma\": 0.3, \"eta\": 1.1}}]"),
