@@ -319,10 +319,14 @@ InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& w
 }
 
 std::vector<InterfaceAlbedo> interface_albedo(const RoughDielectric& interface, std::span<const Vec3> wi) {
-  std::vector<InterfaceAlbedo> albedo;
-  albedo.reserve(wi.size());
-  for (const InterfaceAlbedoParts& parts : interface_albedo_parts(interface, wi)) albedo.push_back(parts.total());
-  return albedo;
+  return totals(interface_albedo_parts(interface, wi));
+}
+
+std::vector<InterfaceAlbedo> totals(std::span<const InterfaceAlbedoParts> parts) {
+  std::vector<InterfaceAlbedo> result;
+  result.reserve(parts.size());
+  for (const InterfaceAlbedoParts& p : parts) result.push_back(p.total());
+  return result;
 }
 
 std::vector<InterfaceAlbedoParts> interface_albedo_parts(const RoughDielectric& interface, std::span<const Vec3> wi) {

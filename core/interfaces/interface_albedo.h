@@ -47,5 +47,7 @@ struct InterfaceAlbedoParts {
   }
 };
 std::vector<InterfaceAlbedoParts> interface_albedo_parts(const RoughDielectric& interface, std::span<const Vec3> wi);
+// Each direction's whole albedos, part by part summed.
+std::vector<InterfaceAlbedo> totals(std::span<const InterfaceAlbedoParts> parts);
 
 }  // namespace skinlayer

@@ -235,11 +235,6 @@ FourierKernel transmission_by_reciprocity(const FourierKernel& a_to_b, double et
   return b_to_a;
 }
 
-std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
-                                                     double z_sign) {
-  return totals(interface_albedo_parts_along(interface, cosines, z_sign));
-}
-
 std::vector<InterfaceAlbedoParts> interface_albedo_parts_along(const RoughDielectric& interface,
                                                                std::span<const double> cosines, double z_sign) {
   std::vector<Vec3> toward_light;
@@ -248,25 +243,6 @@ std::vector<InterfaceAlbedoParts> interface_albedo_parts_along(const RoughDielec
     toward_light.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, z_sign * std::abs(mu));
   }
   return interface_albedo_parts(interface, toward_light);
-}
-
-std::vector<InterfaceAlbedo> totals(std::span<const InterfaceAlbedoParts> parts) {
-  std::vector<InterfaceAlbedo> result;
-  result.reserve(parts.size());
-  for (const InterfaceAlbedoParts& p : parts) result.push_back(p.total());
-  return result;
-}
-
-std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos) {
-  std::vector<double> result;
-  for (const InterfaceAlbedo& a : albedos) result.push_back(a.reflectance);
-  return result;
-}
-
-std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos) {
-  std::vector<double> result;
-  for (const InterfaceAlbedo& a : albedos) result.push_back(a.transmittance);
-  return result;
 }
 
 }  // namespace skinlayer

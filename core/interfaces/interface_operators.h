@@ -84,15 +84,10 @@ FourierKernel transmission_by_reciprocity(const FourierKernel& a_to_b, double et
 InterfaceKernel transmission_by_reciprocity(const InterfaceKernel& a_to_b, double eta);
 void apply_quadrature_weights(InterfaceKernel& kernel, std::span<const double> nodes, std::span<const double> weights);
 
-// The accurate albedos (interface_albedo) of an interface for light arriving along each cosine, with the direction
-// back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame (+z up): light from above has
-// z_sign +1, light from below -1.
-std::vector<InterfaceAlbedo> interface_albedos_along(const RoughDielectric& interface, std::span<const double> cosines,
-                                                     double z_sign);
+// The accurate albedos (interface_albedo_parts) of an interface for light arriving along each cosine, with the
+// direction back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame (+z up): light from above
+// has z_sign +1, light from below -1.
 std::vector<InterfaceAlbedoParts> interface_albedo_parts_along(const RoughDielectric& interface,
                                                                std::span<const double> cosines, double z_sign);
-std::vector<InterfaceAlbedo> totals(std::span<const InterfaceAlbedoParts> parts);
-std::vector<double> reflectances(const std::vector<InterfaceAlbedo>& albedos);
-std::vector<double> transmittances(const std::vector<InterfaceAlbedo>& albedos);
 
 }  // namespace skinlayer
