@@ -28,9 +28,15 @@ Eigen::MatrixXd single_scattering(const FourierKernel& kernel, const Eigen::Matr
   return m == 0 && multiple.size() != 0 ? Eigen::MatrixXd(mode - multiple) : mode;
 }
 
-// Where the exact unscattered light replaces a kernel's single scattering, the multiply scattered part of mode m
-// stays in the tables: mode 0's share, or nothing.
 bool has_multiple(const Eigen::MatrixXd& multiple, int m) { return m == 0 && multiple.size() != 0; }
+
+// The part of mode m of a kernel that the tables carry: all of it, or, where the exact unscattered light replaces
+// its single scattering (`exact`), the multiply scattered part of mode 0; null where nothing is left.
+const Eigen::MatrixXd* carried_by_tables(const FourierKernel& kernel, const Eigen::MatrixXd& multiple, int m,
+                                         bool exact) {
+  if (!exact) return &kernel[static_cast<std::size_t>(m)];
+  return has_multiple(multiple, m) ? &multiple : nullptr;
+}
 
 }  // namespace
 
@@ -208,11 +214,11 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
     Eigen::MatrixXd below;  // at the current slab's bottom
     if (!infinite && geometry.base == LayerBase::Rough) {
       below = kernels_->r_bottom_rows[m] * field.slabs.back().down_bottom;
-      if (beam_at_bottom && exact_path_ != UnscatteredPath::BottomOnly) {
-        below += kernels_->r_bottom_beam_rows[m] * beam_at_bottom_.asDiagonal();
-      } else if (beam_at_bottom && has_multiple(kernels_->r_bottom_beam_rows_multiple, m)) {
-        below += kernels_->r_bottom_beam_rows_multiple * beam_at_bottom_.asDiagonal();
-      }
+      const Eigen::MatrixXd* beam_rows =
+          beam_at_bottom ? carried_by_tables(kernels_->r_bottom_beam_rows, kernels_->r_bottom_beam_rows_multiple, m,
+                                             exact_path_ == UnscatteredPath::BottomOnly)
+                         : nullptr;
+      if (beam_rows != nullptr) below += *beam_rows * beam_at_bottom_.asDiagonal();
     } else if (!infinite && lambert_mode) {
       Eigen::RowVectorXd flux = flux_weights(q) * field.slabs.back().down_bottom;
       if (beam_at_bottom) flux += beam_at_bottom_.transpose();
@@ -234,9 +240,12 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
               face.transmit_up_rows[m] * field.slabs[i].up_top;
       // The beam's reflection off this interface: UnscatteredLight::brdf when it is the exact path's.
       const bool exact = exact_path_ == UnscatteredPath::BottomOnly && exact_first_ == static_cast<int>(i - 1);
-      if (beam_amplitude_[i - 1].size() != 0 && (!exact || has_multiple(face.beam_reflect_rows_multiple, m))) {
-        const Eigen::MatrixXd& rows = exact ? face.beam_reflect_rows_multiple : face.beam_reflect_rows[m];
-        below += rows * beam_amplitude_[i - 1].cwiseProduct(beam_attenuation_[i - 1]).asDiagonal();
+      const Eigen::MatrixXd* rows =
+          beam_amplitude_[i - 1].size() != 0
+              ? carried_by_tables(face.beam_reflect_rows, face.beam_reflect_rows_multiple, m, exact)
+              : nullptr;
+      if (rows != nullptr) {
+        below += *rows * beam_amplitude_[i - 1].cwiseProduct(beam_attenuation_[i - 1]).asDiagonal();
       }
     }
   }
@@ -256,21 +265,19 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
     } else {
       result.transmission = exit[m] * (field.slabs.back().down_bottom - exact_image_at_second(m));
     }
-    if (beam_at_bottom && exact_path_ != UnscatteredPath::BottomOnly) {
-      result.transmission += kernels_->t_bottom_beam[m] * beam_at_bottom_.asDiagonal();
-    } else if (beam_at_bottom && has_multiple(kernels_->t_bottom_beam_multiple, m)) {
-      result.transmission += kernels_->t_bottom_beam_multiple * beam_at_bottom_.asDiagonal();
-    }
+    const Eigen::MatrixXd* beam =
+        beam_at_bottom ? carried_by_tables(kernels_->t_bottom_beam, kernels_->t_bottom_beam_multiple, m,
+                                           exact_path_ == UnscatteredPath::BottomOnly)
+                       : nullptr;
+    if (beam != nullptr) result.transmission += *beam * beam_at_bottom_.asDiagonal();
   } else {
     // The downward radiance at each slab's top face along the exits, from the top down.
     Eigen::MatrixXd above;
     if (!geometry.top_open) {
       above = kernels_->r_top_rows[m] * field.slabs.front().up_top;
-      if (exact_path_ != UnscatteredPath::TopOnly) {
-        above += kernels_->t_source_exterior[m];
-      } else if (has_multiple(kernels_->t_source_exterior_multiple, m)) {
-        above += kernels_->t_source_exterior_multiple;
-      }
+      const Eigen::MatrixXd* source = carried_by_tables(kernels_->t_source_exterior, kernels_->t_source_exterior_multiple,
+                                                        m, exact_path_ == UnscatteredPath::TopOnly);
+      if (source != nullptr) above += *source;
     }
     for (std::size_t i = 0; i < count; ++i) {
       const Eigen::MatrixXd at_bottom =
@@ -297,9 +304,12 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
                  exact_image_at_second(m);
       }
       const bool exact = exact_path_ == UnscatteredPath::BottomOnly && exact_first_ == position;
-      if (beam_amplitude_[i].size() != 0 && (!exact || has_multiple(face.beam_transmit_rows_multiple, m))) {
-        const Eigen::MatrixXd& rows = exact ? face.beam_transmit_rows_multiple : face.beam_transmit_rows[m];
-        above += rows * beam_amplitude_[i].cwiseProduct(beam_attenuation_[i]).asDiagonal();
+      const Eigen::MatrixXd* rows =
+          beam_amplitude_[i].size() != 0
+              ? carried_by_tables(face.beam_transmit_rows, face.beam_transmit_rows_multiple, m, exact)
+              : nullptr;
+      if (rows != nullptr) {
+        above += *rows * beam_amplitude_[i].cwiseProduct(beam_attenuation_[i]).asDiagonal();
       }
     }
   }
