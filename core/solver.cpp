@@ -263,7 +263,7 @@ LayerTables solve(const Material& material, const SolveOptions& options) {
 double brdf_surface(const Material& material, double theta_i, double theta_o, double phi) {
   const Vec3 wi = direction_from_angles(theta_i, 0.0);
   const Vec3 wo = direction_from_angles(theta_o, phi);
-  return microfacet_brdf({material.eta, material.sigma, material.microfacet}, wi, wo);
+  return microfacet_brdf(top_interface(material), wi, wo);
 }
 
 namespace {

@@ -8,6 +8,7 @@
 
 #include "app/material/material_json.h"
 #include "core/conventions.h"
+#include "core/interfaces/layer_interfaces.h"
 #include "core/series/bsdf_fourier_series.h"
 #include "core/solve/upside_down.h"
 
@@ -27,7 +28,7 @@ struct Blocks {
 Blocks side_series(const ColorTables& tables, std::span<const double> theta, bool grey, SeriesOptions options) {
   const Material& layer = tables.material.layer;
   const std::span<const LayerTables> channels(tables.channels.data(), grey ? 1 : 3);
-  const RoughDielectric top{layer.eta, layer.sigma, layer.microfacet};
+  const RoughDielectric top = top_interface(layer);
   Blocks blocks;
   blocks.reflection = bsdf_fourier_series(top, channels, ScatteringKind::Reflection, theta, theta, options);
   blocks.transmission = bsdf_fourier_series(top, channels, ScatteringKind::Transmission, theta, theta, options);

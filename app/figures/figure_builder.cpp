@@ -15,6 +15,7 @@
 #include "app/figures/skin_figures.h"
 #include "app/material/picture_metadata.h"
 #include "core/conventions.h"
+#include "core/interfaces/layer_interfaces.h"
 #include "core/interfaces/microfacet.h"
 #include "core/solver.h"
 
@@ -47,7 +48,7 @@ Lobe sample_lobe(const FigureCurve& curve, FigureKind kind, SolveCache& cache) {
   const Material material = curve.params.material();
   const double theta_i = degrees_to_radians(curve.theta_i_deg);
   const LayerTables* tables = kind == FigureKind::SurfaceLobes ? nullptr : &cache.tables(curve.params, curve.model);
-  const RoughDielectric interface{material.eta, material.sigma, material.microfacet};
+  const RoughDielectric interface = top_interface(material);
   const Vec3 wi = direction_from_angles(theta_i, 0.0);
   for (int s = -90; s <= 90; s += kStepDeg) {
     const double theta_o = degrees_to_radians(theta_of(s)), phi = degrees_to_radians(phi_of(s));

@@ -9,6 +9,7 @@
 
 #include "core/conventions.h"
 #include "core/interfaces/interface_albedo.h"
+#include "core/interfaces/layer_interfaces.h"
 #include "core/reference/bin_average.h"
 #include "core/solver.h"
 #include "core/unscattered/unscattered_light.h"
@@ -195,9 +196,8 @@ SetResult run_validation_set(const ValidationSet& set, const RunOptions& options
   // The walk's light that never entered is all the top reflects, its multiply scattered part included, which the
   // solver counts with the subsurface reflectance (core/solver.h).
   const Vec3 toward_light = direction_from_angles(theta_i, 0.0);
-  const RoughDielectric top{material.eta, material.sigma, material.microfacet};
   const double top_multiple =
-      interface_albedo_parts(top, std::span<const Vec3>(&toward_light, 1)).front().multiple.reflectance;
+      interface_albedo_parts(top_interface(material), std::span<const Vec3>(&toward_light, 1)).front().multiple.reflectance;
   result.albedos.push_back(
       compare("R surface", mc.reflectance_surface, albedo.reflectance_surface + top_multiple, -1.0));
   result.albedos.push_back(

@@ -14,10 +14,18 @@ std::vector<double> negated(std::span<const double> cosines) {
   return result;
 }
 
+RoughDielectric top_interface(const Material& material) {
+  return {material.eta, material.sigma, material.microfacet};
+}
+
+RoughDielectric bottom_interface(const Material& material) {
+  return {1.0 / material.bottom_eta(), material.bottom_sigma(), material.microfacet};
+}
+
 LayerGeometry classify_layer(const Material& material) {
   LayerGeometry geometry;
   geometry.top_open = material.eta == 1.0;
-  geometry.top = {material.eta, material.sigma, material.microfacet};
+  geometry.top = top_interface(material);
   switch (material.bottom.kind) {
     case BottomKind::Air:
       geometry.base = material.bottom_eta() == 1.0 ? LayerBase::Open : LayerBase::Rough;
@@ -30,7 +38,7 @@ LayerGeometry classify_layer(const Material& material) {
       break;
   }
   if (geometry.base == LayerBase::Rough) {
-    geometry.bottom = {1.0 / material.bottom_eta(), material.bottom_sigma(), material.microfacet};
+    geometry.bottom = bottom_interface(material);
   }
   geometry.bottom_mirrors_top = geometry.base == LayerBase::Rough && material.bottom_eta() == material.eta &&
                                 material.bottom_sigma() == material.sigma;

@@ -32,6 +32,11 @@ struct LayerGeometry {
 };
 LayerGeometry classify_layer(const Material& material);
 
+// The material's top interface (eta, sigma) and its bottom in the frame +z up into the layer (eta = n_below / n_layer
+// = 1 / bottom_eta()), each with the material's microfacet model; what every part of a solve takes them as.
+RoughDielectric top_interface(const Material& material);
+RoughDielectric bottom_interface(const Material& material);
+
 // A Lambertian base of albedo A under the ordinates (f = A/pi, Fourier mode 0 only), as a node operator from the
 // down nodes to the up nodes: R(o, j) = c_0 (A/pi) mu_j a_j = 2 A mu_j a_j.
 Eigen::MatrixXd lambert_reflection(const QuadratureRule& quadrature, double albedo);

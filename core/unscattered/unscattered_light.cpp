@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/conventions.h"
+#include "core/interfaces/layer_interfaces.h"
 #include "core/material.h"
 #include "core/series/quadrature.h"
 
@@ -141,8 +142,8 @@ UnscatteredLight::UnscatteredLight(const Material& material)
                        ? material.eta * material.internal_index_ratio()
                        : material.eta * material.internal_index_ratio() / material.bottom_eta()) {
   const bool top_open = material.eta == 1.0;
-  top_ = {material.eta, material.sigma, material.microfacet};
-  bottom_ = {1.0 / material.bottom_eta(), material.bottom_sigma(), material.microfacet};
+  top_ = top_interface(material);
+  bottom_ = bottom_interface(material);
   if (std::isinf(tau_)) return;
   if (material.has_internal_interfaces()) {
     set_stack_path(material);

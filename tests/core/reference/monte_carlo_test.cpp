@@ -17,6 +17,7 @@
 
 #include "core/conventions.h"
 #include "core/interfaces/interface_albedo.h"
+#include "core/interfaces/layer_interfaces.h"
 #include "core/reference/bin_average.h"
 #include "core/solver.h"
 
@@ -110,8 +111,8 @@ TEST(MonteCarlo, DirectionalAlbedosAgreeWithSolver) {
     // The walk's light that never entered is all the top reflects, its multiply scattered part included, which the
     // solver counts with the subsurface reflectance (solver.h).
     const Vec3 toward_light = direction_from_angles(theta_i, 0.0);
-    const RoughDielectric top{c.material.eta, c.material.sigma, c.material.microfacet};
-    const double top_multiple = interface_albedo_parts(top, std::span<const Vec3>(&toward_light, 1))[0].multiple.reflectance;
+    const double top_multiple =
+        interface_albedo_parts(top_interface(c.material), std::span<const Vec3>(&toward_light, 1))[0].multiple.reflectance;
     expect_agrees("reflectance_surface", mc.reflectance_surface, solver.reflectance_surface + top_multiple,
                   kAlbedoAllowance);
     expect_agrees("reflectance_subsurface", mc.reflectance_subsurface, solver.reflectance_subsurface - top_multiple,

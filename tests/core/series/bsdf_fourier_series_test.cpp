@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/conventions.h"
+#include "core/interfaces/layer_interfaces.h"
 #include "core/solver.h"
 
 namespace skinlayer {
@@ -51,7 +52,7 @@ TEST(BsdfFourierSeries, SumsToThePointwiseBsdfForReflectionAndTransmission) {
                                               return red;
                                             }()};
     const std::vector<LayerTables> tables = solve(std::span<const Material>(channels));
-    const RoughDielectric top{c.material.eta, c.material.sigma, c.material.microfacet};
+    const RoughDielectric top = top_interface(c.material);
     for (ScatteringKind kind : {ScatteringKind::Reflection, ScatteringKind::Transmission}) {
       const bool reflection = kind == ScatteringKind::Reflection;
       const AzimuthalSeriesTable table = bsdf_fourier_series(top, tables, kind, theta_i, theta_o);
