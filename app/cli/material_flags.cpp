@@ -113,6 +113,16 @@ std::array<double, 3> albedo_rgb_from_text(std::string_view text) {
   return rgb;
 }
 
+MicrofacetModel microfacet_from_text(std::string_view text) {
+  const std::optional<MicrofacetModel> model = parse_microfacet_model(text);
+  if (!model) {
+    throw UsageError("microfacet = " + quoted(text) +
+                     " is not a microfacet model; valid values are multiple (energy-conserving, the default) and "
+                     "single (Stam 2001)");
+  }
+  return *model;
+}
+
 namespace {
 
 // --T, --tau, --albedo and --g set the one layer of a single-layer material. On a stack from --material or --preset
@@ -203,15 +213,7 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
   if (const auto value = checked_number(flags, "bottom-sigma")) material.bottom.sigma = *value;
   if (const auto value = checked_number(flags, "bottom-eta")) material.bottom.eta = *value;
   if (const std::optional<int> ordinates = checked_ordinates(flags)) material.ordinates = ordinates;
-  if (const auto text = flags.value("microfacet")) {
-    const std::optional<MicrofacetModel> model = parse_microfacet_model(*text);
-    if (!model) {
-      throw UsageError("microfacet = " + quoted(*text) +
-                       " is not a microfacet model; valid values are multiple (energy-conserving, the default) and "
-                       "single (Stam 2001)");
-    }
-    material.microfacet = *model;
-  }
+  if (const auto text = flags.value("microfacet")) material.microfacet = microfacet_from_text(*text);
   if (const auto text = flags.value(kSkinFlag)) {
     document.skin = parse_skin_spec(*text, document.skin.value_or(SkinParameters{}));
   }

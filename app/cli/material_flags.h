@@ -47,6 +47,9 @@ Material material_from_flags(const ParsedFlags& flags);
 // "A" or "r,g,b", each a single-scattering albedo in [0, 1]: ParameterError out of range, UsageError otherwise.
 std::array<double, 3> albedo_rgb_from_text(std::string_view text);
 
+// --microfacet's value, "multiple" or "single"; UsageError naming the flag and both values otherwise.
+MicrofacetModel microfacet_from_text(std::string_view text);
+
 // The flags that material_from_flags reads back into the same material: every parameter, e.g.
 // "--sigma 0.5 --eta 1.4 --T 0.2 --albedo 1 --g 0.8 --bottom air" (--tau when T would not read back exactly; the
 // bottom's own sigma and eta and --ordinates only when set), each number in its shortest exact form.

@@ -12,6 +12,7 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
+#include "app/cli/material_flags.h"
 #include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/figures/font.h"
@@ -103,12 +104,8 @@ int run_validate_command(std::span<const std::string_view> arguments, std::ostre
                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<validation::ValidationSet> sets = chosen_sets(flags.value("set"));
   if (const auto text = flags.value("microfacet")) {
-    const std::optional<MicrofacetModel> model = parse_microfacet_model(*text);
-    if (!model) {
-      throw UsageError("microfacet = " + quoted(*text) + " is not a microfacet model; valid values are multiple and "
-                       "single");
-    }
-    for (validation::ValidationSet& set : sets) set.material.microfacet = *model;
+    const MicrofacetModel model = microfacet_from_text(*text);
+    for (validation::ValidationSet& set : sets) set.material.microfacet = model;
   }
   const std::filesystem::path dir{std::string(flags.value("output").value_or("validation"))};
   std::error_code error;
