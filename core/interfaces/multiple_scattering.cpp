@@ -47,7 +47,7 @@ std::pair<std::size_t, double> bracket(const std::vector<double>& nodes, double 
 
 MultipleScatteringLobe::MultipleScatteringLobe(const RoughDielectric& interface) : eta_(interface.eta) {
   const data::EmbeddedTable table = data::microfacet_multiple_scattering();
-  const Grid grid = read_grid(table);
+  static const Grid grid = read_grid(table);  // the compiled-in table's grid: read once, never changed
   const std::size_t bins = grid.mus.size();
   for (const double mu : grid.mus) angles_.push_back(std::acos(mu));
   std::vector<double> log_indices;

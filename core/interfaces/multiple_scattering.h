@@ -7,8 +7,8 @@
 // back to the incident side and beyond.
 //
 // For one interface the table is interpolated linearly in sigma and in ln e (e = eta from above, 1/eta from below),
-// then, per evaluation, linearly in the incident and the exit polar angle between the grid's angles (held constant
-// beyond its first and last).
+// then, per evaluation, by Catmull-Rom in the incident and the exit polar angle between the grid's angles (the end
+// angles' values held beyond them, the result held at 0 or above).
 // What it returns is made reciprocal: the reflection symmetric in (mu_i, mu_o), the transmission with its radiance
 // scaling, f_t(above mu_i -> below mu_o) = eta^2 f_t(below mu_o -> above mu_i) (eta = n_below / n_above), each the
 // mean of the table's two estimates. Its magnitude carries Monte Carlo noise (30,000-200,000 walks a row, about 1% of
