@@ -1,5 +1,7 @@
 #include "core/reference/microsurface_walk.h"
 
+#include <math.h>  // lgamma_r
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -92,8 +94,9 @@ double height_correlated_bsdf(const RoughDielectric& interface, const Vec3& wi, 
   const double fresnel = fresnel_dielectric(i_h, eta_t);
   if (fresnel >= 1.0) return 0.0;
   const double lambda_o = beckmann_lambda(-o, interface.sigma);  // o seen from its own side
-  const double g2 = std::exp(std::lgamma(1.0 + lambda_i) + std::lgamma(1.0 + lambda_o) -
-                             std::lgamma(2.0 + lambda_i + lambda_o));  // B(1 + Lambda_i, 1 + Lambda_o)
+  int sign = 0;  // lgamma_r keeps the sign out of the global signgam, so walks on several threads do not race
+  const double g2 = std::exp(::lgamma_r(1.0 + lambda_i, &sign) + ::lgamma_r(1.0 + lambda_o, &sign) -
+                             ::lgamma_r(2.0 + lambda_i + lambda_o, &sign));  // B(1 + Lambda_i, 1 + Lambda_o)
   const double denominator = i_h + eta_t * o_h;
   return i_h * std::abs(o_h) * eta_t * eta_t * (1.0 - fresnel) * beckmann_ndf(h.z(), interface.sigma) * g2 /
          (i.z() * std::abs(o.z()) * denominator * denominator);
