@@ -5,20 +5,11 @@
 #include <stdexcept>
 
 #include "core/conventions.h"
+#include "core/series/catmull_rom.h"
 #include "core/series/window_sum.h"
 
 namespace skinlayer {
 namespace {
-
-// Catmull-Rom weights for the four samples around t in [0, 1] (interpolating, C1, exact for quadratics).
-void catmull_rom_weights(double t, double w[4]) {
-  const double t2 = t * t;
-  const double t3 = t2 * t;
-  w[0] = 0.5 * (-t + 2.0 * t2 - t3);
-  w[1] = 0.5 * (2.0 - 5.0 * t2 + 3.0 * t3);
-  w[2] = 0.5 * (t + 4.0 * t2 - 3.0 * t3);
-  w[3] = 0.5 * (-t2 + t3);
-}
 
 // The four samples, weights and signs of the spline at grid coordinate x (0 <= x <= K - 1), continued past both
 // ends by the grid's symmetries (layer_tables.h): x = -1 is sample 1 seen across the normal, with the factor
