@@ -11,7 +11,7 @@
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
 #include "core/interfaces/multiple_scattering.h"
-#include "core/interfaces/smith_masking.h"
+#include "core/interfaces/transmission_masking_table.h"
 #include "core/series/quadrature.h"
 
 namespace skinlayer {
@@ -207,12 +207,14 @@ AlbedoPair integrate_slopes(double sx, double wz, double e, double sigma, double
   const double critical = e < 1.0 ? std::sqrt(1.0 - e * e) : 0.0;  // cos of the critical angle at a facet
   const double centre = -sx / wz;
   const double normalization = 2.0 * g1_in / (wz * kPi * sigma2);  // 2: the q < 0 half mirrors the q > 0 half
-  // The masking-shadowing G2(wi, wo) / G1(wi) (G1(wi) is in the normalization): G1(wo) in the separable form.
-  const auto outgoing_masking = [g1_in, microfacet](double g1_out, bool transmitted) {
+  // The masking-shadowing G2(wi, wo) / G1(wi) (G1(wi) is in the normalization): G1(wo) in the separable form; the
+  // height-correlated form (smith_masking.h) in reflection as g_o / (g_i + g_o - g_i g_o), one division, and in
+  // transmission from the table's row at this g_i (transmission_masking_table.h).
+  const TransmissionMaskingRow transmission_masking(microfacet == MicrofacetModel::Multiple ? g1_in : 0.0);
+  const auto outgoing_masking = [g1_in, microfacet, &transmission_masking](double g1_out, bool transmitted) {
     if (microfacet == MicrofacetModel::Single) return g1_out;
-    return (transmitted ? smith_g2_transmission(g1_in, g1_out, microfacet)
-                        : smith_g2_reflection(g1_in, g1_out, microfacet)) /
-           g1_in;
+    if (transmitted) return transmission_masking(g1_out) / g1_in;
+    return g1_out / (g1_in + g1_out * (1.0 - g1_in));
   };
 
   // The largest relative density exp(-x^2 / sigma^2) over [a, b].
