@@ -111,9 +111,10 @@ void append_skin_figures(std::vector<FigureSpec>& set) {
     curve.skin->melanin = 0.035;
     blood.curves.push_back(curve);
   }
-  blood.caption = "The same at melanin 3.5% (the skin-fair preset) as the dermal blood volume fraction rises from "
-                  "0.2% to 10%: the oxy- and deoxyhemoglobin bands (the W between 540 and 580 nm, and the Soret "
-                  "band below 450 nm) deepen, and the rise past 600 nm, where hemoglobin hardly absorbs, stays.";
+  blood.caption =
+      "The same at melanin 3.5% (light skin in Jacques' ranges) as the dermal blood volume fraction rises from "
+      "0.2% to 10%: the oxy- and deoxyhemoglobin bands (the W between 540 and 580 nm, and the Soret "
+      "band below 450 nm) deepen, and the rise past 600 nm, where hemoglobin hardly absorbs, stays.";
   set.push_back(blood);
 
   FigureSpec spheres;
@@ -127,11 +128,12 @@ void append_skin_figures(std::vector<FigureSpec>& set) {
     curve.theta_i_deg = 45.0;
     spheres.curves.push_back(curve);
   }
-  spheres.caption = "Spheres of the spectral skin across the pigmentation ranges (3.5%, 13.5% and 30% are the "
-                    "skin-fair, skin-medium and skin-dark presets), each solved at 31 wavelengths and shown in "
-                    "linear sRGB under D65 with skinlayer render's renderer. The CSV holds each skin's colour at "
-                    "normal incidence (the sphere's centre under a white furnace), which `skinlayer albedo --skin` "
-                    "reproduces.";
+  spheres.caption =
+      "Spheres of the spectral skin across the pigmentation ranges that Jacques (1998) gives for "
+      "light, moderately and darkly pigmented adults, each solved at 31 wavelengths and shown in "
+      "linear sRGB under D65 with skinlayer render's renderer. The CSV holds each skin's colour at "
+      "normal incidence (the sphere's centre under a white furnace), which `skinlayer albedo --skin` "
+      "reproduces.";
   set.push_back(spheres);
 }
 

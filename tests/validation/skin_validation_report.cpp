@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   std::string line, field;
   std::getline(file, line);
   {
+    if (!line.empty() && line.back() == '\r') line.pop_back();  // the file has CRLF line ends
     std::stringstream header(line);
     std::getline(header, field, ',');
     while (std::getline(header, field, ',')) subjects.push_back({field, {}, {}, 0.0});
