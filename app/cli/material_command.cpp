@@ -1,15 +1,25 @@
 #include "app/cli/material_command.h"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
-#include "app/cli/skin_flag.h"
 #include "app/cli/model_flag.h"
+#include "app/cli/numbers.h"
+#include "app/cli/skin_flag.h"
 #include "app/material/material_file.h"
 #include "app/material/material_json.h"
 #include "app/material/presets.h"
+#include "app/process/parallel_for.h"
+#include "app/solution/document_albedo.h"
+#include "core/color/spectral_color.h"
+#include "core/interfaces/microfacet_model.h"
 
 namespace skinlayer::cli {
 
@@ -49,14 +59,61 @@ int run_material_command(std::span<const std::string_view> arguments, std::ostre
 }
 
 std::string presets_usage() {
-  return "Usage: skinlayer presets\n"
+  return "Usage: skinlayer presets [--colors [--microfacet multiple|single]]\n"
          "\n"
          "Lists the named presets (name, then a one-line description). Any command that takes material flags takes\n"
-         "--preset NAME; `skinlayer material --preset NAME` prints one as a material file.\n";
+         "--preset NAME; `skinlayer material --preset NAME` prints one as a material file.\n"
+         "\n"
+         "  --colors             instead, each preset's colour, solved: CSV rows\n"
+         "                         name,microfacet,reflectance_r,reflectance_g,reflectance_b,srgb\n"
+         "                       the directional-hemispherical reflectance at normal incidence (surface and\n"
+         "                       subsurface: the sphere's centre under a white furnace) in linear sRGB, and the same\n"
+         "                       sRGB-encoded as #RRGGBB (clipped to [0, 1]); a skin's from its spectrum under D65\n"
+         "  --microfacet M       with --colors: every preset's interfaces under model M (multiple or single) in\n"
+         "                       place of its own, to see what the interfaces' multiple scattering changes\n";
 }
 
+namespace {
+
+// "#RRGGBB" of a linear sRGB colour, each channel clipped to [0, 1] and sRGB-encoded.
+std::string srgb_hex(const std::array<double, 3>& linear) {
+  char text[8];
+  const auto byte = [](double value) {
+    return static_cast<unsigned>(std::lround(255.0 * srgb_encode(std::clamp(value, 0.0, 1.0))));
+  };
+  std::snprintf(text, sizeof text, "#%02X%02X%02X", byte(linear[0]), byte(linear[1]), byte(linear[2]));
+  return text;
+}
+
+void write_preset_colors(const std::optional<MicrofacetModel> microfacet, std::ostream& out) {
+  out << "name,microfacet,reflectance_r,reflectance_g,reflectance_b,srgb\n";
+  const double normal[] = {0.0};
+  for (const PresetInfo& preset : preset_list()) {
+    MaterialDocument document = preset_material(preset.name);
+    if (microfacet) document.layer.microfacet = *microfacet;
+    const std::vector<std::vector<DirectionalAlbedo>> channels =
+        document_albedo(document, normal, parallel_for_threads);
+    std::array<double, 3> rgb{};
+    for (std::size_t c = 0; c < 3; ++c) rgb[c] = channels[std::min(c, channels.size() - 1)].front().reflectance();
+    out << preset.name << ',' << microfacet_model_name(document.layer.microfacet);
+    for (const double value : rgb) out << ',' << format_number(value);
+    out << ',' << srgb_hex(rgb) << '\n';
+  }
+}
+
+}  // namespace
+
 int run_presets_command(std::span<const std::string_view> arguments, std::ostream& out) {
-  if (!arguments.empty()) throw UsageError("presets takes no arguments; see skinlayer presets --help");
+  const std::vector<std::string_view> known = {"microfacet"};
+  const std::vector<std::string_view> switches = {"colors"};
+  const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer presets", switches);
+  std::optional<MicrofacetModel> microfacet;
+  if (const auto text = flags.value("microfacet")) microfacet = microfacet_from_text(*text);
+  if (flags.has("colors")) {
+    write_preset_colors(microfacet, out);
+    return kExitSuccess;
+  }
+  if (microfacet) throw UsageError("--microfacet needs --colors: the list of names does not depend on it");
   std::size_t width = 0;
   const std::vector<PresetInfo> presets = preset_list();
   for (const PresetInfo& preset : presets) width = std::max(width, preset.name.size());

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,71 @@ TEST_F(MaterialCommands, PresetsListsNameAndDescription) {
     EXPECT_NE(result.out.find(std::string(name) + " "), std::string::npos) << name;
   }
   EXPECT_NE(result.out.find("a look, not a measurement"), std::string::npos);
+}
+
+// `presets --colors`: one row per preset, its colour at normal incidence as `albedo` computes it; under the
+// interfaces that keep their light no rough preset is darker than under Stam's, in any channel.
+std::vector<std::vector<std::string>> csv_rows(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::stringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line)) {
+    std::vector<std::string> fields;
+    std::stringstream row(line);
+    std::string field;
+    while (std::getline(row, field, ',')) fields.push_back(field);
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+TEST_F(MaterialCommands, PresetColorsAreTheirAlbedoAndTheKeptLightNeverDarkensThem) {
+  const ProcessResult own = run_skinlayer({"presets", "--colors"});
+  const ProcessResult single = run_skinlayer({"presets", "--colors", "--microfacet", "single"});
+  ASSERT_EQ(own.exit_code, 0) << own.err;
+  ASSERT_EQ(single.exit_code, 0) << single.err;
+  const auto rows = csv_rows(own.out), single_rows = csv_rows(single.out);
+  ASSERT_EQ(rows.front(), (std::vector<std::string>{"name", "microfacet", "reflectance_r", "reflectance_g",
+                                                    "reflectance_b", "srgb"}));
+  ASSERT_EQ(rows.size(), single_rows.size());
+  ASSERT_GE(rows.size(), 15u);  // the header and every preset
+  int brighter = 0;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    ASSERT_EQ(rows[r].size(), 6u) << own.out;
+    EXPECT_EQ(rows[r][0], single_rows[r][0]);
+    EXPECT_EQ(single_rows[r][1], "single");
+    EXPECT_EQ(rows[r][5].size(), 7u) << rows[r][5];
+    EXPECT_EQ(rows[r][5][0], '#');
+    if (rows[r][0].starts_with("paper-")) {
+      EXPECT_EQ(rows[r][1], "single") << "the paper's presets keep its model";
+    }
+    for (int c = 2; c <= 4; ++c) {
+      const double kept = std::stod(rows[r][c]), lost = std::stod(single_rows[r][c]);
+      EXPECT_GT(kept, 0.0) << rows[r][0];
+      EXPECT_GE(kept, lost - 1e-12) << rows[r][0] << " channel " << c - 2;
+      if (kept > lost * 1.01) ++brighter;
+    }
+  }
+  EXPECT_GT(brighter, 10) << "the kept light shows in the rough presets' colours";
+  // The same numbers as `albedo` at normal incidence, for an RGB preset and a spectral skin.
+  for (const std::string name : {"jade", "skin-fair"}) {
+    const ProcessResult albedo = run_skinlayer({"albedo", "--preset", name, "--theta-i", "0"});
+    ASSERT_EQ(albedo.exit_code, 0) << albedo.err;
+    const auto table = csv_rows(albedo.out);
+    const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r[0] == name; });
+    ASSERT_NE(row, rows.end()) << name;
+    for (int c = 0; c < 3; ++c) {
+      const std::string column = std::string("reflectance_") + "rgb"[c];
+      const auto at = std::find(table[0].begin(), table[0].end(), column);
+      ASSERT_NE(at, table[0].end()) << column << " in " << albedo.out;
+      EXPECT_NEAR(std::stod(table[1][static_cast<std::size_t>(at - table[0].begin())]),
+                  std::stod((*row)[static_cast<std::size_t>(2 + c)]), 1e-9)
+          << name << " " << column;
+    }
+  }
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"presets", "--microfacet", "single"}), 2, {"--colors"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"presets", "--colors", "--microfacet", "some"}), 2,
+                                   {"microfacet", "multiple", "single"}));
 }
 
 TEST_F(MaterialCommands, EveryFailureIsOneLineAndWritesNothing) {
