@@ -108,13 +108,13 @@ struct Incidence {
   }
 };
 
-// The slope-space single-scattering albedos of the interface, within 1e-6 of the adaptive integration.
-InterfaceAlbedo expect_within_a_millionth(const Incidence& c, MicrofacetModel microfacet) {
+// The slope-space single-scattering albedos of the interface, within `tolerance` of the adaptive integration.
+InterfaceAlbedo expect_within(const Incidence& c, MicrofacetModel microfacet, double tolerance) {
   const RoughDielectric interface{c.eta, c.sigma, microfacet};
   const InterfaceAlbedo fast = single_scattering_albedo(interface, c.toward_light());
   const InterfaceAlbedo reference = integrate_slopes_adaptively(interface, c.toward_light());
-  EXPECT_NEAR(fast.reflectance, reference.reflectance, 1e-6) << c.where();
-  EXPECT_NEAR(fast.transmittance, reference.transmittance, 1e-6) << c.where();
+  EXPECT_NEAR(fast.reflectance, reference.reflectance, tolerance) << c.where();
+  EXPECT_NEAR(fast.transmittance, reference.transmittance, tolerance) << c.where();
   return fast;
 }
 
@@ -126,22 +126,27 @@ TEST(InterfaceAlbedo, WithinOneInAMillionOfAnAdaptiveIntegration) {
                              {0.5, 1.05, 1, 89.0},  {1.0, 2.0, -1, 80.0},  {1.0, 1.05, 1, 89.0}, {1.0, 1.4, 1, 0.0},
                              {0.5, 1.4, 1, 30.0},   {0.05, 1.4, 1, 60.0}};
   for (const Incidence& c : cases) {
-    const InterfaceAlbedo single = expect_within_a_millionth(c, MicrofacetModel::Single);
+    const InterfaceAlbedo single = expect_within(c, MicrofacetModel::Single, 1e-6);
     const InterfaceAlbedo whole = interface_albedo({c.eta, c.sigma}, c.toward_light());
     EXPECT_EQ(single.reflectance, whole.reflectance) << "Single is its single scattering, " << c.where();
   }
 }
 
 // The height-correlated masking-shadowing of MicrofacetModel::Multiple (smith_masking.h) goes through the same
-// slope-space integration: at the square-root edge of total internal reflection, at grazing and straight on.
-TEST(InterfaceAlbedo, HeightCorrelatedMaskingWithinOneInAMillionOfAnAdaptiveIntegration) {
-  const Incidence cases[] = {{0.2, 1.4, -1, 45.6}, {0.5, 1.4, -1, 70.0}, {1.0, 2.0, 1, 80.0}, {1.0, 1.4, 1, 0.0}};
+// slope-space integration, with the smaller rules and the tabulated transmission masking that model takes
+// (interface_albedo.cpp, PieceRules: its integrals only split the light between two lobes): within 3e-5 at the
+// square-root edge of total internal reflection, at grazing, straight on, and where the rules err most (sigma 1,
+// eta 2.5, from inside at 68 degrees: 2.1e-5 against the single model's rules).
+TEST(InterfaceAlbedo, HeightCorrelatedMaskingWithinItsRulesToleranceOfAnAdaptiveIntegration) {
+  const Incidence cases[] = {{0.2, 1.4, -1, 45.6}, {0.5, 1.4, -1, 70.0}, {1.0, 2.0, 1, 80.0},
+                             {1.0, 1.4, 1, 0.0},   {1.0, 2.5, -1, 68.0}, {0.05, 1.4, 1, 60.0}};
   for (const Incidence& c : cases) {
-    const InterfaceAlbedo correlated = expect_within_a_millionth(c, MicrofacetModel::Multiple);
-    // Against the separable form: more reflection, less transmission (or equal where nothing is masked).
+    const InterfaceAlbedo correlated = expect_within(c, MicrofacetModel::Multiple, 3e-5);
+    // Against the separable form: more reflection, less transmission (or equal where nothing is masked), up to the
+    // two rules' difference.
     const InterfaceAlbedo separable = single_scattering_albedo({c.eta, c.sigma}, c.toward_light());
-    EXPECT_GE(correlated.reflectance, separable.reflectance - 1e-12) << c.where();
-    EXPECT_LE(correlated.transmittance, separable.transmittance + 1e-12) << c.where();
+    EXPECT_GE(correlated.reflectance, separable.reflectance - 3e-5) << c.where();
+    EXPECT_LE(correlated.transmittance, separable.transmittance + 3e-5) << c.where();
   }
 }
 
