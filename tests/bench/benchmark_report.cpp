@@ -303,7 +303,9 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
     }
   }
   md << formatted(
-      "\n## Time per mode, by stage\n\nThe default solve's stages timed apart (tests/bench/solve_stages.h), "
+      "\n## Time per mode, by stage\n\nThe stages of the default layer's solve under Stam's interfaces "
+      "(`--microfacet single`, whose kernels have no multiply scattered lobe) timed apart "
+      "(tests/bench/solve_stages.h), "
       "divided by its %d modes.\n\n| stage | ms per mode | share | what |\n|---|---|---|---|\n",
       in.modes);
   for (const Stage& s : stages) {
@@ -311,7 +313,7 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
     md << formatted("| %s | %.3f | %.0f%% | %s |\n", s.name, ms / in.modes, 100.0 * ms / total, s.what);
   }
   md << formatted("\nThe **%s** dominate (%.0f%% of the stages' sum, %.2f ms against the whole solve's %.2f ms).\n\n",
-                  dominant, 100.0 * largest / total, total, r.ms("BM_SolveDefault/1"));
+                  dominant, 100.0 * largest / total, total, r.ms("BM_SolveDefault/0"));
 
   // Monte Carlo to the solver's accuracy, measured here: the subsurface albedo at 45 degrees.
   const MonteCarloSample mc = monte_carlo_default(4 * kMonteCarloBenchPaths);

@@ -39,6 +39,9 @@ Material ordinate_sweep_material() {
 
 StageInputs default_stage_inputs() {
   StageInputs in;
+  // Stam's interfaces: the stages below build the single-scattering kernels only (RoughDielectric{eta, sigma}), so
+  // they time the solve that has no multiply scattered lobe, and the report compares them with that solve.
+  in.material.microfacet = MicrofacetModel::Single;
   in.resolution = choose_resolution(in.material);
   in.quadrature = double_gauss_half_range(in.resolution.ordinates);
   for (int i = 0; i < in.resolution.table_size; ++i) {
