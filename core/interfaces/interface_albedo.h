@@ -21,9 +21,10 @@ struct InterfaceAlbedo {
 // smooth except on conics in slope space: the visibility cut-offs (wi.h = 0; the reflected or the refracted
 // direction on the horizon) and, for light on the denser side, the square-root edge of 1 - F at total internal
 // reflection. Rows of constant cross-slope are integrated piecewise between those curves' intersections, found in
-// closed form, with Gauss-Legendre on each piece (a u^2 map near the square-root edges); absolute error < 1e-6
-// (tests/core/interfaces/interface_albedo_test.cpp, against adaptive Gauss-Kronrod over outgoing directions). At eta =
-// 1 the interface is absent: reflectance 0, transmittance 1.
+// closed form, with Gauss-Legendre on each piece (a u^2 map near the square-root edges); absolute error < 1e-6 under
+// MicrofacetModel::Single, < 3e-5 under Multiple, whose integrals only split its light between two lobes and take
+// smaller rules (tests/core/interfaces/interface_albedo_test.cpp, against adaptive Gauss-Kronrod over outgoing
+// directions). At eta = 1 the interface is absent: reflectance 0, transmittance 1.
 InterfaceAlbedo single_scattering_albedo(const RoughDielectric& interface, const Vec3& wi);
 
 // The same for many incident directions at once, sharing the quadrature rules and the slope grid (what the solver
@@ -33,7 +34,8 @@ std::vector<InterfaceAlbedo> single_scattering_albedo(const RoughDielectric& int
 // The interface's albedos. Under MicrofacetModel::Single, the single-scattering ones above: what Smith shadowing
 // removes is lost. Under Multiple, those plus the light scattered more than once on the microsurface, which is all
 // that single scattering leaves, l = 1 - R - T, split between reflection and transmission by the multiply scattered
-// lobe's transmitted share s (core/interfaces/multiple_scattering.h): R + l (1 - s) and T + l s, so R + T = 1.
+// lobe's transmitted share s (core/interfaces/multiple_scattering.h): R + l (1 - s) and T + l s, so R + T = 1 (where
+// the quadrature carries R + T of single scattering past 1, both are scaled back to a sum of 1 and l = 0).
 InterfaceAlbedo interface_albedo(const RoughDielectric& interface, const Vec3& wi);
 std::vector<InterfaceAlbedo> interface_albedo(const RoughDielectric& interface, std::span<const Vec3> wi);
 
