@@ -347,7 +347,7 @@ std::vector<InterfaceAlbedoParts> interface_albedo_parts(const RoughDielectric& 
   std::vector<InterfaceAlbedoParts> parts;
   parts.reserve(wi.size());
   for (const InterfaceAlbedo& single : single_scattering_albedo(interface, wi)) parts.push_back({single, {0.0, 0.0}});
-  if (interface.microfacet == MicrofacetModel::Single || interface.eta == 1.0) return parts;
+  if (!has_multiple_scattering(interface)) return parts;
   const MultipleScatteringLobe lobe(interface);
   for (std::size_t k = 0; k < wi.size(); ++k) {
     // Where single scattering keeps nearly all the light (small sigma, steep incidence) the rules' error can carry

@@ -112,7 +112,7 @@ Eigen::MatrixXd multiple_scattering_fourier(const RoughDielectric& interface, st
                                             std::span<const double> mu_to) {
   const auto rows = static_cast<Eigen::Index>(mu_to.size()), columns = static_cast<Eigen::Index>(mu_from.size());
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(rows, columns);
-  if (interface.microfacet == MicrofacetModel::Single || interface.eta == 1.0) return result;
+  if (!has_multiple_scattering(interface)) return result;
   const MultipleScatteringLobe lobe(interface);
   for (Eigen::Index a = 0; a < columns; ++a) {
     const double from = mu_from[static_cast<std::size_t>(a)];
@@ -133,7 +133,7 @@ InterfaceKernel matched_interface_kernel(const RoughDielectric& interface, std::
                                          std::span<const double> nodes, std::span<const double> weights,
                                          const CancelCheck& cancelled) {
   InterfaceKernel result{interface_fourier(interface, mu_from, mu_to, projector, cancelled), {}};
-  const bool multiple = interface.microfacet == MicrofacetModel::Multiple && interface.eta != 1.0;
+  const bool multiple = has_multiple_scattering(interface);
   FourierKernel lobe;
   if (multiple) lobe.push_back(multiple_scattering_fourier(interface, mu_from, mu_to));
   if (match != EnergyMatch::None) {

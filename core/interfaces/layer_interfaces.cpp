@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "core/interfaces/interface_operators.h"
+#include "core/interfaces/multiple_scattering.h"
 
 namespace skinlayer {
 
@@ -126,7 +127,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
         apply_quadrature_weights(k.r_top_rows, up, weights);
       });
     }
-    if (all && want_exit && geometry.top.microfacet == MicrofacetModel::Multiple) {
+    if (all && want_exit && has_multiple_scattering(geometry.top)) {
       tasks.emplace_back([&] { k.r_surface_multiple = multiple_scattering_fourier(geometry.top, down_in, mu_out); });
     }
   }

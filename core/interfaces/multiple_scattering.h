@@ -29,6 +29,12 @@
 
 namespace skinlayer {
 
+// Whether the interface keeps a multiply scattered lobe: under MicrofacetModel::Multiple, where there is an interface
+// at all (eta != 1). Under Single, and at eta = 1, every part of the solver leaves the lobe out.
+inline bool has_multiple_scattering(const RoughDielectric& interface) {
+  return interface.microfacet == MicrofacetModel::Multiple && interface.eta != 1.0;
+}
+
 class MultipleScatteringLobe {
  public:
   // The lobe of `interface` (its microfacet model is not consulted: this is the Multiple model's part). eta = 1 (no
