@@ -127,6 +127,18 @@ Eigen::MatrixXd multiple_scattering_fourier(const RoughDielectric& interface, st
   return result;
 }
 
+Eigen::MatrixXd InterfaceKernel::single_scattering(int m) const {
+  const Eigen::MatrixXd& mode = kernel[static_cast<std::size_t>(m)];
+  return has_multiple(m) ? Eigen::MatrixXd(mode - multiple) : mode;
+}
+
+const Eigen::MatrixXd* InterfaceKernel::carried_by_tables(int m, bool exact) const {
+  if (!exact) return &kernel[static_cast<std::size_t>(m)];
+  return has_multiple(m) ? &multiple : nullptr;
+}
+
+std::size_t InterfaceKernel::bytes() const { return fourier_kernel_bytes(kernel) + matrix_bytes(multiple); }
+
 InterfaceKernel matched_interface_kernel(const RoughDielectric& interface, std::span<const double> mu_from,
                                          std::span<const double> mu_to, const CosineProjector& projector,
                                          EnergyMatch match, std::span<const InterfaceAlbedoParts> albedos,

@@ -34,6 +34,14 @@ struct InterfaceKernel {
   Eigen::MatrixXd multiple;
 
   bool has_multiple() const { return multiple.size() != 0; }
+  // Whether mode m holds a multiply scattered part (mode 0 alone, where there is one).
+  bool has_multiple(int m) const { return m == 0 && has_multiple(); }
+  // Mode m without its multiply scattered part: the single scattering alone.
+  Eigen::MatrixXd single_scattering(int m) const;
+  // The part of mode m that the tables carry: all of it, or, where the exact unscattered light replaces its single
+  // scattering (`exact`), the multiply scattered part of mode 0; null where nothing is left.
+  const Eigen::MatrixXd* carried_by_tables(int m, bool exact) const;
+  std::size_t bytes() const;  // both parts' memory
 };
 
 // How an interface kernel's energy is matched, part by part, to the accurate albedos (interface_albedo_parts):

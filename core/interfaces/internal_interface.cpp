@@ -12,13 +12,11 @@ namespace skinlayer {
 std::size_t InternalInterfaceKernels::bytes() const {
   std::size_t total = 0;
   for (const FourierKernel* k : {&reflect_above, &reflect_below, &transmit_down, &transmit_up, &reflect_above_rows,
-                                 &transmit_up_rows, &reflect_below_rows, &transmit_down_rows, &beam_reflect,
-                                 &beam_transmit, &beam_reflect_rows, &beam_transmit_rows}) {
+                                 &transmit_up_rows, &reflect_below_rows, &beam_reflect}) {
     total += fourier_kernel_bytes(*k);
   }
-  for (const Eigen::MatrixXd* m : {&transmit_down_rows_multiple, &beam_transmit_multiple, &beam_reflect_rows_multiple,
-                                   &beam_transmit_rows_multiple}) {
-    total += sizeof(double) * static_cast<std::size_t>(m->size());
+  for (const InterfaceKernel* k : {&transmit_down_rows, &beam_transmit, &beam_reflect_rows, &beam_transmit_rows}) {
+    total += k->bytes();
   }
   return total + sizeof(InterfaceAlbedo) * (from_above.size() + from_below.size() + beam_albedo.size());
 }
@@ -94,10 +92,8 @@ InternalInterfaceKernels internal_interface_kernels(const RoughDielectric& inter
     tasks.emplace_back([&] {
       k.reflect_below_rows = interface_kernel(interface, up, down_out, projector, cancelled).kernel;
       apply_quadrature_weights(k.reflect_below_rows, up, weights);
-      InterfaceKernel rows = interface_kernel(interface, down, down_out, projector, cancelled);
-      apply_quadrature_weights(rows, up, weights);
-      k.transmit_down_rows = std::move(rows.kernel);
-      k.transmit_down_rows_multiple = std::move(rows.multiple);
+      k.transmit_down_rows = interface_kernel(interface, down, down_out, projector, cancelled);
+      apply_quadrature_weights(k.transmit_down_rows, up, weights);
     });
   }
   if (needs.beam) {
@@ -107,20 +103,10 @@ InternalInterfaceKernels internal_interface_kernels(const RoughDielectric& inter
       k.beam_reflect = matched_interface_kernel(interface, down_in, up, projector, EnergyMatch::ReflectedColumns, beam,
                                                 up, weights, cancelled)
                            .kernel;
-      InterfaceKernel transmit = matched_interface_kernel(interface, down_in, down, projector,
-                                                          EnergyMatch::TransmittedColumns, beam, up, weights, cancelled);
-      k.beam_transmit = std::move(transmit.kernel);
-      k.beam_transmit_multiple = std::move(transmit.multiple);
-      if (needs.up_rows) {
-        InterfaceKernel rows = interface_kernel(interface, down_in, mu_out, projector, cancelled);
-        k.beam_reflect_rows = std::move(rows.kernel);
-        k.beam_reflect_rows_multiple = std::move(rows.multiple);
-      }
-      if (needs.down_rows) {
-        InterfaceKernel rows = interface_kernel(interface, down_in, down_out, projector, cancelled);
-        k.beam_transmit_rows = std::move(rows.kernel);
-        k.beam_transmit_rows_multiple = std::move(rows.multiple);
-      }
+      k.beam_transmit = matched_interface_kernel(interface, down_in, down, projector, EnergyMatch::TransmittedColumns,
+                                                 beam, up, weights, cancelled);
+      if (needs.up_rows) k.beam_reflect_rows = interface_kernel(interface, down_in, mu_out, projector, cancelled);
+      if (needs.down_rows) k.beam_transmit_rows = interface_kernel(interface, down_in, down_out, projector, cancelled);
     });
   }
   run_parallel(parallel_for, static_cast<int>(tasks.size()), [&](int i) { tasks[static_cast<std::size_t>(i)](); });

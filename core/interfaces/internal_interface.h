@@ -17,6 +17,7 @@
 
 #include "core/cancellation.h"
 #include "core/interfaces/interface_albedo.h"
+#include "core/interfaces/interface_operators.h"
 #include "core/interfaces/microfacet.h"
 #include "core/parallel_for.h"
 #include "core/series/fourier.h"
@@ -35,16 +36,16 @@ struct InternalInterfaceKernels {
   // below (transmission). Empty unless asked for.
   FourierKernel reflect_above_rows, transmit_up_rows;
   // To the downward exits -mu_out: from the up nodes below (reflection) and the down nodes above (transmission).
-  FourierKernel reflect_below_rows, transmit_down_rows;
+  FourierKernel reflect_below_rows;
+  InterfaceKernel transmit_down_rows;  // its multiply scattered part apart, as the beam's below
   // A collimated beam travelling down along -mu_in (irradiance mu_in F = 1 on the interface), reflected into the up
   // nodes above and transmitted into the down nodes below (columns energy-matched, no weights), and to the exits.
-  FourierKernel beam_reflect, beam_transmit, beam_reflect_rows, beam_transmit_rows;
+  // The InterfaceKernel ones are those that the exact unscattered light replaces in part: their multiply scattered
+  // part of mode 0 stays apart (0 x 0 under MicrofacetModel::Single).
+  FourierKernel beam_reflect;
+  InterfaceKernel beam_transmit, beam_reflect_rows, beam_transmit_rows;
   // Per incident direction, the interface's albedos for the beam.
   std::vector<InterfaceAlbedo> beam_albedo;
-  // Under MicrofacetModel::Multiple, the multiply scattered part of mode 0 (InterfaceKernel::multiple) of the kernels
-  // the exact unscattered light replaces in part (0 x 0 otherwise).
-  Eigen::MatrixXd transmit_down_rows_multiple, beam_transmit_multiple, beam_reflect_rows_multiple,
-      beam_transmit_rows_multiple;
 
   std::size_t bytes() const;
 };

@@ -54,14 +54,13 @@ Eigen::MatrixXd lambert_reflection(const QuadratureRule& quadrature, double albe
 }
 
 std::size_t InterfaceKernels::bytes() const {
-  std::size_t total = 0;
-  for (const FourierKernel* k : {&r_top, &t_source, &t_exit, &t_source_exterior, &r_top_rows, &r_bottom, &t_bottom_exit,
-                                 &s_bottom_beam, &t_bottom_beam, &r_bottom_rows, &r_bottom_beam_rows}) {
+  std::size_t total = matrix_bytes(r_surface_multiple);
+  for (const FourierKernel* k : {&r_top, &r_top_rows, &r_bottom, &s_bottom_beam, &r_bottom_rows}) {
     total += fourier_kernel_bytes(*k);
   }
-  for (const Eigen::MatrixXd* m : {&t_source_multiple, &t_bottom_exit_multiple, &t_source_exterior_multiple,
-                                   &t_bottom_beam_multiple, &r_bottom_beam_rows_multiple, &r_surface_multiple}) {
-    total += sizeof(double) * static_cast<std::size_t>(m->size());
+  for (const InterfaceKernel* k :
+       {&t_source, &t_exit, &t_source_exterior, &t_bottom_exit, &t_bottom_beam, &r_bottom_beam_rows}) {
+    total += k->bytes();
   }
   return total + sizeof(InterfaceAlbedo) * (top_inside.size() + bottom_inside.size());
 }
@@ -92,7 +91,6 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   // kernel (single and multiple scattering) is energy-matched to its own share of the accurate albedos
   // (matched_interface_kernel).
   std::vector<std::function<void()>> tasks;
-  Eigen::MatrixXd exit_multiple_of_top;  // t_exit's multiply scattered part, for a bottom that mirrors the top
   if (!geometry.top_open && (all || bottom_is_top)) {
     tasks.emplace_back([&] {
       const std::vector<InterfaceAlbedoParts> inside = interface_albedo_parts_along(geometry.top, up, -1.0);
@@ -105,24 +103,18 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   }
   if (!geometry.top_open) {
     tasks.emplace_back([&] {
-      InterfaceKernel source =
+      k.t_source =
           matched_interface_kernel(geometry.top, down_in, down, surface, EnergyMatch::TransmittedColumns,
                                    interface_albedo_parts_along(geometry.top, mu_in, 1.0), up, weights, cancelled);
       if (want_exit) {
         // By reciprocity the exit operator inherits the energy matching of the source columns, row by row.
-        InterfaceKernel exit = transmission_by_reciprocity(source, geometry.top.eta);
-        apply_quadrature_weights(exit, up, weights);
-        k.t_exit = std::move(exit.kernel);
-        exit_multiple_of_top = std::move(exit.multiple);
+        k.t_exit = transmission_by_reciprocity(k.t_source, geometry.top.eta);
+        apply_quadrature_weights(k.t_exit, up, weights);
       }
-      k.t_source = std::move(source.kernel);
-      k.t_source_multiple = std::move(source.multiple);
     });
     if (all && want_exit && geometry.base == LayerBase::Open) {
       tasks.emplace_back([&] {
-        InterfaceKernel exterior = interface_kernel(geometry.top, down_in, down_out, surface, cancelled);
-        k.t_source_exterior = std::move(exterior.kernel);
-        k.t_source_exterior_multiple = std::move(exterior.multiple);
+        k.t_source_exterior = interface_kernel(geometry.top, down_in, down_out, surface, cancelled);
         k.r_top_rows = interface_kernel(geometry.top, up, down_out, surface, cancelled).kernel;
         apply_quadrature_weights(k.r_top_rows, up, weights);
       });
@@ -149,10 +141,8 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
         const InterfaceKernel from_below = matched_interface_kernel(
             geometry.bottom, mu_out, up, surface, EnergyMatch::TransmittedColumns,
             interface_albedo_parts_along(geometry.bottom, mu_out, -1.0), up, weights, cancelled);
-        InterfaceKernel exit = transmission_by_reciprocity(from_below, 1.0 / geometry.bottom.eta);
-        apply_quadrature_weights(exit, up, weights);
-        k.t_bottom_exit = std::move(exit.kernel);
-        k.t_bottom_exit_multiple = std::move(exit.multiple);
+        k.t_bottom_exit = transmission_by_reciprocity(from_below, 1.0 / geometry.bottom.eta);
+        apply_quadrature_weights(k.t_bottom_exit, up, weights);
       });
     }
   }
@@ -165,24 +155,17 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
     });
     if (want_exit) {
       tasks.emplace_back([&] {
-        InterfaceKernel beam = interface_kernel(geometry.bottom, down_in, down_out, surface, cancelled);
-        k.t_bottom_beam = std::move(beam.kernel);
-        k.t_bottom_beam_multiple = std::move(beam.multiple);
+        k.t_bottom_beam = interface_kernel(geometry.bottom, down_in, down_out, surface, cancelled);
         k.r_bottom_rows = interface_kernel(geometry.bottom, down, mu_out, surface, cancelled).kernel;
         apply_quadrature_weights(k.r_bottom_rows, up, weights);
-        InterfaceKernel beam_rows = interface_kernel(geometry.bottom, down_in, mu_out, surface, cancelled);
-        k.r_bottom_beam_rows = std::move(beam_rows.kernel);
-        k.r_bottom_beam_rows_multiple = std::move(beam_rows.multiple);
+        k.r_bottom_beam_rows = interface_kernel(geometry.bottom, down_in, mu_out, surface, cancelled);
       });
     }
   }
   run_parallel(parallel_for, static_cast<int>(tasks.size()), [&](int i) { tasks[static_cast<std::size_t>(i)](); });
   if (bottom_is_top) {
     k.r_bottom = k.r_top;
-    if (all) {
-      k.t_bottom_exit = k.t_exit;
-      k.t_bottom_exit_multiple = exit_multiple_of_top;
-    }
+    if (all) k.t_bottom_exit = k.t_exit;
     k.bottom_inside = k.top_inside;
   }
   return k;

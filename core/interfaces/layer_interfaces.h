@@ -11,6 +11,7 @@
 
 #include "core/cancellation.h"
 #include "core/interfaces/interface_albedo.h"
+#include "core/interfaces/interface_operators.h"
 #include "core/interfaces/microfacet.h"
 #include "core/material.h"
 #include "core/parallel_for.h"
@@ -51,14 +52,14 @@ struct InterfaceKernels {
   // Per node, the albedos of the top interface for light travelling up to it and of the bottom interface for light
   // travelling down to it (R = 0, T = 1 where there is no interface): the energy targets of R21 and R23.
   std::vector<InterfaceAlbedo> top_inside, bottom_inside;
-  FourierKernel r_top, t_source, t_exit, t_source_exterior, r_top_rows;
-  FourierKernel r_bottom, t_bottom_exit, s_bottom_beam, t_bottom_beam, r_bottom_rows, r_bottom_beam_rows;
-  // Under MicrofacetModel::Multiple, the multiply scattered part of mode 0 (InterfaceKernel::multiple) of the kernels
-  // whose single scattering the exact unscattered light replaces (0 x 0 otherwise), and the top's multiply scattered
-  // reflection from outside to the exit rows, which the tables carry (brdf_surface is the single scattering's
-  // specular lobe alone).
-  Eigen::MatrixXd t_source_multiple, t_bottom_exit_multiple, t_source_exterior_multiple, t_bottom_beam_multiple,
-      r_bottom_beam_rows_multiple, r_surface_multiple;
+  FourierKernel r_top, r_top_rows;
+  FourierKernel r_bottom, s_bottom_beam, r_bottom_rows;
+  // The kernels whose single scattering the exact unscattered light replaces, with their multiply scattered part of
+  // mode 0 apart (InterfaceKernel; 0 x 0 under MicrofacetModel::Single).
+  InterfaceKernel t_source, t_exit, t_source_exterior, t_bottom_exit, t_bottom_beam, r_bottom_beam_rows;
+  // Under MicrofacetModel::Multiple, the top's multiply scattered reflection from outside to the exit rows, which
+  // the tables carry (brdf_surface is the single scattering's specular lobe alone); 0 x 0 otherwise.
+  Eigen::MatrixXd r_surface_multiple;
 
   std::size_t bytes() const;  // the kernels' memory
 };

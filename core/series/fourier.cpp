@@ -59,9 +59,13 @@ std::vector<double> AdaptiveCosineSeries::operator()(const std::function<double(
   return {};
 }
 
+std::size_t matrix_bytes(const Eigen::MatrixXd& matrix) {
+  return sizeof(double) * static_cast<std::size_t>(matrix.size());
+}
+
 std::size_t fourier_kernel_bytes(const FourierKernel& kernel) {
   std::size_t bytes = 0;
-  for (const Eigen::MatrixXd& m : kernel) bytes += sizeof(double) * static_cast<std::size_t>(m.size());
+  for (const Eigen::MatrixXd& m : kernel) bytes += matrix_bytes(m);
   return bytes;
 }
 

@@ -16,7 +16,8 @@ namespace skinlayer {
 // Per Fourier mode m, a matrix K^m(to, from).
 using FourierKernel = std::vector<Eigen::MatrixXd>;
 
-// The memory a kernel's coefficients take, in bytes.
+// The memory a matrix's and a kernel's coefficients take, in bytes.
+std::size_t matrix_bytes(const Eigen::MatrixXd& matrix);
 std::size_t fourier_kernel_bytes(const FourierKernel& kernel);
 
 // Cosine coefficients of even, 2pi-periodic functions from samples at phi_k = k pi / (n - 1), k = 0..n-1:

@@ -21,23 +21,6 @@ Eigen::RowVectorXd flux_weights(const QuadratureRule& q) {
   return w;
 }
 
-// Mode m of a kernel without its multiply scattered part (InterfaceKernel::multiple is mode 0's share,
-// 0 x 0 where there is none).
-Eigen::MatrixXd single_scattering(const FourierKernel& kernel, const Eigen::MatrixXd& multiple, int m) {
-  const Eigen::MatrixXd& mode = kernel[static_cast<std::size_t>(m)];
-  return m == 0 && multiple.size() != 0 ? Eigen::MatrixXd(mode - multiple) : mode;
-}
-
-bool has_multiple(const Eigen::MatrixXd& multiple, int m) { return m == 0 && multiple.size() != 0; }
-
-// The part of mode m of a kernel that the tables carry: all of it, or, where the exact unscattered light replaces
-// its single scattering (`exact`), the multiply scattered part of mode 0; null where nothing is left.
-const Eigen::MatrixXd* carried_by_tables(const FourierKernel& kernel, const Eigen::MatrixXd& multiple, int m,
-                                         bool exact) {
-  if (!exact) return &kernel[static_cast<std::size_t>(m)];
-  return has_multiple(multiple, m) ? &multiple : nullptr;
-}
-
 }  // namespace
 
 StackSolver::StackSolver(const Material& material, const Resolution& resolution,
@@ -115,13 +98,11 @@ StackSolver::StackSolver(const Material& material, const Resolution& resolution,
 
 Eigen::MatrixXd StackSolver::exact_image_at_second(int m) const {
   if (exact_first_ == kTop) {
-    return exact_between_.asDiagonal() * single_scattering(kernels_->t_source, kernels_->t_source_multiple, m);
+    return exact_between_.asDiagonal() * kernels_->t_source.single_scattering(m);
   }
   const std::size_t face = static_cast<std::size_t>(exact_first_);
   const Eigen::VectorXd arriving = beam_amplitude_[face].cwiseProduct(beam_attenuation_[face]);
-  return exact_between_.asDiagonal() *
-         single_scattering(faces_[face]->beam_transmit, faces_[face]->beam_transmit_multiple, m) *
-         arriving.asDiagonal();
+  return exact_between_.asDiagonal() * faces_[face]->beam_transmit.single_scattering(m) * arriving.asDiagonal();
 }
 
 ExitScattering StackSolver::exit_rows(int m, std::size_t slab, double albedo, bool upward) const {
@@ -172,7 +153,7 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
   BoundaryProblem& top = problems.front();
   if (!geometry.top_open) {
     top.reflect_top = kernels_->r_top[m];
-    top.source_top = kernels_->t_source[m];
+    top.source_top = kernels_->t_source.kernel[m];
   }
   BoundaryProblem& last = problems.back();
   const bool beam_at_bottom = beam_at_bottom_.size() != 0;
@@ -195,7 +176,7 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
     if (beam_amplitude_[f].size() != 0) {
       const Eigen::VectorXd arriving = beam_amplitude_[f].cwiseProduct(beam_attenuation_[f]);
       c.source_up = face.beam_reflect[m] * arriving.asDiagonal();
-      c.source_down = face.beam_transmit[m] * arriving.asDiagonal();
+      c.source_down = face.beam_transmit.kernel[m] * arriving.asDiagonal();
     }
   }
 
@@ -206,17 +187,16 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
 
   // Out through the top.
   if (!geometry.top_open) {
-    result.reflection = kernels_->t_exit[m] * field.slabs.front().up_top;
+    result.reflection = kernels_->t_exit.kernel[m] * field.slabs.front().up_top;
     // The top's multiply scattered reflection: smooth, so the tables carry it (brdf_surface is the specular lobe).
-    if (has_multiple(kernels_->r_surface_multiple, m)) result.reflection += kernels_->r_surface_multiple;
+    if (m == 0 && kernels_->r_surface_multiple.size() != 0) result.reflection += kernels_->r_surface_multiple;
   } else {
     // The upward radiance at each slab's bottom face along the exits, from the bottom up.
     Eigen::MatrixXd below;  // at the current slab's bottom
     if (!infinite && geometry.base == LayerBase::Rough) {
       below = kernels_->r_bottom_rows[m] * field.slabs.back().down_bottom;
       const Eigen::MatrixXd* beam_rows =
-          beam_at_bottom ? carried_by_tables(kernels_->r_bottom_beam_rows, kernels_->r_bottom_beam_rows_multiple, m,
-                                             exact_path_ == UnscatteredPath::BottomOnly)
+          beam_at_bottom ? kernels_->r_bottom_beam_rows.carried_by_tables(m, exact_path_ == UnscatteredPath::BottomOnly)
                          : nullptr;
       if (beam_rows != nullptr) below += *beam_rows * beam_at_bottom_.asDiagonal();
     } else if (!infinite && lambert_mode) {
@@ -241,9 +221,7 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
       // The beam's reflection off this interface: UnscatteredLight::brdf when it is the exact path's.
       const bool exact = exact_path_ == UnscatteredPath::BottomOnly && exact_first_ == static_cast<int>(i - 1);
       const Eigen::MatrixXd* rows =
-          beam_amplitude_[i - 1].size() != 0
-              ? carried_by_tables(face.beam_reflect_rows, face.beam_reflect_rows_multiple, m, exact)
-              : nullptr;
+          beam_amplitude_[i - 1].size() != 0 ? face.beam_reflect_rows.carried_by_tables(m, exact) : nullptr;
       if (rows != nullptr) {
         below += *rows * beam_amplitude_[i - 1].cwiseProduct(beam_attenuation_[i - 1]).asDiagonal();
       }
@@ -256,18 +234,17 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
   } else if (geometry.base == LayerBase::Rough) {
     // As for one layer: the light that crossed the interfaces unscattered is on the nodes as the first-pass part
     // of the bottom's downward field; it is UnscatteredLight::btdf when evaluated exactly.
-    const FourierKernel& exit = kernels_->t_bottom_exit;
+    const InterfaceKernel& exit = kernels_->t_bottom_exit;
     if (exact_path_ != UnscatteredPath::TopThenBottom || exact_second_ != kBottom) {
-      result.transmission = exit[m] * field.slabs.back().down_bottom;
-    } else if (has_multiple(kernels_->t_bottom_exit_multiple, m)) {
-      result.transmission = exit[m] * field.slabs.back().down_bottom -
-                            single_scattering(exit, kernels_->t_bottom_exit_multiple, m) * exact_image_at_second(m);
+      result.transmission = exit.kernel[m] * field.slabs.back().down_bottom;
+    } else if (exit.has_multiple(m)) {
+      result.transmission =
+          exit.kernel[m] * field.slabs.back().down_bottom - exit.single_scattering(m) * exact_image_at_second(m);
     } else {
-      result.transmission = exit[m] * (field.slabs.back().down_bottom - exact_image_at_second(m));
+      result.transmission = exit.kernel[m] * (field.slabs.back().down_bottom - exact_image_at_second(m));
     }
     const Eigen::MatrixXd* beam =
-        beam_at_bottom ? carried_by_tables(kernels_->t_bottom_beam, kernels_->t_bottom_beam_multiple, m,
-                                           exact_path_ == UnscatteredPath::BottomOnly)
+        beam_at_bottom ? kernels_->t_bottom_beam.carried_by_tables(m, exact_path_ == UnscatteredPath::BottomOnly)
                        : nullptr;
     if (beam != nullptr) result.transmission += *beam * beam_at_bottom_.asDiagonal();
   } else {
@@ -275,8 +252,8 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
     Eigen::MatrixXd above;
     if (!geometry.top_open) {
       above = kernels_->r_top_rows[m] * field.slabs.front().up_top;
-      const Eigen::MatrixXd* source = carried_by_tables(kernels_->t_source_exterior, kernels_->t_source_exterior_multiple,
-                                                        m, exact_path_ == UnscatteredPath::TopOnly);
+      const Eigen::MatrixXd* source =
+          kernels_->t_source_exterior.carried_by_tables(m, exact_path_ == UnscatteredPath::TopOnly);
       if (source != nullptr) above += *source;
     }
     for (std::size_t i = 0; i < count; ++i) {
@@ -296,18 +273,15 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
       const int position = static_cast<int>(i);
       Eigen::MatrixXd arriving = field.slabs[i].down_bottom;
       const bool second = exact_path_ == UnscatteredPath::TopThenBottom && exact_second_ == position;
-      const bool multiple = has_multiple(face.transmit_down_rows_multiple, m);
+      const bool multiple = face.transmit_down_rows.has_multiple(m);
       if (second && !multiple) arriving -= exact_image_at_second(m);
-      above = face.reflect_below_rows[m] * field.slabs[i + 1].up_top + face.transmit_down_rows[m] * arriving;
+      above = face.reflect_below_rows[m] * field.slabs[i + 1].up_top + face.transmit_down_rows.kernel[m] * arriving;
       if (second && multiple) {
-        above -= single_scattering(face.transmit_down_rows, face.transmit_down_rows_multiple, m) *
-                 exact_image_at_second(m);
+        above -= face.transmit_down_rows.single_scattering(m) * exact_image_at_second(m);
       }
       const bool exact = exact_path_ == UnscatteredPath::BottomOnly && exact_first_ == position;
       const Eigen::MatrixXd* rows =
-          beam_amplitude_[i].size() != 0
-              ? carried_by_tables(face.beam_transmit_rows, face.beam_transmit_rows_multiple, m, exact)
-              : nullptr;
+          beam_amplitude_[i].size() != 0 ? face.beam_transmit_rows.carried_by_tables(m, exact) : nullptr;
       if (rows != nullptr) {
         above += *rows * beam_amplitude_[i].cwiseProduct(beam_attenuation_[i]).asDiagonal();
       }

@@ -7,8 +7,8 @@ namespace skinlayer {
 
 Eigen::MatrixXd bottom_bounce_image(const InterfaceKernels& kernels, const Eigen::VectorXd& attenuation, int m) {
   const auto mode = static_cast<std::size_t>(m);
-  return kernels.t_exit[mode] *
-         (attenuation.asDiagonal() * kernels.r_bottom[mode] * (attenuation.asDiagonal() * kernels.t_source[mode]));
+  return kernels.t_exit.kernel[mode] * (attenuation.asDiagonal() * kernels.r_bottom[mode] *
+                                        (attenuation.asDiagonal() * kernels.t_source.kernel[mode]));
 }
 
 bool bottom_bounce_matters(const Eigen::MatrixXd& image_mode0, std::span<const Eigen::MatrixXd> reflection_mode0,
