@@ -62,7 +62,8 @@ std::size_t InterfaceKernels::bytes() const {
        {&t_source, &t_exit, &t_source_exterior, &t_bottom_exit, &t_bottom_beam, &r_bottom_beam_rows}) {
     total += k->bytes();
   }
-  return total + sizeof(InterfaceAlbedo) * (top_inside.size() + bottom_inside.size());
+  return total + sizeof(InterfaceAlbedo) * (top_inside.size() + bottom_inside.size() + bottom_beam_albedo.size()) +
+         sizeof(InterfaceAlbedoParts) * top_outside.size();
 }
 
 InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates, int max_modes, int interface_azimuths,
@@ -101,11 +102,13 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
       apply_quadrature_weights(k.r_top, up, weights);
     });
   }
-  if (!geometry.top_open) {
+  if (geometry.top_open) {
+    k.top_outside = interface_albedo_parts_along(geometry.top, mu_in, 1.0);  // no interface: R = 0, T = 1, at once
+  } else {
     tasks.emplace_back([&] {
-      k.t_source =
-          matched_interface_kernel(geometry.top, down_in, down, surface, EnergyMatch::TransmittedColumns,
-                                   interface_albedo_parts_along(geometry.top, mu_in, 1.0), up, weights, cancelled);
+      k.top_outside = interface_albedo_parts_along(geometry.top, mu_in, 1.0);
+      k.t_source = matched_interface_kernel(geometry.top, down_in, down, surface, EnergyMatch::TransmittedColumns,
+                                            k.top_outside, up, weights, cancelled);
       if (want_exit) {
         // By reciprocity the exit operator inherits the energy matching of the source columns, row by row.
         k.t_exit = transmission_by_reciprocity(k.t_source, geometry.top.eta);
@@ -148,9 +151,10 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   }
   if (all && rough_bottom && geometry.top_open) {
     tasks.emplace_back([&] {
+      const std::vector<InterfaceAlbedoParts> beam = interface_albedo_parts_along(geometry.bottom, mu_in, 1.0);
+      k.bottom_beam_albedo = totals(beam);
       k.s_bottom_beam = matched_interface_kernel(geometry.bottom, down_in, up, surface, EnergyMatch::ReflectedColumns,
-                                                 interface_albedo_parts_along(geometry.bottom, mu_in, 1.0), up,
-                                                 weights, cancelled)
+                                                 beam, up, weights, cancelled)
                             .kernel;
     });
     if (want_exit) {

@@ -52,6 +52,11 @@ struct InterfaceKernels {
   // Per node, the albedos of the top interface for light travelling up to it and of the bottom interface for light
   // travelling down to it (R = 0, T = 1 where there is no interface): the energy targets of R21 and R23.
   std::vector<InterfaceAlbedo> top_inside, bottom_inside;
+  // Per incident direction (mu_in), the top's albedo parts for the incident light, the energy targets of t_source
+  // (R = 0, T = 1 under an open top), and under an open top the rough bottom's albedos for the beam, those of
+  // s_bottom_beam (empty otherwise): StackSolver::directional_albedo reads them too.
+  std::vector<InterfaceAlbedoParts> top_outside;
+  std::vector<InterfaceAlbedo> bottom_beam_albedo;
   FourierKernel r_top, r_top_rows;
   FourierKernel r_bottom, s_bottom_beam, r_bottom_rows;
   // The kernels whose single scattering the exact unscattered light replaces, with their multiply scattered part of

@@ -307,13 +307,10 @@ std::vector<DirectionalAlbedo> StackSolver::directional_albedo(const ModeResult&
   const auto transmitted = [](const InterfaceAlbedo& a) { return a.transmittance; };
   const auto lost = [](const InterfaceAlbedo& a) { return a.loss(); };
 
-  std::vector<Vec3> incident;
-  for (const double mu : kernels_->mu_in) incident.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, mu);
-  const std::vector<InterfaceAlbedoParts> entries = interface_albedo_parts(geometry.top, incident);
+  // The interfaces' albedos for the incident light, which the kernels were matched to.
+  const std::vector<InterfaceAlbedoParts>& entries = kernels_->top_outside;
   const bool beam_at_bottom = beam_at_bottom_.size() != 0;
-  const std::vector<InterfaceAlbedo> beam_exits = beam_at_bottom && geometry.base == LayerBase::Rough
-                                                      ? interface_albedo(geometry.bottom, incident)
-                                                      : std::vector<InterfaceAlbedo>{};
+  const std::vector<InterfaceAlbedo>& beam_exits = kernels_->bottom_beam_albedo;
   const Eigen::RowVectorXd top_out = along(kernels_->top_inside, transmitted);
   const Eigen::RowVectorXd top_lost = along(kernels_->top_inside, lost);
   const Eigen::RowVectorXd bottom_out = along(kernels_->bottom_inside, transmitted);
