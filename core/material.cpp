@@ -19,6 +19,9 @@ constexpr std::array kParameters = {
     ParameterInfo{"tau", "τb", "optical depth; inf = semi-infinite", 0.0, kInf, 1.6094379124341003},
     ParameterInfo{"albedo", "Ω", "single-scattering albedo", 0.0, 1.0, 1.0},
     ParameterInfo{"g", "g", "Henyey-Greenstein asymmetry", -0.95, 0.95, 0.8},
+    // From a mean free path of 1 km to one of 1 nm: every physical layer, with room for unit slips to show.
+    ParameterInfo{"mu-t", "μt", "extinction coefficient mu_a + mu_s in 1/mm; the thickness is tau/mu_t mm", 1e-6, 1e6,
+                  0.0},
     ParameterInfo{"bottom-sigma", "σ3", "bottom interface Beckmann RMS slope", 0.05, 1.0, 0.5},
     ParameterInfo{"bottom-eta", "η3", "bottom relative index n_layer/n_below (1 = no interface)", 1.0, 2.5, 1.4},
     ParameterInfo{"lambert", "A", "albedo of the Lambertian base", 0.0, 1.0, 0.5},
@@ -87,6 +90,10 @@ void validate(const Material& material) {
     }
   };
   const int layers = material.layer_count();
+  if (material.extinction) {
+    const auto check = [&] { check_parameter(parameter_info("mu-t"), *material.extinction); };
+    layers > 1 ? in_layer(1, check) : check();
+  }
   if (layers > 1 && std::isinf(material.tau)) {
     throw ParameterError("layer 1: tau = inf (T = 0) is allowed only for the last layer of a stack");
   }
@@ -96,6 +103,7 @@ void validate(const Material& material) {
       check_parameter(parameter_info("tau"), layer.tau);
       check_parameter(parameter_info("albedo"), layer.albedo);
       check_parameter(parameter_info("g"), layer.g);
+      if (layer.extinction) check_parameter(parameter_info("mu-t"), *layer.extinction);
       if (layer.interface) {
         check_parameter(parameter_info("sigma"), layer.interface->sigma);
         check_parameter(interface_eta_info(), layer.interface->eta);
@@ -144,8 +152,18 @@ bool differ_only_in_albedos(const Material& a, const Material& b) {
   return without_albedos(a) == without_albedos(b);
 }
 
+std::optional<double> layer_thickness_mm(const StackedLayer& layer) {
+  if (!layer.extinction) return std::nullopt;
+  return std::isinf(layer.tau) ? kInf : layer.tau / *layer.extinction;
+}
+
+std::optional<double> mean_free_path_mm(const Material& material) {
+  if (!material.extinction) return std::nullopt;
+  return 1.0 / *material.extinction;
+}
+
 std::vector<StackedLayer> stack_layers(const Material& material) {
-  std::vector<StackedLayer> layers{{material.tau, material.albedo, material.g, std::nullopt}};
+  std::vector<StackedLayer> layers{{material.tau, material.albedo, material.g, std::nullopt, material.extinction}};
   layers.insert(layers.end(), material.below.begin(), material.below.end());
   return layers;
 }

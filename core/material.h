@@ -50,6 +50,7 @@ struct StackedLayer {
   double albedo = 1.0;                      // single-scattering albedo Omega
   double g = 0.0;                           // Henyey-Greenstein asymmetry
   std::optional<LayerInterface> interface;  // a rough interface above this layer; unset = same index, none
+  std::optional<double> extinction = std::nullopt;  // mu_t = mu_a + mu_s in 1/mm; unset = no physical length
   bool operator==(const StackedLayer&) const = default;
 };
 
@@ -59,6 +60,9 @@ struct Material {
   double tau = 1.6094379124341003;  // optical depth tau_b = -ln T; +infinity = semi-infinite (T = 0). Default T = 0.2
   double albedo = 1.0;     // single-scattering albedo Omega
   double g = 0.8;          // Henyey-Greenstein asymmetry
+  // The first layer's extinction coefficient mu_t = mu_a + mu_s in 1/mm, which gives the material a length: the
+  // layer's thickness is tau / mu_t mm and its mean free path 1 / mu_t mm. Unset = lengths in mean free paths only.
+  std::optional<double> extinction = std::nullopt;
   Bottom bottom;
   std::optional<int> ordinates;  // discrete ordinates per hemisphere; unset = automatic
   // Layers 2..n of a stack, top to bottom; empty = the single layer above. The bottom is under the last one.
@@ -90,6 +94,12 @@ bool differ_only_in_albedos(const Material& a, const Material& b);
 // none), top to bottom.
 std::vector<StackedLayer> stack_layers(const Material& material);
 
+// A layer's thickness in mm, tau / mu_t: +infinity for a semi-infinite layer, unset without an extinction.
+std::optional<double> layer_thickness_mm(const StackedLayer& layer);
+// The length of one mean free path of the first layer, 1 / mu_t in mm; unset without its extinction. Lateral
+// distances (profiles) are measured in this unit when a material has no physical length.
+std::optional<double> mean_free_path_mm(const Material& material);
+
 // T = exp(-tau_b); T = 0 gives tau_b = +infinity.
 double optical_depth_from_transparency(double transparency);
 
@@ -103,7 +113,7 @@ struct ParameterInfo {
   double default_value;
 };
 
-// Every numeric parameter, in display order: sigma, eta, T, tau, albedo, g, bottom-sigma, bottom-eta,
+// Every numeric parameter, in display order: sigma, eta, T, tau, albedo, g, mu-t, bottom-sigma, bottom-eta,
 // lambert albedo, ordinates.
 std::span<const ParameterInfo> parameter_table();
 const ParameterInfo& parameter_info(std::string_view flag);

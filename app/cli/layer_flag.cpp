@@ -14,7 +14,7 @@
 namespace skinlayer::cli {
 namespace {
 
-constexpr std::array<std::string_view, 6> kKeys = {"T", "tau", "albedo", "g", "sigma", "eta"};
+constexpr std::array<std::string_view, 7> kKeys = {"T", "tau", "albedo", "g", "mu_t", "sigma", "eta"};
 constexpr std::string_view kExample = "as in --layer T=0.5,albedo=0.9,g=0.8";
 
 std::string prefix(int place) { return "layer " + std::to_string(place) + ": "; }
@@ -28,7 +28,10 @@ double checked(const ParameterInfo& info, std::string_view key, std::string_view
   try {
     check_parameter(info, *value);
   } catch (const ParameterError& error) {
-    throw ParameterError(prefix(place) + error.what());
+    // The table names the flag ("mu-t"); the message names the key as the layer spells it ("mu_t").
+    std::string message = error.what();
+    if (key != info.flag && message.starts_with(info.flag)) message.replace(0, info.flag.size(), key);
+    throw ParameterError(prefix(place) + message);
   }
   return *value;
 }
@@ -40,12 +43,13 @@ LayerSpec parse_layer_spec(std::string_view text, int place, bool rgb_albedo) {
   for (const std::string_view item : split_list(text, ',')) {
     const std::size_t equals = item.find('=');
     if (item.empty() || equals == std::string_view::npos) {
-      throw UsageError(prefix(place) + quoted(item) + " is not KEY=VALUE; keys are T or tau, albedo, g, sigma, eta, " +
-                       std::string(kExample));
+      throw UsageError(prefix(place) + quoted(item) +
+                       " is not KEY=VALUE; keys are T or tau, albedo, g, mu_t, sigma, eta, " + std::string(kExample));
     }
     const std::string_view key = item.substr(0, equals);
     if (std::find(kKeys.begin(), kKeys.end(), key) == kKeys.end()) {
-      throw UsageError(prefix(place) + "unknown key " + quoted(key) + "; keys are T or tau, albedo, g, sigma, eta");
+      throw UsageError(prefix(place) + "unknown key " + quoted(key) +
+                       "; keys are T or tau, albedo, g, mu_t, sigma, eta");
     }
     if (std::any_of(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == key; })) {
       throw UsageError(prefix(place) + "key " + std::string(key) + " is given more than once");
@@ -86,6 +90,7 @@ LayerSpec parse_layer_spec(std::string_view text, int place, bool rgb_albedo) {
   }
   spec.g = parameter_info("g").default_value;
   if (const auto g = find("g")) spec.g = checked(parameter_info("g"), "g", *g, place);
+  if (const auto mu_t = find("mu_t")) spec.extinction = checked(parameter_info("mu-t"), "mu_t", *mu_t, place);
   const auto sigma = find("sigma"), eta = find("eta");
   if ((sigma || eta) && place == 1) {
     throw UsageError(
@@ -112,6 +117,7 @@ std::string format_layer_spec(const StackedLayer& layer, const AlbedoRgb& albedo
     text.append(":").append(format_shortest(albedo[1])).append(":").append(format_shortest(albedo[2]));
   }
   text.append(",g=").append(format_shortest(layer.g));
+  if (layer.extinction) text.append(",mu_t=").append(format_shortest(*layer.extinction));
   if (layer.interface) {
     text.append(",sigma=").append(format_shortest(layer.interface->sigma));
     text.append(",eta=").append(format_shortest(layer.interface->eta));

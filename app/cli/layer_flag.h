@@ -1,7 +1,8 @@
 // One layer of a stack on the command line (issue 12's contract): --layer KEY=VALUE[,KEY=VALUE...], repeated top
 // to bottom. Keys: T or tau (one of them, required), albedo (a number; r:g:b where the command takes RGB), g, and
 // for every layer but the first, sigma and eta of a rough interface above it (both or neither; eta = n_this /
-// n_above, 1 = no interface). An omitted albedo or g takes its default from core's parameter table.
+// n_above, 1 = no interface), and mu_t, the layer's extinction coefficient in 1/mm (optional; it gives the layer a
+// thickness tau / mu_t mm). An omitted albedo or g takes its default from core's parameter table.
 #pragma once
 
 #include <optional>
@@ -17,6 +18,7 @@ struct LayerSpec {
   AlbedoRgb albedo{};
   double g = 0.0;
   std::optional<LayerInterface> interface;
+  std::optional<double> extinction;  // mu_t, 1/mm
 };
 
 // place: the layer's 1-based place in the order, named by every error ("layer 2: g = 1.5 is out of range; valid
@@ -24,7 +26,7 @@ struct LayerSpec {
 // range, UsageError for anything else malformed.
 LayerSpec parse_layer_spec(std::string_view text, int place, bool rgb_albedo);
 
-// The spec that parse_layer_spec reads back into the same layer ("T=0.5,albedo=0.9,g=0.8[,sigma=..,eta=..]").
+// The spec that parse_layer_spec reads back into the same layer ("T=0.5,albedo=0.9,g=0.8[,mu_t=..][,sigma=..,eta=..]").
 std::string format_layer_spec(const StackedLayer& layer, const AlbedoRgb& albedo);
 
 }  // namespace skinlayer::cli

@@ -21,12 +21,12 @@ namespace {
 // --bottom lambert:A.
 constexpr std::string_view kLambertParameter = "lambert";
 
-constexpr std::array<std::string_view, 12> kMaterialFlags = {
-    "sigma", "eta",        "T",          "tau",       "albedo",     "g",
-    "layer", "bottom",     "bottom-sigma", "bottom-eta", "ordinates", "microfacet",
+constexpr std::array<std::string_view, 13> kMaterialFlags = {
+    "sigma",  "eta",          "T",          "tau",       "albedo",     "g", "mu-t", "layer",
+    "bottom", "bottom-sigma", "bottom-eta", "ordinates", "microfacet",
 };
 // The single layer's own flags, which --layer replaces.
-constexpr std::array<std::string_view, 4> kSingleLayerFlags = {"T", "tau", "albedo", "g"};
+constexpr std::array<std::string_view, 5> kSingleLayerFlags = {"T", "tau", "albedo", "g", "mu-t"};
 constexpr std::array<std::string_view, 2> kSourceFlags = {"material", "preset"};
 
 // The flag's value checked against its row of the parameter table, or nullopt when the flag is absent.
@@ -82,6 +82,8 @@ std::string usage_entry(const ParameterInfo& info) {
   } else if (info.flag == "ordinates") {
     spelling = "--ordinates N";
     body = meaning + ". A whole number. " + range + "; default automatic.";
+  } else if (info.flag == "mu-t") {
+    body = meaning + ". " + range + "; default none\n      (no physical length: lateral distances in mean free paths).";
   }
   return "  " + spelling + "\n      " + body + "\n";
 }
@@ -177,6 +179,7 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
   }
   material.albedo = document.albedo_rgb[0];
   if (const auto value = checked_number(flags, "g")) material.g = *value;
+  if (const auto value = checked_number(flags, "mu-t")) material.extinction = *value;
   const std::vector<std::string_view> layer_specs = flags.values("layer");
   if (!layer_specs.empty()) {
     for (const std::string_view single : kSingleLayerFlags) {
@@ -194,8 +197,9 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
       if (i == 0) {
         material.tau = spec.tau;
         material.g = spec.g;
+        material.extinction = spec.extinction;
       } else {
-        material.below.push_back({spec.tau, spec.albedo[0], spec.g, spec.interface});
+        material.below.push_back({spec.tau, spec.albedo[0], spec.g, spec.interface, spec.extinction});
       }
       document.set_layer_albedo(i, spec.albedo);
     }
@@ -218,8 +222,8 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
     document.skin = parse_skin_spec(*text, document.skin.value_or(SkinParameters{}));
   }
   if (document.skin) {
-    for (const std::string_view layer_flag : {"T", "tau", "albedo", "g", "layer", "bottom", "bottom-sigma",
-                                              "bottom-eta"}) {
+    for (const std::string_view layer_flag :
+         {"T", "tau", "albedo", "g", "mu-t", "layer", "bottom", "bottom-sigma", "bottom-eta"}) {
       if (flags.has(layer_flag)) {
         throw UsageError("flag --" + std::string(layer_flag) +
                          " sets a layer or the bottom, which a skin makes from the chromophores (an epidermis over a"
@@ -256,6 +260,7 @@ std::string material_to_flags(const Material& material) {
         transparency ? " --T " + format_shortest(*transparency) : " --tau " + format_shortest(material.tau);
     text += depth;
     text += " --albedo " + format_shortest(material.albedo) + " --g " + format_shortest(material.g);
+    if (material.extinction) text += " --mu-t " + format_shortest(*material.extinction);
   } else {
     for (const StackedLayer& layer : stack_layers(material)) {
       text += " --layer " + format_layer_spec(layer, {layer.albedo, layer.albedo, layer.albedo});
@@ -292,10 +297,10 @@ std::string material_flags_usage() {
     text += usage_entry(info);
     if (info.flag == "g") {
       text +=
-          "  --layer T=X|tau=X[,albedo=A][,g=G][,sigma=S,eta=E]\n"
-          "      one layer of a stack, repeated top to bottom, in place of --T/--tau, --albedo and --g. Keys range\n"
-          "      as the flags; albedo r:g:b where --albedo takes RGB. sigma and eta (n_this/n_above, range\n"
-          "      " +
+          "  --layer T=X|tau=X[,albedo=A][,g=G][,mu_t=M][,sigma=S,eta=E]\n"
+          "      one layer of a stack, repeated top to bottom, in place of --T/--tau, --albedo, --g and --mu-t.\n"
+          "      Keys range as the flags; albedo r:g:b where --albedo takes RGB. sigma and eta (n_this/n_above,\n"
+          "      range " +
           range_text(interface_eta_info()) +
           ", 1 = none) give a rough interface above the layer, for every layer but the first (both or\n"
           "      neither). Only the last layer may be semi-infinite (T=0). --bottom applies under the last layer.\n";

@@ -110,9 +110,9 @@ void read_layer(const DocumentReader& reader, const Json& layer, std::size_t ind
   const std::string path = "layers[" + std::to_string(index) + "]";
   reader.object(layer, path);
   if (index == 0) {
-    reader.only_keys(layer, path, {"T", "tau", "albedo", "g"});
+    reader.only_keys(layer, path, {"T", "tau", "albedo", "g", "mu_t"});
   } else {
-    reader.only_keys(layer, path, {"T", "tau", "albedo", "g", "interface"});
+    reader.only_keys(layer, path, {"T", "tau", "albedo", "g", "mu_t", "interface"});
   }
   double tau = 0.0;
   AlbedoRgb rgb{};
@@ -142,11 +142,14 @@ void read_layer(const DocumentReader& reader, const Json& layer, std::size_t ind
     rgb = {grey, grey, grey};
   }
   const double g = reader.required_parameter(layer, path, "g", "g");
+  std::optional<double> extinction;
+  if (layer.contains("mu_t")) extinction = reader.parameter(layer["mu_t"], path + ".mu_t", "mu-t");
   if (index == 0) {
     document.layer.tau = tau;
     document.layer.g = g;
+    document.layer.extinction = extinction;
   } else {
-    StackedLayer stacked{tau, rgb[0], g, std::nullopt};
+    StackedLayer stacked{tau, rgb[0], g, std::nullopt, extinction};
     if (layer.contains("interface")) {
       const std::string at = path + ".interface";
       const Json& interface = reader.object(layer["interface"], at);
@@ -221,6 +224,7 @@ Json material_json(const MaterialDocument& document) {
     }
     layer["albedo"] = albedo_json(document.layer_albedo(i));
     layer["g"] = stack[i].g;
+    if (stack[i].extinction) layer["mu_t"] = *stack[i].extinction;
     if (stack[i].interface)
       layer["interface"] = {{"sigma", stack[i].interface->sigma}, {"eta", stack[i].interface->eta}};
     layers.push_back(layer);

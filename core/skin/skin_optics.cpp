@@ -47,10 +47,12 @@ Material skin_material(const SkinParameters& skin, double wavelength_nm, const M
   m.eta = interfaces.eta;
   m.ordinates = interfaces.ordinates;
   m.microfacet = interfaces.microfacet;
-  m.tau = (epidermis.scattering() + epidermis.absorption) * skin.epidermis;
+  m.extinction = epidermis.extinction();
+  m.tau = *m.extinction * skin.epidermis;
   m.albedo = epidermis.albedo();
   m.g = kSkinAnisotropy;
-  m.below = {StackedLayer{std::numeric_limits<double>::infinity(), dermis.albedo(), kSkinAnisotropy, std::nullopt}};
+  m.below = {StackedLayer{std::numeric_limits<double>::infinity(), dermis.albedo(), kSkinAnisotropy, std::nullopt,
+                          dermis.extinction()}};
   m.bottom.kind = BottomKind::Matched;  // under a semi-infinite dermis the bottom is never reached
   return m;
 }

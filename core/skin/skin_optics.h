@@ -37,7 +37,8 @@ struct LayerOptics {
   double absorption = 0.0;                                                            // mu_a, 1/mm
   double reduced_scattering = 0.0;                                                    // mu_s', 1/mm
   double scattering() const { return reduced_scattering / (1.0 - kSkinAnisotropy); }  // mu_s, 1/mm
-  double albedo() const { return scattering() / (scattering() + absorption); }        // Omega
+  double extinction() const { return scattering() + absorption; }                     // mu_t, 1/mm
+  double albedo() const { return scattering() / extinction(); }                       // Omega
 };
 
 double baseline_absorption(double wavelength_nm);     // mu_a,base, 1/mm
@@ -51,7 +52,8 @@ LayerOptics dermis_optics(const SkinParameters& skin, double wavelength_nm);
 
 // The skin at one wavelength as a layered Material: the top interface (sigma, eta), its microfacet model and the
 // ordinates from `interfaces`; the epidermis as the first layer and the dermis semi-infinite under it, with no
-// interface between them, both with g = kSkinAnisotropy.
+// interface between them, both with g = kSkinAnisotropy and their extinction mu_t (so the epidermis is
+// skin.epidermis mm thick).
 Material skin_material(const SkinParameters& skin, double wavelength_nm, const Material& interfaces = {});
 
 // The wavelengths from..to (inclusive) in steps of step nm.

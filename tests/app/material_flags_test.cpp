@@ -52,7 +52,10 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFlag{{"--bottom", "lambert:1.1"}, {"lambert = ", "valid range is [0, 1]"}},
                       BadFlag{{"--bottom", "lambert:-0.1"}, {"lambert = ", "valid range is [0, 1]"}},
                       BadFlag{{"--ordinates", "3"}, {"ordinates = ", "valid range is [4, 256]"}},
-                      BadFlag{{"--ordinates", "257"}, {"ordinates = ", "valid range is [4, 256]"}}));
+                      BadFlag{{"--ordinates", "257"}, {"ordinates = ", "valid range is [4, 256]"}},
+                      BadFlag{{"--mu-t", "0"}, {"mu-t = ", "valid range is [1e-06, 1000000]", "1/mm"}},
+                      BadFlag{{"--mu-t", "-4"}, {"mu-t = ", "valid range is [1e-06, 1000000]"}},
+                      BadFlag{{"--mu-t", "2e6"}, {"mu-t = ", "valid range is [1e-06, 1000000]"}}));
 
 class CliFlagNotANumber : public ::testing::TestWithParam<BadFlag> {};
 

@@ -86,8 +86,10 @@ TEST(StackCommands, AlbedoAddsEachLayersAbsorptanceAfterTheColumnsItHad) {
 
 TEST(StackCommands, AStackWrittenToAFileEvaluatesBitForBitLikeItsFlags) {
   const fs::path file = fs::temp_directory_path() / ("skinlayer_stack_" + std::to_string(::getpid()) + ".json");
-  const std::vector<std::string> flags = {"--sigma",  "0.3",  "--layer", "T=0.6,albedo=0.95,g=0.8", "--layer",
-                                          "tau=2,albedo=0.8,g=0.1,sigma=0.5,eta=0.9", "--bottom", "matched"};
+  const std::vector<std::string> flags = {"--sigma",  "0.3",
+                                          "--layer",  "T=0.6,albedo=0.95,g=0.8,mu_t=15",
+                                          "--layer",  "tau=2,albedo=0.8,g=0.1,sigma=0.5,eta=0.9",
+                                          "--bottom", "matched"};
   std::vector<std::string> write = {"material", "-o", file.string()};
   write.insert(write.end(), flags.begin(), flags.end());
   ASSERT_EQ(run_skinlayer(write).exit_code, 0);
@@ -109,7 +111,10 @@ TEST(StackCommands, BadLayersAreOneLineNamingThePlaceTheKeyAndTheRange) {
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", good, "--layer", "T=0.5,sigma=0.3,eta=3"}), 2,
                                    {"layer 2", "eta = 3", "[0.4, 2.5]"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", good, "--layer", "albedo=0.5"}), 2, {"layer 2", "T", "tau"}));
-  EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,colour=red"}), 2, {"layer 1", "colour"}));
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,colour=red"}), 2, {"layer 1", "colour", "mu_t"}));
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", good, "--layer", "T=0.5,mu_t=-1"}), 2,
+                                   {"layer 2", "mu_t = -1", "[1e-06, 1000000]", "1/mm"}));
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,mu_t=ten"}), 2, {"layer 1", "mu_t", "ten"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,albedo=x"}), 2, {"layer 1", "albedo", "x"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,albedo=0.9:0.8"}), 2, {"layer 1", "r:g:b"}));
   EXPECT_TRUE(failed_with_one_line(eval_with({"--layer", "T=0.5,albedo=0.9:0.8:1.7"}), 2,
@@ -124,7 +129,7 @@ TEST(StackCommands, BadLayersAreOneLineNamingThePlaceTheKeyAndTheRange) {
 // alone (--albedo 0.5 would leave the layers below RGB), so they are refused with the stack's own --layer flags, which
 // give the same material back.
 TEST(StackCommands, SingleLayerFlagsOnAStackAreRefusedWithItsLayerFlags) {
-  for (const std::string flag : {"--albedo", "--T", "--tau", "--g"}) {
+  for (const std::string flag : {"--albedo", "--T", "--tau", "--g", "--mu-t"}) {
     EXPECT_TRUE(failed_with_one_line(eval_with({"--preset", "skin-two-layer", flag, "0.5"}), 2,
                                      {flag, "skin-two-layer", "stack of 2 layers", "--layer"}));
   }

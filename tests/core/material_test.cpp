@@ -60,6 +60,9 @@ TEST(Material, EveryOutOfRangeFieldIsNamedWithItsRange) {
       {"bottom-sigma", [](Material& m, double v) { m.bottom.sigma = v; }, 2.0},
       {"bottom-eta", [](Material& m, double v) { m.bottom.eta = v; }, 0.5},
       {"ordinates", [](Material& m, double v) { m.ordinates = static_cast<int>(v); }, 2.0},
+      {"mu-t", [](Material& m, double v) { m.extinction = v; }, 0.0},
+      {"mu-t", [](Material& m, double v) { m.extinction = v; }, -2.0},
+      {"mu-t", [](Material& m, double v) { m.extinction = v; }, nan},
   };
   for (const Case& c : cases) {
     Material m;
@@ -71,6 +74,27 @@ TEST(Material, EveryOutOfRangeFieldIsNamedWithItsRange) {
   Material lambert;
   lambert.bottom = {BottomKind::Lambert, {}, {}, 1.5};
   EXPECT_NE(error_of(lambert).find("lambert"), std::string::npos);
+}
+
+// A layer with an extinction coefficient has a length: tau / mu_t mm thick, 1 / mu_t mm per mean free path.
+TEST(Material, ExtinctionGivesEachLayerItsThickness) {
+  Material m;
+  EXPECT_FALSE(mean_free_path_mm(m).has_value());
+  EXPECT_FALSE(layer_thickness_mm(stack_layers(m)[0]).has_value());
+  m.tau = 2.0;
+  m.extinction = 20.0;  // 1/mm: a mean free path of 50 um, so tau 2 is 0.1 mm
+  m.below = {StackedLayer{3.0, 0.9, 0.5, std::nullopt, 6.0},
+             StackedLayer{std::numeric_limits<double>::infinity(), 0.9, 0.5, std::nullopt, 2.0}};
+  EXPECT_EQ(error_of(m), "");
+  EXPECT_DOUBLE_EQ(*mean_free_path_mm(m), 0.05);
+  const std::vector<StackedLayer> layers = stack_layers(m);
+  EXPECT_DOUBLE_EQ(*layer_thickness_mm(layers[0]), 0.1);
+  EXPECT_DOUBLE_EQ(*layer_thickness_mm(layers[1]), 0.5);
+  EXPECT_TRUE(std::isinf(*layer_thickness_mm(layers[2])));
+  // A stacked layer's bad extinction is named with its place.
+  m.below[0].extinction = -1.0;
+  const std::string message = error_of(m);
+  EXPECT_EQ(message.rfind("layer 2: mu-t = -1 is out of range; valid range is [1e-06, 1000000]", 0), 0u) << message;
 }
 
 TEST(Material, TransparencyMapsToOpticalDepth) {

@@ -26,6 +26,16 @@ def test_a_stack_from_dicts_equals_the_same_stack_from_layer_strings():
     assert len(from_dicts.to_dict()["layers"]) == 2
 
 
+def test_mu_t_gives_a_layer_its_length_in_every_spelling():
+    single = skinlayer.Material(tau=2.0, mu_t=20.0)
+    assert single.to_dict()["layers"][0]["mu_t"] == 20.0
+    stack = skinlayer.Material(layers=[{"tau": 0.5, "albedo": 0.9, "g": 0.8, "mu_t": 12.5},
+                                       {"T": 0, "albedo": 0.99, "g": 0.7, "mu_t": 3}])
+    layers = stack.to_dict()["layers"]
+    assert [layer["mu_t"] for layer in layers] == [12.5, 3.0]
+    assert "mu_t" not in skinlayer.Material().to_dict()["layers"][0]
+
+
 @pytest.mark.parametrize("flags, arguments", [
     ({"sigma": 5}, ["--sigma", "5"]),
     ({"T": 1.5}, ["--T", "1.5"]),
@@ -37,6 +47,8 @@ def test_a_stack_from_dicts_equals_the_same_stack_from_layer_strings():
     ({"bottom": "matched", "bottom_sigma": 0.3}, ["--bottom", "matched", "--bottom-sigma", "0.3"]),
     ({"layers": [{"T": 0.5, "g": 2}]}, ["--layer", "T=0.5,g=2.0"]),
     ({"skin": {"blood": 0.9}}, ["--skin", "blood=0.9"]),
+    ({"mu_t": -1}, ["--mu-t", "-1"]),
+    ({"layers": [{"T": 0.5, "mu_t": 0}]}, ["--layer", "T=0.5,mu_t=0"]),
 ])
 def test_a_bad_parameter_raises_value_error_with_the_command_lines_message(flags, arguments):
     with pytest.raises(ValueError) as raised:

@@ -47,9 +47,9 @@ except ImportError as _mismatch:
 __all__ = ["Material", "Solution", "solve", "presets"]
 
 # Keyword -> flag, for Material(**flags). Underscores become dashes; layers is the repeated --layer.
-_MATERIAL_FLAGS = ("sigma", "eta", "T", "tau", "albedo", "g", "layers", "bottom", "bottom_sigma", "bottom_eta",
+_MATERIAL_FLAGS = ("sigma", "eta", "T", "tau", "albedo", "g", "mu_t", "layers", "bottom", "bottom_sigma", "bottom_eta",
                    "ordinates", "skin")
-_LAYER_KEYS = ("T", "tau", "albedo", "g", "sigma", "eta")
+_LAYER_KEYS = ("T", "tau", "albedo", "g", "mu_t", "sigma", "eta")
 
 
 def _number_text(name, value):
@@ -72,7 +72,8 @@ def _albedo_text(name, value, separator):
 
 
 def _layer_text(index, layer):
-    """One --layer value: a string as the command line takes it, or a dict with keys T|tau, albedo, g, sigma, eta."""
+    """One --layer value: a string as the command line takes it, or a dict with keys T|tau, albedo, g, mu_t, sigma,
+    eta."""
     if isinstance(layer, str):
         return layer
     if not isinstance(layer, dict):
@@ -142,8 +143,10 @@ class Material:
                         semi-infinite)
       albedo            the single-scattering albedo: a number, or (r, g, b)
       g                 the Henyey-Greenstein asymmetry
-      layers            a stack, top to bottom, in place of T/tau, albedo and g: a list of dicts with keys
-                        T|tau, albedo (a number or (r, g, b)), g, and for every layer but the first sigma and eta
+      mu_t              the layer's extinction coefficient mu_a + mu_s in 1/mm, which gives it a length: its
+                        thickness is tau / mu_t mm (default none: lengths in mean free paths)
+      layers            a stack, top to bottom, in place of T/tau, albedo, g and mu_t: a list of dicts with keys
+                        T|tau, albedo (a number or (r, g, b)), g, mu_t, and for every layer but the first sigma and eta
                         (the interface above it); or of strings as --layer takes them, "T=0.5,albedo=0.9,g=0.8"
       bottom            "air" (a rough interface), "matched" (an index-matched half-space) or "lambert:A"
       bottom_sigma, bottom_eta   the bottom interface's roughness and index (bottom="air" only)

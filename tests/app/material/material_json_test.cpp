@@ -28,6 +28,7 @@ void expect_same(const MaterialDocument& a, const MaterialDocument& b) {
   EXPECT_EQ(a.layer.bottom_eta(), b.layer.bottom_eta());
   EXPECT_EQ(a.layer.bottom.lambert_albedo, b.layer.bottom.lambert_albedo);
   EXPECT_EQ(a.layer.ordinates, b.layer.ordinates);
+  EXPECT_EQ(a.layer.extinction, b.layer.extinction);
   EXPECT_EQ(a.albedo_rgb, b.albedo_rgb);
   EXPECT_EQ(a.layer.below, b.layer.below);
   EXPECT_EQ(a.below_rgb, b.below_rgb);
@@ -35,7 +36,12 @@ void expect_same(const MaterialDocument& a, const MaterialDocument& b) {
 }
 
 std::vector<MaterialDocument> assorted_documents() {
-  std::vector<MaterialDocument> documents(9);
+  std::vector<MaterialDocument> documents(10);
+  // Physical lengths: the first layer's extinction, and a stacked layer's beside one without.
+  documents[9].layer.extinction = 0.1 * 3;
+  documents[9].layer.below = {{0.5, 1.0, 0.3, std::nullopt, 7.25}, {INFINITY, 1.0, 0.6, std::nullopt, std::nullopt}};
+  documents[9].set_layer_albedo(1, {1.0, 1.0, 1.0});
+  documents[9].set_layer_albedo(2, {1.0, 1.0, 1.0});
   // Stacks: RGB per layer, an interface between layers, a semi-infinite last layer, a depth no T reads back.
   documents[7].layer.below = {{0.1, 1.0, 0.3, LayerInterface{0.25, 0.8}}, {INFINITY, 1.0, -0.2, std::nullopt}};
   documents[7].set_layer_albedo(1, {0.9, 0.8, 0.7});
@@ -76,6 +82,12 @@ TEST(MaterialJson, WhatIsWrittenReadsBackBitForBit) {
   EXPECT_FALSE(stack["layers"][0].contains("interface"));
   EXPECT_EQ(stack["layers"][1]["interface"]["eta"], 0.8);
   EXPECT_EQ(stack["layers"][2]["T"], 0.0);
+  // A layer's extinction is its "mu_t"; a layer without one has no such key.
+  const nlohmann::ordered_json lengths = material_json(documents[9]);
+  EXPECT_EQ(lengths["layers"][0]["mu_t"], 0.1 * 3);
+  EXPECT_EQ(lengths["layers"][1]["mu_t"], 7.25);
+  EXPECT_FALSE(lengths["layers"][2].contains("mu_t"));
+  EXPECT_FALSE(material_json(documents[0])["layers"][0].contains("mu_t"));
 }
 
 // A skin material: its "skin" block in place of the layers and the bottom, every parameter explicit.
@@ -182,6 +194,9 @@ TEST(MaterialJson, EachKindOfErrorIsOneLineNamingTheFileAndTheKey) {
       {valid_with("\"version\": 1,", "\"version\": 1, \"na\\nme\": 3,"), {"unknown key \"na?me\"", "layers"}},
       {valid_with("\"g\": 0.8", "\"g\": \"0.8\""), {"bad.json", "\"layers[0].g\"", "must be a number", "a string"}},
       {valid_with("\"g\": 0.8", "\"g\": 1.2"), {"bad.json", "\"layers[0].g\"", "out of range", "[-0.95, 0.95]"}},
+      {valid_with("\"g\": 0.8", "\"g\": 0.8, \"mu_t\": -3"),
+       {"bad.json", "\"layers[0].mu_t\"", "out of range", "[1e-06, 1000000]", "1/mm"}},
+      {valid_with("\"g\": 0.8", "\"g\": 0.8, \"mu_t\": \"12 /mm\""), {"\"layers[0].mu_t\"", "must be a number"}},
       {valid_with(", \"g\": 0.8", ""), {"bad.json", "\"layers[0].g\"", "missing"}},
       {valid_with("\"T\": 0.2, ", ""), {"\"layers[0].T\"", "missing", "tau"}},
       {valid_with("\"T\": 0.2", "\"T\": 0.2, \"tau\": 1"), {"\"layers[0]\"", "both"}},

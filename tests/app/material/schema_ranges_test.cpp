@@ -31,6 +31,7 @@ TEST(MaterialSchema, RangesAreCoresParameterTable) {
   expect_range(layer["tau"]["oneOf"][0], "tau");
   expect_range(schema["$defs"]["albedo"], "albedo");
   expect_range(layer["g"], "g");
+  expect_range(layer["mu_t"], "mu-t");
   const nlohmann::json& air = schema["properties"]["bottom"]["oneOf"][0]["properties"];
   expect_range(air["sigma"], "bottom-sigma");
   expect_range(air["eta"], "bottom-eta");

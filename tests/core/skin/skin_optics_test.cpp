@@ -48,6 +48,10 @@ TEST(SkinOptics, LayerPropertiesMatchHandComputations) {
   EXPECT_TRUE(std::isinf(m.below[0].tau));
   EXPECT_FALSE(m.below[0].interface.has_value());
   EXPECT_NEAR(skin_material(skin, 600).below[0].albedo, 0.99718091, 1e-7);
+  // Each layer carries its extinction mu_a + mu_s, so the epidermis is the parameter's 60 um thick.
+  EXPECT_NEAR(*m.extinction, 1.904217 + 38.81961, 2e-4);
+  EXPECT_NEAR(*layer_thickness_mm(stack_layers(m)[0]), skin.epidermis, 1e-15);
+  EXPECT_NEAR(*skin_material(skin, 600).below[0].extinction, 0.0505942 + 17.89641, 2e-4);
   SkinParameters doubled = skin;
   doubled.scattering = 2.0;
   EXPECT_NEAR(epidermis_optics(doubled, 450).scattering(), 2.0 * epidermis.scattering(), 1e-12);
