@@ -22,6 +22,8 @@ double AngularBin::projected_solid_angle() const {
   return 0.5 * (phi_max - phi_min) * (s1 * s1 - s0 * s0);
 }
 
+double RadialBin::area() const { return kPi * (r_max * r_max - r_min * r_min); }
+
 namespace {
 
 using Rng = std::mt19937_64;
@@ -51,7 +53,7 @@ struct Moments {
 
 struct Tallies {
   Moments surface, subsurface, transmitted, direct;
-  std::vector<Moments> bins;
+  std::vector<Moments> bins, radial;
   std::uint64_t truncated = 0;
   void merge(const Tallies& other) {
     surface.merge(other.surface);
@@ -59,6 +61,7 @@ struct Tallies {
     transmitted.merge(other.transmitted);
     direct.merge(other.direct);
     for (std::size_t b = 0; b < bins.size(); ++b) bins[b].merge(other.bins[b]);
+    for (std::size_t b = 0; b < radial.size(); ++b) radial[b].merge(other.radial[b]);
     truncated += other.truncated;
   }
 };
@@ -148,21 +151,38 @@ bool phi_in_range(double phi, double lo, double hi) {
 struct WalkLayer {
   double top = 0.0, bottom = 0.0;  // bottom = +infinity for a semi-infinite last layer
   double albedo = 1.0, g = 0.0;
+  double length = 1.0;  // lateral length per unit optical path: 1 / mu_t mm, or 1 (mean free paths)
   // The rough interface above the layer (none for the first, or eta = 1): eta = n_this / n_above.
   bool interface_above = false;
   double eta_above = 1.0, sigma_above = 0.5;
 };
 
+// Where the photon is on the top face's plane, in the result's length unit.
+struct Lateral {
+  double x = 0.0, y = 0.0;
+  void move(const Vec3& d, double optical_path, double length) {
+    x += d.x() * optical_path * length;
+    y += d.y() * optical_path * length;
+  }
+  double radius() const { return std::hypot(x, y); }
+};
+
 class Walker {
  public:
-  Walker(const Material& material, double theta_i, std::span<const AngularBin> bins)
-      : m_(material), bins_(bins), omega_i_(std::sin(theta_i), 0.0, std::cos(theta_i)) {
+  Walker(const Material& material, double theta_i, std::span<const AngularBin> bins, std::span<const RadialBin> radial,
+         std::uint64_t max_order)
+      : m_(material),
+        bins_(bins),
+        radial_(radial),
+        max_order_(max_order),
+        omega_i_(std::sin(theta_i), 0.0, std::cos(theta_i)) {
     top_present_ = material.eta != 1.0;
     eta_b_ = material.bottom_eta();
     sigma_b_ = material.bottom_sigma();
     double depth = 0.0;
     for (const StackedLayer& layer : stack_layers(material)) {
-      WalkLayer walk{depth, depth + layer.tau, layer.albedo, layer.g, false, 1.0, 0.5};
+      WalkLayer walk{depth, depth + layer.tau, layer.albedo, layer.g, 1.0 / layer.extinction.value_or(1.0), false, 1.0,
+                     0.5};
       if (layer.interface && layer.interface->eta != 1.0) {
         walk.interface_above = true;
         walk.eta_above = layer.interface->eta;
@@ -176,6 +196,8 @@ class Walker {
 
   void trace(Rng& rng, Tallies& tallies) const {
     double weight = 1.0;
+    std::uint64_t collisions = 0;
+    Lateral at;
     bool scattered = false;
     bool refracted = false;
     Vec3 d;
@@ -205,6 +227,7 @@ class Walker {
       const WalkLayer& here = layers_[layer];
       if (d.z() < 0.0 && tau_new >= here.bottom && layer + 1 < layers_.size()) {
         // Reaches the next slab down. The free path is memoryless, so the walk restarts at the face.
+        at.move(d, (here.bottom - tau) / -d.z(), here.length);
         tau = here.bottom;
         const WalkLayer& below = layers_[layer + 1];
         if (below.interface_above) {
@@ -217,6 +240,7 @@ class Walker {
         }
         ++layer;
       } else if (d.z() > 0.0 && tau_new <= here.top && layer > 0) {  // reaches the next slab up
+        at.move(d, (tau - here.top) / d.z(), here.length);
         tau = here.top;
         if (here.interface_above) {
           const Crossing c =
@@ -229,14 +253,15 @@ class Walker {
         }
         --layer;
       } else if (d.z() < 0.0 && tau_new >= tau_b_) {  // reaches the bottom
+        at.move(d, (tau_b_ - tau) / -d.z(), here.length);
         tau = tau_b_;
         switch (m_.bottom.kind) {
           case BottomKind::Matched:
-            exit_bottom(tallies, d, weight, !scattered && !refracted);
+            exit_bottom(tallies, d, weight, !scattered && !refracted, at);
             return;
           case BottomKind::Air: {
             if (eta_b_ == 1.0) {
-              exit_bottom(tallies, d, weight, !scattered && !refracted);
+              exit_bottom(tallies, d, weight, !scattered && !refracted, at);
               return;
             }
             const Crossing c = cross_rough_interface(-d, 1.0 / eta_b_, sigma_b_, m_.microfacet, rng);
@@ -247,7 +272,7 @@ class Walker {
               d = c.wo;
               break;
             }
-            exit_bottom(tallies, c.wo, weight, false);
+            exit_bottom(tallies, c.wo, weight, false, at);
             return;
           }
           case BottomKind::Lambert:
@@ -258,9 +283,10 @@ class Walker {
             break;
         }
       } else if (d.z() > 0.0 && tau_new <= 0.0) {  // reaches the top from inside
+        at.move(d, tau / d.z(), here.length);
         tau = 0.0;
         if (!top_present_) {
-          exit_top(tallies, d, weight);
+          exit_top(tallies, d, weight, at);
           return;
         }
         const Crossing c = cross_rough_interface(flip_z(-d), 1.0 / m_.eta, m_.sigma, m_.microfacet, rng);
@@ -270,11 +296,13 @@ class Walker {
         if (c.reflected) {
           d = wo;  // back down into the layer
         } else {
-          exit_top(tallies, wo, weight);
+          exit_top(tallies, wo, weight, at);
           return;
         }
       } else {  // collision inside the medium
+        at.move(d, s, here.length);
         tau = tau_new;
+        if (max_order_ != 0 && ++collisions > max_order_) return;
         weight *= here.albedo;
         if (weight <= 0.0) return;
         if (weight < kRouletteThreshold) {
@@ -291,17 +319,27 @@ class Walker {
   static constexpr double kRouletteThreshold = 0.05;
   static constexpr double kRouletteSurvival = 0.2;
 
-  void exit_top(Tallies& tallies, const Vec3& wo, double weight) const {
+  void exit_top(Tallies& tallies, const Vec3& wo, double weight, const Lateral& at) const {
     tallies.subsurface.add(weight);
     tally_bins(tallies, ExitSide::Reflected, wo, weight);
+    tally_radial(tallies, ExitSide::Reflected, at, weight);
   }
-  void exit_bottom(Tallies& tallies, const Vec3& wo, double weight, bool direct) const {
+  void exit_bottom(Tallies& tallies, const Vec3& wo, double weight, bool direct, const Lateral& at) const {
     tallies.transmitted.add(weight);
     if (direct) {
       tallies.direct.add(weight);
-      return;  // a delta: belongs to no BTDF bin
+      return;  // a delta: belongs to no BTDF bin and no annulus
     }
     tally_bins(tallies, ExitSide::Transmitted, wo, weight);
+    tally_radial(tallies, ExitSide::Transmitted, at, weight);
+  }
+  void tally_radial(Tallies& tallies, ExitSide side, const Lateral& at, double weight) const {
+    if (radial_.empty()) return;
+    const double r = at.radius();
+    for (std::size_t b = 0; b < radial_.size(); ++b) {
+      const RadialBin& bin = radial_[b];
+      if (bin.side == side && r >= bin.r_min && r < bin.r_max) tallies.radial[b].add(weight);
+    }
   }
   // wo points away from the surface on its exit side.
   void tally_bins(Tallies& tallies, ExitSide side, const Vec3& wo, double weight) const {
@@ -320,6 +358,8 @@ class Walker {
 
   const Material& m_;
   std::span<const AngularBin> bins_;
+  std::span<const RadialBin> radial_;
+  std::uint64_t max_order_ = 0;
   Vec3 omega_i_;
   bool top_present_ = true;
   double eta_b_ = 1.0;
@@ -331,7 +371,7 @@ class Walker {
 }  // namespace
 
 MonteCarloResult simulate_layer(const Material& material, double theta_i, std::span<const AngularBin> bins,
-                                const MonteCarloOptions& options) {
+                                const MonteCarloOptions& options, std::span<const RadialBin> radial_bins) {
   validate(material);
   if (!(theta_i >= 0.0 && theta_i < 0.5 * kPi))
     throw ParameterError("theta_i = " + std::to_string(theta_i) + " is out of range; valid range is [0, pi/2)");
@@ -342,11 +382,26 @@ MonteCarloResult simulate_layer(const Material& material, double theta_i, std::s
           bin.phi_max > bin.phi_min && bin.phi_max - bin.phi_min <= 2.0 * kPi + 1e-12))
       throw ParameterError("Monte Carlo angular bin is empty or out of range");
   }
+  for (const RadialBin& bin : radial_bins) {
+    if (!(bin.r_min >= 0.0 && bin.r_max > bin.r_min)) throw ParameterError("Monte Carlo annulus is empty or negative");
+  }
+  const std::vector<StackedLayer> layers = stack_layers(material);
+  const auto with_length =
+      std::ranges::count_if(layers, [](const StackedLayer& l) { return l.extinction.has_value(); });
+  const bool lengths_in_mm = with_length == static_cast<std::ptrdiff_t>(layers.size());
+  if (!radial_bins.empty() && !lengths_in_mm && layers.size() > 1) {
+    throw ParameterError("exit positions of a stack need every layer's extinction mu_t (1/mm); " +
+                         std::to_string(layers.size() - static_cast<std::size_t>(with_length)) + " of its " +
+                         std::to_string(layers.size()) + " layers have none");
+  }
 
-  const Walker walker(material, theta_i, bins);
+  const Walker walker(material, theta_i, bins, radial_bins, options.max_scattering_order);
   const auto thread_count = static_cast<std::uint64_t>(options.threads);
   std::vector<Tallies> tallies(thread_count);
-  for (Tallies& t : tallies) t.bins.assign(bins.size(), Moments{});
+  for (Tallies& t : tallies) {
+    t.bins.assign(bins.size(), Moments{});
+    t.radial.assign(radial_bins.size(), Moments{});
+  }
   std::atomic<std::uint64_t> done{0};
   constexpr std::uint64_t kChunk = 4096;
 
@@ -386,6 +441,9 @@ MonteCarloResult simulate_layer(const Material& material, double theta_i, std::s
   result.bins.reserve(bins.size());
   for (std::size_t b = 0; b < bins.size(); ++b)
     result.bins.push_back(total.bins[b].estimate(n, 1.0 / bins[b].projected_solid_angle()));
+  result.lengths_in_mm = lengths_in_mm;
+  for (std::size_t b = 0; b < radial_bins.size(); ++b)
+    result.radial_bins.push_back(total.radial[b].estimate(n, 1.0 / radial_bins[b].area()));
   return result;
 }
 

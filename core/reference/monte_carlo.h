@@ -36,6 +36,12 @@
 //
 // Tallies are by exit direction, in the graphics convention of core/conventions.h: theta_o from the normal of the
 // exit side, phi = phi_o - phi_i in [0, 2 pi), phi = pi forward (mirror / straight through).
+//
+// Exit positions (RadialBin): the photon enters at the origin of the top face and its lateral position (x, y) moves
+// by s (d_x, d_y) / mu_t for a free path of optical length s in a layer of extinction mu_t; crossings of interfaces
+// and the Lambertian base happen at a point. Radii are in mm when every layer has its extinction (mu_t, 1/mm), and in
+// mean free paths when a single layer has none (mu_t = 1). Light reflected before it entered (at r = 0) and the
+// direct beam are in no annulus, as they are in no angular bin.
 #pragma once
 
 #include <cstdint>
@@ -63,10 +69,21 @@ struct AngularBin {
   double projected_solid_angle() const;
 };
 
+// An annulus of exit positions on one side: r in [r_min, r_max), in the result's length unit (mm, or mean free paths).
+struct RadialBin {
+  ExitSide side = ExitSide::Reflected;
+  double r_min = 0.0;
+  double r_max = 0.0;
+  double area() const;  // pi (r_max^2 - r_min^2)
+};
+
 struct MonteCarloOptions {
   std::uint64_t paths = 100000;
   std::uint64_t seed = 1;
   int threads = 2;
+  // A photon is dropped at its collision number max_scattering_order + 1 (0: never), so that the tallies hold the
+  // light scattered at most that often (1: single scattering, a closed form's reference).
+  std::uint64_t max_scattering_order = 0;
   // Called now and then from the calling thread with the number of paths finished so far (optional).
   std::function<void(std::uint64_t)> progress;
 };
@@ -86,13 +103,18 @@ struct MonteCarloResult {
   //   (sum of exit weights in the bin) / (paths * projected_solid_angle).
   // Reflected bins contain surface and subsurface reflection.
   std::vector<MonteCarloEstimate> bins;
+  // Per caller annulus: the light leaving through it per unit area and unit incident power,
+  //   (sum of exit weights in the annulus) / (paths * area),   in 1/mm^2 (or 1/mfp^2, see lengths_in_mm).
+  std::vector<MonteCarloEstimate> radial_bins;
+  bool lengths_in_mm = false;  // radii in mm (every layer has mu_t); false: mean free paths of the single layer
   std::uint64_t paths = 0;
   std::uint64_t truncated_paths = 0;  // paths cut at kMaxEventsPerPath
 };
 
 // Traces options.paths photons incident at theta_i (radians, from +z, phi_i = 0). Throws ParameterError for an
-// invalid material, theta_i outside [0, pi/2), an inverted bin, or zero paths/threads.
+// invalid material, theta_i outside [0, pi/2), an inverted bin or annulus, zero paths/threads, or annuli asked of a
+// stack whose layers do not all have their extinction.
 MonteCarloResult simulate_layer(const Material& material, double theta_i, std::span<const AngularBin> bins,
-                                const MonteCarloOptions& options);
+                                const MonteCarloOptions& options, std::span<const RadialBin> radial_bins = {});
 
 }  // namespace skinlayer
