@@ -1,0 +1,187 @@
+// docs/model.md §21: the discrete-ordinate system of one lateral spatial frequency, its eigen-solution and the
+// open layer's boundary conditions.
+#include "core/spatial/lateral_frequency_response.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <stdexcept>
+#include <string>
+
+#include "core/conventions.h"
+#include "core/medium/henyey_greenstein.h"
+#include "core/series/fourier.h"
+#include "core/series/quadrature.h"
+
+namespace skinlayer {
+namespace {
+
+// The state: cosine modes m of I = sum_m i^m a_m(tau, mu) cos(m phi), each at the nodes down (+mu_j) then up
+// (-mu_j). With the factor i^m the k.s term couples the modes with real coefficients (§21.2).
+struct Layout {
+  int nodes = 0;  // N
+  int modes = 0;  // M
+  int size() const { return 2 * nodes * modes; }
+  int at(int m, int up, int j) const { return (m * 2 + up) * nodes + j; }
+};
+
+void check(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument("open_layer_lateral_response: " + message);
+}
+
+}  // namespace
+
+LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
+                                                     const LateralFrequencyResolution& resolution) {
+  check(tau >= 0.0, "tau must be >= 0 (+inf: semi-infinite)");
+  check(albedo >= 0.0 && albedo < 1.0, "albedo must be in [0, 1)");
+  check(std::abs(g) <= 0.95, "g must be in [-0.95, 0.95]");
+  check(k >= 0.0 && std::isfinite(k), "k must be finite and >= 0");
+  check(resolution.ordinates >= 2 && resolution.azimuth_modes >= 1, "resolution needs >= 2 ordinates and >= 1 mode");
+  if (tau == 0.0) return {};
+
+  const QuadratureRule q = double_gauss_half_range(resolution.ordinates);
+  const Layout layout{resolution.ordinates, resolution.azimuth_modes};
+  const int N = layout.nodes, M = layout.modes, n = layout.size();
+  const bool semi_infinite = std::isinf(tau);
+
+  // Phase matrices per mode (mode 0 renormalized to conserve energy on the nodes), projected as the BSDF's are.
+  const double forwardness = 1.0 - std::abs(g);
+  const int azimuths = std::max({2 * M + 1, static_cast<int>(std::ceil(20.0 / forwardness)) + 1, 49});
+  const PhaseMatrices phase = henyey_greenstein_matrices(g, q.nodes, q.weights, CosineProjector(M, azimuths));
+
+  // L U = (1 + k sin(theta) C) U - Omega S U, and A = D^-1 L with D = diag(signed mu): dU/dtau = -A U + D^-1 s e^-tau.
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
+  for (int m = 0; m < M; ++m) {
+    const double c_m = m == 0 ? 2.0 * kPi : kPi;  // fourier_azimuth_weight
+    for (int up = 0; up < 2; ++up) {
+      for (int i = 0; i < N; ++i) {
+        const int row = layout.at(m, up, i);
+        const double sin_theta = std::sqrt(std::max(0.0, 1.0 - q.nodes[i] * q.nodes[i]));
+        A(row, row) += 1.0;
+        // i cos(phi) i^(m-1) cos((m-1) phi) and i cos(phi) i^(m+1) cos((m+1) phi), divided by i^m (§21.2).
+        if (m >= 1) A(row, layout.at(m - 1, up, i)) += k * sin_theta * (m - 1 == 0 ? 1.0 : 0.5);
+        if (m + 1 < M) A(row, layout.at(m + 1, up, i)) -= k * sin_theta * 0.5;
+        for (int from_up = 0; from_up < 2; ++from_up) {
+          const Eigen::MatrixXd& p =
+              from_up == up ? phase.same[static_cast<std::size_t>(m)] : phase.opposite[static_cast<std::size_t>(m)];
+          for (int j = 0; j < N; ++j) A(row, layout.at(m, from_up, j)) -= albedo * c_m * q.weights[j] * p(i, j);
+        }
+      }
+    }
+  }
+  Eigen::VectorXd source = Eigen::VectorXd::Zero(n);  // D^-1 s: the beam's first scattering, mode 0
+  double scattered = 0.0;
+  for (int j = 0; j < N; ++j) {
+    scattered += q.weights[j] * (henyey_greenstein(q.nodes[j], g) + henyey_greenstein(-q.nodes[j], g));
+  }
+  const double norm = 1.0 / (2.0 * kPi * scattered);  // the quadrature scatters exactly what the beam loses
+  for (int up = 0; up < 2; ++up) {
+    for (int i = 0; i < N; ++i) {
+      const double mu = up ? -q.nodes[i] : q.nodes[i];
+      source(layout.at(0, up, i)) = albedo * henyey_greenstein(mu, g) * norm / mu;
+    }
+  }
+  for (int row = 0; row < n; ++row) {
+    const int i = row % N;
+    const bool up = (row / N) % 2 == 1;
+    A.row(row) /= up ? -q.nodes[i] : q.nodes[i];
+  }
+
+  // Particular solution X e^-tau: (A - 1) X = D^-1 s.
+  const Eigen::VectorXd X = (A - Eigen::MatrixXd::Identity(n, n)).partialPivLu().solve(source);
+
+  // Homogeneous solutions v e^{-lambda tau}, at half size (§21.3). Within each mode block A is
+  // [[D^-1 L1, D^-1 L2], [-D^-1 L2, -D^-1 L1]] (down, up); for S = v_down + v_up and Delta = v_down - v_up,
+  //   lambda^2 S = D^-1 (L1 - L2) D^-1 (L1 + L2) S,   Delta = D^-1 (L1 + L2) S / lambda,
+  // and -lambda swaps v_down and v_up. Here the blocks are gathered over the modes.
+  const int h = n / 2;
+  std::vector<int> down_rows, up_rows;
+  for (int m = 0; m < M; ++m) {
+    for (int i = 0; i < N; ++i) {
+      down_rows.push_back(layout.at(m, 0, i));
+      up_rows.push_back(layout.at(m, 1, i));
+    }
+  }
+  Eigen::MatrixXd P(h, h), Q(h, h);  // D^-1 (L1 + L2) and D^-1 (L1 - L2): A's down rows are D^-1 (L1, L2)
+  for (int r = 0; r < h; ++r) {
+    for (int c = 0; c < h; ++c) {
+      const double same = A(down_rows[static_cast<std::size_t>(r)], down_rows[static_cast<std::size_t>(c)]);
+      const double opposite = A(down_rows[static_cast<std::size_t>(r)], up_rows[static_cast<std::size_t>(c)]);
+      P(r, c) = same + opposite;
+      Q(r, c) = same - opposite;
+    }
+  }
+  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(Q * P);
+  check(eigen.info() == Eigen::Success, "the eigen-decomposition failed");
+  Eigen::VectorXcd lambda(n);
+  Eigen::MatrixXcd V(n, n);
+  const Eigen::MatrixXcd S = eigen.eigenvectors();
+  const Eigen::MatrixXcd PS = P.cast<std::complex<double>>() * S;
+  for (int l = 0; l < h; ++l) {
+    const std::complex<double> root = std::sqrt(eigen.eigenvalues()(l));  // Re >= 0: the decaying one
+    check(root.real() > 0.0, "a mode neither decays nor grows (conservative scattering at k = 0?)");
+    const Eigen::VectorXcd delta = PS.col(l) / root;
+    lambda(l) = root;
+    lambda(h + l) = -root;
+    for (int r = 0; r < h; ++r) {
+      const std::complex<double> down = 0.5 * (S(r, l) + delta(r)), up = 0.5 * (S(r, l) - delta(r));
+      V(down_rows[static_cast<std::size_t>(r)], l) = down;
+      V(up_rows[static_cast<std::size_t>(r)], l) = up;
+      V(down_rows[static_cast<std::size_t>(r)], h + l) = up;  // -lambda swaps the halves
+      V(up_rows[static_cast<std::size_t>(r)], h + l) = down;
+    }
+  }
+  std::vector<int> decaying, growing;  // Re lambda > 0: e^{-lambda tau}; < 0: e^{-lambda (tau - tau_b)}
+  for (int l = 0; l < h; ++l) {
+    decaying.push_back(l);
+    growing.push_back(h + l);
+  }
+
+  // Boundary conditions: nothing enters the top going down; with a finite layer, nothing enters the bottom going up.
+  const int unknowns = semi_infinite ? n / 2 : n;
+  Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(unknowns, unknowns);
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(unknowns);
+  const auto column_value = [&](int c, int row, double depth) -> std::complex<double> {
+    if (c < n / 2) return V(row, decaying[c]) * std::exp(-lambda(decaying[c]) * depth);
+    return V(row, growing[c - n / 2]) * std::exp(-lambda(growing[c - n / 2]) * (depth - tau));
+  };
+  int equation = 0;
+  for (int m = 0; m < M; ++m) {
+    for (int i = 0; i < N; ++i) {
+      const int row = layout.at(m, 0, i);
+      for (int c = 0; c < unknowns; ++c) B(equation, c) = column_value(c, row, 0.0);
+      rhs(equation++) = -X(row);
+    }
+  }
+  if (!semi_infinite) {
+    for (int m = 0; m < M; ++m) {
+      for (int i = 0; i < N; ++i) {
+        const int row = layout.at(m, 1, i);
+        for (int c = 0; c < unknowns; ++c) B(equation, c) = column_value(c, row, tau);
+        rhs(equation++) = -X(row) * std::exp(-tau);
+      }
+    }
+  }
+  const Eigen::VectorXcd coefficients = B.partialPivLu().solve(rhs);
+
+  // Fluxes out of the faces: mode 0 only, 2 pi sum_j a_j mu_j I(mu_j).
+  const auto mode0_flux = [&](int up, double depth) {
+    std::complex<double> flux = 0.0;
+    for (int i = 0; i < N; ++i) {
+      const int row = layout.at(0, up, i);
+      std::complex<double> value = X(row) * std::exp(-depth);
+      for (int c = 0; c < unknowns; ++c) value += coefficients(c) * column_value(c, row, depth);
+      flux += q.weights[i] * q.nodes[i] * value;
+    }
+    return 2.0 * kPi * flux.real();
+  };
+  LateralFrequencyResponse response;
+  response.reflectance = mode0_flux(1, 0.0);
+  if (!semi_infinite) response.transmittance = mode0_flux(0, tau);
+  return response;
+}
+
+}  // namespace skinlayer

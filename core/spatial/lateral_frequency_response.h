@@ -1,0 +1,35 @@
+// The response of a layer to light at one lateral spatial frequency: the first step from the BSDF, which integrates
+// over the whole surface, to the spatially resolved response (docs/model.md §21).
+//
+// A pencil beam of unit power enters at the origin of the top face. Transformed in the lateral coordinates,
+// I(k) = int I(x) e^{-i k.x} d^2x, the transport equation for each spatial frequency k (along x) reads, in optical
+// depth tau (downward) and mean free paths:
+//   mu dI/dtau + (1 + i k sin(theta) cos(phi)) I = Omega int p I' d omega' + Omega p(mu) e^{-tau},
+// where mu = cos(theta) is signed (mu > 0 travels down) and the last term is the first scattering of the beam.
+// R(k) and T(k), the scattered light leaving the top and the bottom per unit incident power, are the Hankel
+// transforms of the profiles: R(k) = int_0^inf R(r) J0(k r) 2 pi r dr, so R(0) is the subsurface reflectance.
+//
+// Written for the open layer first: no interface at the top (eta = 1) and an index-matched half-space or none
+// below, normal incidence. Rough interfaces enter through the interface operators, as in the BSDF, next.
+#pragma once
+
+namespace skinlayer {
+
+struct LateralFrequencyResolution {
+  int ordinates = 16;      // double-Gauss nodes per hemisphere
+  int azimuth_modes = 24;  // cosine modes m = 0 .. azimuth_modes - 1 that the k.s term couples
+};
+
+struct LateralFrequencyResponse {
+  double reflectance = 0.0;    // R(k): scattered light out of the top, per unit incident power
+  double transmittance = 0.0;  // T(k): scattered light out of the bottom (the direct beam, a delta at r = 0, is not
+                               // in it); 0 for a semi-infinite layer
+};
+
+// tau: optical depth (+infinity: semi-infinite); albedo Omega in [0, 1); g the Henyey-Greenstein asymmetry;
+// k >= 0 in 1 / mean free path. Throws std::invalid_argument for values outside those ranges (Omega = 1 with
+// k = 0 in a semi-infinite layer has no decaying solution).
+LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
+                                                     const LateralFrequencyResolution& resolution = {});
+
+}  // namespace skinlayer
