@@ -1,0 +1,110 @@
+// docs/model.md §21.7: single scattering in closed form, the rest through k-space.
+#include "core/spatial/open_layer_profile.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/conventions.h"
+#include "core/series/catmull_rom.h"
+#include "core/series/quadrature.h"
+#include "core/spatial/single_scattering_profile.h"
+
+namespace skinlayer {
+namespace {
+
+// The first order in the albedo, by a solve at this albedo: its relative error is of the same size.
+constexpr double kFirstOrderAlbedo = 1e-7;
+
+// R_ms (or T_ms) on the grid s_i = i h, k = k_s sinh(s), Catmull-Rom between samples, 0 beyond the last.
+class FrequencySpline {
+ public:
+  FrequencySpline(std::vector<double> values, double step, double scale)
+      : values_(std::move(values)), step_(step), scale_(scale) {}
+  double operator()(double k) const {
+    const double s = std::asinh(k / scale_) / step_;
+    const int last = static_cast<int>(values_.size()) - 1;
+    if (s >= last) return 0.0;
+    const int i = static_cast<int>(s);
+    double w[4];
+    catmull_rom_weights(s - i, w);
+    double value = 0.0;
+    for (int a = 0; a < 4; ++a) {
+      int index = i - 1 + a;
+      // R_ms is even in k: mirror below k = 0; hold the last sample beyond the grid.
+      index = index < 0 ? -index : std::min(index, last);
+      value += w[a] * values_[static_cast<std::size_t>(index)];
+    }
+    return value;
+  }
+  double max_frequency() const { return scale_ * std::sinh(step_ * (static_cast<double>(values_.size()) - 1.0)); }
+
+ private:
+  std::vector<double> values_;
+  double step_, scale_;
+};
+
+// int_0^kmax F(k) [r1 J1(k r1) - r0 J1(k r0)] dk by Gauss-Legendre panels no wider than the kernel's half period.
+double annulus_power(const FrequencySpline& F, double r0, double r1) {
+  const double k_max = F.max_frequency();
+  const double width = std::min(0.25, kPi / std::max(r1, 1e-12));
+  const int panels = std::max(1, static_cast<int>(std::ceil(k_max / width)));
+  const QuadratureRule rule = gauss_legendre(8, 0.0, 1.0);
+  double total = 0.0;
+  for (int p = 0; p < panels; ++p) {
+    const double a = k_max * p / panels, b = k_max * (p + 1) / panels;
+    for (int i = 0; i < rule.size(); ++i) {
+      const double k = a + (b - a) * rule.nodes[static_cast<std::size_t>(i)];
+      const double kernel =
+          r1 * std::cyl_bessel_j(1.0, k * r1) - (r0 > 0.0 ? r0 * std::cyl_bessel_j(1.0, k * r0) : 0.0);
+      total += (b - a) * rule.weights[static_cast<std::size_t>(i)] * F(k) * kernel;
+    }
+  }
+  return total;
+}
+
+}  // namespace
+
+OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::span<const double> edges,
+                                    const OpenLayerProfileOptions& options) {
+  if (edges.size() < 2 || !(edges.front() >= 0.0) || !std::isfinite(edges.back()) ||
+      !std::is_sorted(edges.begin(), edges.end()) || std::adjacent_find(edges.begin(), edges.end()) != edges.end()) {
+    throw std::invalid_argument("open_layer_profile: edges must be at least two increasing radii from >= 0");
+  }
+  if (options.frequencies < 4 || !(options.max_frequency > 0.0) || !(options.frequency_scale > 0.0)) {
+    throw std::invalid_argument("open_layer_profile: needs >= 4 frequencies and positive frequency bounds");
+  }
+  const bool slab = std::isfinite(tau);
+  const double step = std::asinh(options.max_frequency / options.frequency_scale) / (options.frequencies - 1);
+  std::vector<double> reflected(static_cast<std::size_t>(options.frequencies));
+  std::vector<double> transmitted(reflected.size());
+  OpenLayerProfile profile;
+  for (int i = 0; i < options.frequencies; ++i) {
+    const double k = options.frequency_scale * std::sinh(step * i);
+    const LateralFrequencyResponse all = open_layer_lateral_response(tau, albedo, g, k, options.resolution);
+    const LateralFrequencyResponse once = open_layer_lateral_response(tau, kFirstOrderAlbedo, g, k, options.resolution);
+    const double scale = albedo / kFirstOrderAlbedo;
+    reflected[static_cast<std::size_t>(i)] = all.reflectance - scale * once.reflectance;
+    transmitted[static_cast<std::size_t>(i)] = all.transmittance - scale * once.transmittance;
+    if (i == 0) {
+      profile.total_reflectance = all.reflectance;
+      profile.total_transmittance = all.transmittance;
+    }
+  }
+  const FrequencySpline reflected_spline(std::move(reflected), step, options.frequency_scale);
+  const FrequencySpline transmitted_spline(std::move(transmitted), step, options.frequency_scale);
+  for (std::size_t a = 0; a + 1 < edges.size(); ++a) {
+    const double r0 = edges[a], r1 = edges[a + 1];
+    const double area = kPi * (r1 * r1 - r0 * r0);
+    profile.reflectance.push_back(
+        (single_scattered_power(tau, albedo, g, LayerFace::Top, r0, r1) + annulus_power(reflected_spline, r0, r1)) /
+        area);
+    profile.transmittance.push_back(slab ? (single_scattered_power(tau, albedo, g, LayerFace::Bottom, r0, r1) +
+                                            annulus_power(transmitted_spline, r0, r1)) /
+                                               area
+                                         : 0.0);
+  }
+  return profile;
+}
+
+}  // namespace skinlayer

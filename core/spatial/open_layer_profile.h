@@ -1,0 +1,41 @@
+// The spatially resolved response of an open layer (no interfaces, normal incidence): where a pencil beam's light
+// leaves the top and the bottom, averaged over annuli about the entry point (docs/model.md §21.7). Lengths are in
+// mean free paths.
+//
+// Single scattering is singular at r -> 0 and is taken in closed form (single_scattering_profile.h). The rest, the
+// light scattered more than once, is smooth enough for k-space: R_ms(k) = R(k) - Omega R_eps(k) / eps, where R(k) is
+// the discrete-ordinate response at one frequency (lateral_frequency_response.h) and R_eps its first order in the
+// albedo, the discrete ordinates' own single scattering. Through an annulus, since int_0^a J0(k r) 2 pi r dr =
+// 2 pi a J1(k a) / k, its power is
+//   P_ms = int_0^inf R_ms(k) [r1 J1(k r1) - r0 J1(k r0)] dk,
+// integrated over a spline of R_ms on a grid uniform in asinh(k / k_s).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/spatial/lateral_frequency_response.h"
+
+namespace skinlayer {
+
+struct OpenLayerProfileOptions {
+  LateralFrequencyResolution resolution{16, 24};
+  int frequencies = 48;           // samples of R_ms(k)
+  double max_frequency = 100.0;   // 1 / mean free path; R_ms is taken as 0 beyond it
+  double frequency_scale = 0.01;  // k_s: the grid is uniform in asinh(k / k_s)
+};
+
+struct OpenLayerProfile {
+  // Per annulus [edges[i], edges[i + 1]): the light leaving per unit area and unit incident power (1/mfp^2), all
+  // scattering orders; the transmittance leaves out the direct beam (a delta at r = 0). Zero for a semi-infinite
+  // layer's bottom.
+  std::vector<double> reflectance, transmittance;
+  // The same light's totals at k = 0 (the directional albedo's subsurface part at normal incidence).
+  double total_reflectance = 0.0, total_transmittance = 0.0;
+};
+
+// edges: finite, increasing radii from >= 0, in mean free paths. Throws std::invalid_argument for bad input.
+OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::span<const double> edges,
+                                    const OpenLayerProfileOptions& options = {});
+
+}  // namespace skinlayer
