@@ -31,12 +31,14 @@ void check(bool ok, const std::string& message) {
   if (!ok) throw std::invalid_argument("open_layer_lateral_response: " + message);
 }
 
-}  // namespace
-
-LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
-                                                     const LateralFrequencyResolution& resolution) {
+// The solve with the albedo in the scattering operator and in the beam's source given apart: operator_albedo = 0
+// with source_albedo = Omega is the first order in Omega, single scattering, exactly.
+LateralFrequencyResponse lateral_response(double tau, double operator_albedo, double source_albedo, double g, double k,
+                                          const LateralFrequencyResolution& resolution) {
+  const double albedo = operator_albedo;
   check(tau >= 0.0, "tau must be >= 0 (+inf: semi-infinite)");
   check(albedo >= 0.0 && albedo < 1.0, "albedo must be in [0, 1)");
+  check(source_albedo >= 0.0 && source_albedo <= 1.0, "albedo must be in [0, 1]");
   check(std::abs(g) <= 0.95, "g must be in [-0.95, 0.95]");
   check(k >= 0.0 && std::isfinite(k), "k must be finite and >= 0");
   check(resolution.ordinates >= 2 && resolution.azimuth_modes >= 1, "resolution needs >= 2 ordinates and >= 1 mode");
@@ -81,7 +83,7 @@ LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, 
   for (int up = 0; up < 2; ++up) {
     for (int i = 0; i < N; ++i) {
       const double mu = up ? -q.nodes[i] : q.nodes[i];
-      source(layout.at(0, up, i)) = albedo * henyey_greenstein(mu, g) * norm / mu;
+      source(layout.at(0, up, i)) = source_albedo * henyey_greenstein(mu, g) * norm / mu;
     }
   }
   for (int row = 0; row < n; ++row) {
@@ -114,14 +116,35 @@ LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, 
       Q(r, c) = same - opposite;
     }
   }
-  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(Q * P);
-  check(eigen.info() == Eigen::Success, "the eigen-decomposition failed");
+  // lambda^2 and S. Without scattering in the operator only the k-term couples, mode to mode at one node, so
+  // Q P falls apart into one M x M block per node.
+  const Eigen::MatrixXd QP = Q * P;
+  Eigen::VectorXcd squared(h);
+  Eigen::MatrixXcd S = Eigen::MatrixXcd::Zero(h, h);
+  if (albedo == 0.0) {
+    for (int i = 0; i < N; ++i) {  // down_rows[m N + i] is mode m at node i
+      Eigen::MatrixXd block(M, M);
+      for (int a = 0; a < M; ++a) {
+        for (int b = 0; b < M; ++b) block(a, b) = QP(a * N + i, b * N + i);
+      }
+      const Eigen::EigenSolver<Eigen::MatrixXd> eigen(block);
+      check(eigen.info() == Eigen::Success, "the eigen-decomposition failed");
+      for (int l = 0; l < M; ++l) {
+        squared(i * M + l) = eigen.eigenvalues()(l);
+        for (int a = 0; a < M; ++a) S(a * N + i, i * M + l) = eigen.eigenvectors()(a, l);
+      }
+    }
+  } else {
+    const Eigen::EigenSolver<Eigen::MatrixXd> eigen(QP);
+    check(eigen.info() == Eigen::Success, "the eigen-decomposition failed");
+    squared = eigen.eigenvalues();
+    S = eigen.eigenvectors();
+  }
   Eigen::VectorXcd lambda(n);
   Eigen::MatrixXcd V(n, n);
-  const Eigen::MatrixXcd S = eigen.eigenvectors();
   const Eigen::MatrixXcd PS = P.cast<std::complex<double>>() * S;
   for (int l = 0; l < h; ++l) {
-    const std::complex<double> root = std::sqrt(eigen.eigenvalues()(l));  // Re >= 0: the decaying one
+    const std::complex<double> root = std::sqrt(squared(l));  // Re >= 0: the decaying one
     check(root.real() > 0.0, "a mode neither decays nor grows (conservative scattering at k = 0?)");
     const Eigen::VectorXcd delta = PS.col(l) / root;
     lambda(l) = root;
@@ -182,6 +205,18 @@ LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, 
   response.reflectance = mode0_flux(1, 0.0);
   if (!semi_infinite) response.transmittance = mode0_flux(0, tau);
   return response;
+}
+
+}  // namespace
+
+LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
+                                                     const LateralFrequencyResolution& resolution) {
+  return lateral_response(tau, albedo, albedo, g, k, resolution);
+}
+
+LateralFrequencyResponse open_layer_single_scattering_response(double tau, double albedo, double g, double k,
+                                                               const LateralFrequencyResolution& resolution) {
+  return lateral_response(tau, 0.0, albedo, g, k, resolution);
 }
 
 }  // namespace skinlayer

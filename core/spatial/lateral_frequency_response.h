@@ -32,4 +32,9 @@ struct LateralFrequencyResponse {
 LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
                                                      const LateralFrequencyResolution& resolution = {});
 
+// The same discretization's first order in the albedo: the beam scattered once, then only streaming (the operator
+// without scattering). Its k-coupling joins the modes of one node alone, so it costs N small eigen-solves.
+LateralFrequencyResponse open_layer_single_scattering_response(double tau, double albedo, double g, double k,
+                                                               const LateralFrequencyResolution& resolution = {});
+
 }  // namespace skinlayer

@@ -13,9 +13,6 @@
 namespace skinlayer {
 namespace {
 
-// The first order in the albedo, by a solve at this albedo: its relative error is of the same size.
-constexpr double kFirstOrderAlbedo = 1e-7;
-
 // R_ms (or T_ms) on the grid s_i = i h, k = k_s sinh(s), Catmull-Rom between samples, 0 beyond the last.
 class FrequencySpline {
  public:
@@ -82,10 +79,9 @@ OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::sp
   for (int i = 0; i < options.frequencies; ++i) {
     const double k = options.frequency_scale * std::sinh(step * i);
     const LateralFrequencyResponse all = open_layer_lateral_response(tau, albedo, g, k, options.resolution);
-    const LateralFrequencyResponse once = open_layer_lateral_response(tau, kFirstOrderAlbedo, g, k, options.resolution);
-    const double scale = albedo / kFirstOrderAlbedo;
-    reflected[static_cast<std::size_t>(i)] = all.reflectance - scale * once.reflectance;
-    transmitted[static_cast<std::size_t>(i)] = all.transmittance - scale * once.transmittance;
+    const LateralFrequencyResponse once = open_layer_single_scattering_response(tau, albedo, g, k, options.resolution);
+    reflected[static_cast<std::size_t>(i)] = all.reflectance - once.reflectance;
+    transmitted[static_cast<std::size_t>(i)] = all.transmittance - once.transmittance;
     if (i == 0) {
       profile.total_reflectance = all.reflectance;
       profile.total_transmittance = all.transmittance;

@@ -3,9 +3,9 @@
 // mean free paths.
 //
 // Single scattering is singular at r -> 0 and is taken in closed form (single_scattering_profile.h). The rest, the
-// light scattered more than once, is smooth enough for k-space: R_ms(k) = R(k) - Omega R_eps(k) / eps, where R(k) is
-// the discrete-ordinate response at one frequency (lateral_frequency_response.h) and R_eps its first order in the
-// albedo, the discrete ordinates' own single scattering. Through an annulus, since int_0^a J0(k r) 2 pi r dr =
+// light scattered more than once, is smooth enough for k-space: R_ms(k) = R(k) - R_1(k), where R(k) is the
+// discrete-ordinate response at one frequency (lateral_frequency_response.h) and R_1 its first order in the albedo,
+// the discrete ordinates' own single scattering. Through an annulus, since int_0^a J0(k r) 2 pi r dr =
 // 2 pi a J1(k a) / k, its power is
 //   P_ms = int_0^inf R_ms(k) [r1 J1(k r1) - r0 J1(k r0)] dk,
 // integrated over a spline of R_ms on a grid uniform in asinh(k / k_s).

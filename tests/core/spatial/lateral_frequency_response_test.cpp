@@ -83,6 +83,23 @@ TEST(LateralFrequencyResponse, WeakScatteringIsTheClosedFormOfSingleScatteringAt
   EXPECT_NEAR(fine, single_scattering_reflectance(0.8, 10.0), 1e-4 * fine);
 }
 
+// The discretization's single scattering, solved without the scattering operator (one small eigen-solve per node),
+// is the full solve's first order in the albedo, and its closed form to the same 1e-3.
+TEST(LateralFrequencyResponse, SingleScatteringIsTheFirstOrderOfTheFullSolve) {
+  for (const double tau : {1.5, kInf}) {
+    for (const double k : {0.0, 0.7, 4.0}) {
+      const LateralFrequencyResponse once = open_layer_single_scattering_response(tau, 0.9, 0.6, k, {12, 16});
+      const LateralFrequencyResponse weak = open_layer_lateral_response(tau, 1e-7, 0.6, k, {12, 16});
+      EXPECT_NEAR(once.reflectance / 0.9, weak.reflectance / 1e-7, 1e-6 * once.reflectance / 0.9) << tau << " " << k;
+      EXPECT_NEAR(once.transmittance / 0.9, weak.transmittance / 1e-7, 1e-6 * once.transmittance / 0.9 + 1e-15)
+          << tau << " " << k;
+    }
+  }
+  const double expected = single_scattering_reflectance(0.6, 4.0);
+  EXPECT_NEAR(open_layer_single_scattering_response(kInf, 1.0, 0.6, 4.0, {16, 24}).reflectance, expected,
+              1e-3 * expected);
+}
+
 TEST(LateralFrequencyResponse, FallsWithFrequencyAndRefusesBadInput) {
   double previous = 1.0;
   for (const double k : {0.0, 0.1, 0.5, 2.0, 8.0}) {
