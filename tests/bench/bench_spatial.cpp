@@ -1,0 +1,49 @@
+// Spatially resolved transport (core/spatial/, docs/model.md §21), one thread.
+//   Run: cmake --build build --target bench && build/tests/bench/bench_spatial
+// No target yet: issue 43 asks for profiles live in the previewer; these are the numbers that work starts from.
+#include <benchmark/benchmark.h>
+
+#include <limits>
+#include <vector>
+
+#include "core/spatial/lateral_frequency_response.h"
+#include "core/spatial/open_layer_profile.h"
+
+namespace skinlayer::bench {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// One spatial frequency of a half-space (Omega 0.99, g 0.8, k 1 / mfp). Args: ordinates, azimuthal modes.
+void BM_LateralFrequencyResponse(benchmark::State& state) {
+  const LateralFrequencyResolution resolution{static_cast<int>(state.range(0)), static_cast<int>(state.range(1))};
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(open_layer_lateral_response(kInf, 0.99, 0.8, 1.0, resolution));
+  }
+}
+BENCHMARK(BM_LateralFrequencyResponse)->Args({12, 16})->Args({16, 24})->Args({24, 40})->Unit(benchmark::kMillisecond);
+
+// Its single scattering, solved without the scattering operator (one small eigen-solve per node).
+void BM_LateralSingleScattering(benchmark::State& state) {
+  const LateralFrequencyResolution resolution{static_cast<int>(state.range(0)), static_cast<int>(state.range(1))};
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(open_layer_single_scattering_response(kInf, 0.99, 0.8, 1.0, resolution));
+  }
+}
+BENCHMARK(BM_LateralSingleScattering)->Args({12, 16})->Args({16, 24})->Unit(benchmark::kMillisecond);
+
+// The half-space profile of tests/core/spatial/open_layer_profile_test.cpp: 15 annuli out to 24 mfp, 40 frequencies.
+void BM_OpenLayerProfile(benchmark::State& state) {
+  const std::vector<double> edges = {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0,  1.5,
+                                     2.0, 3.0, 4.0, 6.0,  8.0, 12.0, 16.0, 24.0};
+  OpenLayerProfileOptions options;
+  options.resolution = {static_cast<int>(state.range(0)), static_cast<int>(state.range(1))};
+  options.frequencies = 40;
+  for (auto _ : state) benchmark::DoNotOptimize(open_layer_profile(kInf, 0.99, 0.8, edges, options));
+}
+BENCHMARK(BM_OpenLayerProfile)->Args({12, 16})->Args({16, 24})->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace skinlayer::bench
+
+BENCHMARK_MAIN();
