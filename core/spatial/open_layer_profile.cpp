@@ -22,6 +22,9 @@ class FrequencySpline {
     const double s = std::asinh(k / scale_) / step_;
     const int last = static_cast<int>(values_.size()) - 1;
     if (s >= last) return 0.0;
+    // A cosine roll-off over the upper half of the frequencies, so that the transform ends smoothly (§21.7).
+    const double k_max = max_frequency();
+    const double taper = k < 0.5 * k_max ? 1.0 : 0.5 * (1.0 + std::cos(kPi * (2.0 * k / k_max - 1.0)));
     const int i = static_cast<int>(s);
     double w[4];
     catmull_rom_weights(s - i, w);
@@ -32,7 +35,7 @@ class FrequencySpline {
       index = index < 0 ? -index : std::min(index, last);
       value += w[a] * values_[static_cast<std::size_t>(index)];
     }
-    return value;
+    return taper * value;
   }
   double max_frequency() const { return scale_ * std::sinh(step_ * (static_cast<double>(values_.size()) - 1.0)); }
 
@@ -60,6 +63,58 @@ double annulus_power(const FrequencySpline& F, double r0, double r1) {
   return total;
 }
 
+// (1 / 2 pi) int_0^kmax F(k) J0(k r) k dk: the inverse Hankel transform at one radius, by the same panels.
+double point_value(const FrequencySpline& F, double r) {
+  const double k_max = F.max_frequency();
+  const double width = std::min(0.25, kPi / r);
+  const int panels = std::max(1, static_cast<int>(std::ceil(k_max / width)));
+  const QuadratureRule rule = gauss_legendre(8, 0.0, 1.0);
+  double total = 0.0;
+  for (int p = 0; p < panels; ++p) {
+    const double a = k_max * p / panels, b = k_max * (p + 1) / panels;
+    for (int i = 0; i < rule.size(); ++i) {
+      const double k = a + (b - a) * rule.nodes[static_cast<std::size_t>(i)];
+      total += (b - a) * rule.weights[static_cast<std::size_t>(i)] * F(k) * std::cyl_bessel_j(0.0, k * r) * k;
+    }
+  }
+  return total / (2.0 * kPi);
+}
+
+void check_options(const OpenLayerProfileOptions& options) {
+  if (options.frequencies < 4 || !(options.max_frequency > 0.0) || !(options.frequency_scale > 0.0)) {
+    throw std::invalid_argument("open_layer_profile: needs >= 4 frequencies and positive frequency bounds");
+  }
+}
+
+// The multiply scattered light's transforms, sampled and splined (§21.7), with the totals at k = 0.
+struct MultipleScatteringTransforms {
+  FrequencySpline reflected, transmitted;
+  double total_reflectance = 0.0, total_transmittance = 0.0;
+};
+
+MultipleScatteringTransforms multiple_scattering_transforms(double tau, double albedo, double g,
+                                                            const OpenLayerProfileOptions& options) {
+  check_options(options);
+  const double step = std::asinh(options.max_frequency / options.frequency_scale) / (options.frequencies - 1);
+  std::vector<double> reflected(static_cast<std::size_t>(options.frequencies));
+  std::vector<double> transmitted(reflected.size());
+  double total_reflectance = 0.0, total_transmittance = 0.0;
+  for (int i = 0; i < options.frequencies; ++i) {
+    const double k = options.frequency_scale * std::sinh(step * i);
+    const LateralFrequencyResponse all = open_layer_lateral_response(tau, albedo, g, k, options.resolution);
+    const LateralFrequencyResponse once = open_layer_single_scattering_response(tau, albedo, g, k, options.resolution);
+    reflected[static_cast<std::size_t>(i)] = all.reflectance - once.reflectance;
+    transmitted[static_cast<std::size_t>(i)] = all.transmittance - once.transmittance;
+    if (i == 0) {
+      total_reflectance = all.reflectance;
+      total_transmittance = all.transmittance;
+    }
+  }
+  return {FrequencySpline(std::move(reflected), step, options.frequency_scale),
+          FrequencySpline(std::move(transmitted), step, options.frequency_scale), total_reflectance,
+          total_transmittance};
+}
+
 }  // namespace
 
 OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::span<const double> edges,
@@ -68,37 +123,39 @@ OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::sp
       !std::is_sorted(edges.begin(), edges.end()) || std::adjacent_find(edges.begin(), edges.end()) != edges.end()) {
     throw std::invalid_argument("open_layer_profile: edges must be at least two increasing radii from >= 0");
   }
-  if (options.frequencies < 4 || !(options.max_frequency > 0.0) || !(options.frequency_scale > 0.0)) {
-    throw std::invalid_argument("open_layer_profile: needs >= 4 frequencies and positive frequency bounds");
-  }
   const bool slab = std::isfinite(tau);
-  const double step = std::asinh(options.max_frequency / options.frequency_scale) / (options.frequencies - 1);
-  std::vector<double> reflected(static_cast<std::size_t>(options.frequencies));
-  std::vector<double> transmitted(reflected.size());
+  const MultipleScatteringTransforms ms = multiple_scattering_transforms(tau, albedo, g, options);
   OpenLayerProfile profile;
-  for (int i = 0; i < options.frequencies; ++i) {
-    const double k = options.frequency_scale * std::sinh(step * i);
-    const LateralFrequencyResponse all = open_layer_lateral_response(tau, albedo, g, k, options.resolution);
-    const LateralFrequencyResponse once = open_layer_single_scattering_response(tau, albedo, g, k, options.resolution);
-    reflected[static_cast<std::size_t>(i)] = all.reflectance - once.reflectance;
-    transmitted[static_cast<std::size_t>(i)] = all.transmittance - once.transmittance;
-    if (i == 0) {
-      profile.total_reflectance = all.reflectance;
-      profile.total_transmittance = all.transmittance;
-    }
-  }
-  const FrequencySpline reflected_spline(std::move(reflected), step, options.frequency_scale);
-  const FrequencySpline transmitted_spline(std::move(transmitted), step, options.frequency_scale);
+  profile.total_reflectance = ms.total_reflectance;
+  profile.total_transmittance = ms.total_transmittance;
   for (std::size_t a = 0; a + 1 < edges.size(); ++a) {
     const double r0 = edges[a], r1 = edges[a + 1];
     const double area = kPi * (r1 * r1 - r0 * r0);
     profile.reflectance.push_back(
-        (single_scattered_power(tau, albedo, g, LayerFace::Top, r0, r1) + annulus_power(reflected_spline, r0, r1)) /
-        area);
+        (single_scattered_power(tau, albedo, g, LayerFace::Top, r0, r1) + annulus_power(ms.reflected, r0, r1)) / area);
     profile.transmittance.push_back(slab ? (single_scattered_power(tau, albedo, g, LayerFace::Bottom, r0, r1) +
-                                            annulus_power(transmitted_spline, r0, r1)) /
+                                            annulus_power(ms.transmitted, r0, r1)) /
                                                area
                                          : 0.0);
+  }
+  return profile;
+}
+
+OpenLayerProfile open_layer_profile_at(double tau, double albedo, double g, std::span<const double> radii,
+                                       const OpenLayerProfileOptions& options) {
+  if (radii.empty() || !std::all_of(radii.begin(), radii.end(), [](double r) { return r > 0.0 && std::isfinite(r); })) {
+    throw std::invalid_argument("open_layer_profile_at: radii must be finite and > 0 (the profile is infinite at 0)");
+  }
+  const bool slab = std::isfinite(tau);
+  const MultipleScatteringTransforms ms = multiple_scattering_transforms(tau, albedo, g, options);
+  OpenLayerProfile profile;
+  profile.total_reflectance = ms.total_reflectance;
+  profile.total_transmittance = ms.total_transmittance;
+  for (const double r : radii) {
+    profile.reflectance.push_back(single_scattered_density(tau, albedo, g, LayerFace::Top, r) +
+                                  point_value(ms.reflected, r));
+    profile.transmittance.push_back(
+        slab ? single_scattered_density(tau, albedo, g, LayerFace::Bottom, r) + point_value(ms.transmitted, r) : 0.0);
   }
   return profile;
 }

@@ -26,9 +26,9 @@ struct OpenLayerProfileOptions {
 };
 
 struct OpenLayerProfile {
-  // Per annulus [edges[i], edges[i + 1]): the light leaving per unit area and unit incident power (1/mfp^2), all
-  // scattering orders; the transmittance leaves out the direct beam (a delta at r = 0). Zero for a semi-infinite
-  // layer's bottom.
+  // Per annulus [edges[i], edges[i + 1]) (open_layer_profile: the mean over it) or per radius (open_layer_profile_at:
+  // the value there): the light leaving per unit area and unit incident power (1/mfp^2), all scattering orders; the
+  // transmittance leaves out the direct beam (a delta at r = 0). Zero for a semi-infinite layer's bottom.
   std::vector<double> reflectance, transmittance;
   // The same light's totals at k = 0 (the directional albedo's subsurface part at normal incidence).
   double total_reflectance = 0.0, total_transmittance = 0.0;
@@ -37,5 +37,11 @@ struct OpenLayerProfile {
 // edges: finite, increasing radii from >= 0, in mean free paths. Throws std::invalid_argument for bad input.
 OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::span<const double> edges,
                                     const OpenLayerProfileOptions& options = {});
+
+// The profile at radii r > 0 (mean free paths): single scattering's density plus
+//   R_ms(r) = (1 / 2 pi) int_0^kmax R_ms(k) J0(k r) k dk.
+// At r = 0 the profile is infinite (single scattering grows like 1/r), so radii must be > 0.
+OpenLayerProfile open_layer_profile_at(double tau, double albedo, double g, std::span<const double> radii,
+                                       const OpenLayerProfileOptions& options = {});
 
 }  // namespace skinlayer

@@ -17,6 +17,11 @@ enum class LayerFace { Top, Bottom };
 // power. tau may be +infinity for the top.
 double single_scattered_power(double tau, double albedo, double g, LayerFace face, double r0, double r1);
 
+// The same light per unit area at radius r > 0 (1/mfp^2): with l = sqrt(r^2 + d^2),
+//   R1(r) = Omega int_0^{tau_b} e^-z p(-+d/l) e^-l d / l^3 dz.
+// It grows like 1/r as r -> 0.
+double single_scattered_density(double tau, double albedo, double g, LayerFace face, double r);
+
 // Its Hankel transform at spatial frequency k (1 / mean free path): F1(0) is the singly scattered reflectance or
 // transmittance.
 double single_scattered_transform(double tau, double albedo, double g, LayerFace face, double k);
