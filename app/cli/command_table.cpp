@@ -10,6 +10,7 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/match_command.h"
 #include "app/cli/material_command.h"
+#include "app/cli/profile_command.h"
 #include "app/cli/render_command.h"
 #include "app/cli/spectrum_command.h"
 #include "app/cli/validate_command.h"
@@ -24,6 +25,8 @@ const std::array kCommands{
             [](Arguments arguments, const CommandStreams& s) { return run_eval_command(arguments, s.in, s.out); }},
     Command{"albedo", albedo_usage,
             [](Arguments arguments, const CommandStreams& s) { return run_albedo_command(arguments, s.out); }},
+    Command{"profile", profile_usage,
+            [](Arguments arguments, const CommandStreams& s) { return run_profile_command(arguments, s.out); }},
     Command{"spectrum", spectrum_usage,
             [](Arguments arguments, const CommandStreams& s) { return run_spectrum_command(arguments, s.out); }},
     Command{"match", match_usage,

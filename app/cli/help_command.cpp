@@ -14,6 +14,8 @@ std::string overview_usage() {
          "      BRDF and BTDF at direction pairs: CSV rows theta_i,theta_o,phi (degrees) in, values (1/sr) out.\n"
          "  skinlayer albedo [material flags] [--theta-i LIST]\n"
          "      reflectance, transmittance and absorptance for light from each incidence angle.\n"
+         "  skinlayer profile [material flags] [--annuli DR:N | --radii LIST]\n"
+         "      where a pencil beam's light leaves the layer, per unit area (so far an open layer: --eta 1).\n"
          "  skinlayer spectrum [material flags] [--skin KEY=VALUE,...] [--theta-i LIST] [--wavelength NM]\n"
          "      reflectance, transmittance and absorptance per wavelength, of a skin or a grey material.\n"
          "  skinlayer match --color R,G,B|#RRGGBB | --spectrum FILE.csv [material flags] [-o FILE.json]\n"

@@ -1,0 +1,98 @@
+// `skinlayer profile` on the real executable: the core's profile written as CSV, in mean free paths without a
+// length and in mm with --mu-t, per channel for an RGB albedo, and one line for every input it cannot take.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "core/spatial/open_layer_profile.h"
+#include "tests/app/csv_output.h"
+#include "tests/app/error_expectations.h"
+#include "tests/app/process_runner.h"
+
+namespace skinlayer::test {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The command's resolution (app/cli/profile_command.cpp), so that the numbers must agree to the last digits.
+OpenLayerProfileOptions command_options() {
+  OpenLayerProfileOptions options;
+  options.resolution = {12, 16};
+  options.frequencies = 40;
+  return options;
+}
+
+ProcessResult profile(std::vector<std::string> flags) {
+  flags.insert(flags.begin(), "profile");
+  return run_skinlayer(flags);
+}
+
+TEST(ProfileCommand, AnnuliInMeanFreePathsAreTheCoresProfile) {
+  const ProcessResult result = profile(
+      {"--eta", "1", "--bottom", "matched", "--tau", "2", "--albedo", "0.9", "--g", "0.5", "--annuli", "0.25:8"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const CsvOutput csv = parse_csv_output(result.out);
+  EXPECT_EQ(csv.header, (std::vector<std::string>{"r_inner_mfp", "r_outer_mfp", "reflectance", "transmittance"}));
+  ASSERT_EQ(csv.rows.size(), 8u);
+  std::vector<double> edges;
+  for (int i = 0; i <= 8; ++i) edges.push_back(0.25 * i);
+  const OpenLayerProfile expected = open_layer_profile(2.0, 0.9, 0.5, edges, command_options());
+  for (std::size_t i = 0; i < 8; ++i) {
+    EXPECT_EQ(csv.rows[i][0], edges[i]);
+    EXPECT_EQ(csv.rows[i][1], edges[i + 1]);
+    EXPECT_NEAR(csv.rows[i][2], expected.reflectance[i], 1e-12 * expected.reflectance[i]);
+    EXPECT_NEAR(csv.rows[i][3], expected.transmittance[i], 1e-12 * expected.transmittance[i]);
+  }
+}
+
+// With --mu-t the radii are mm and the values per mm^2: mu_t r mean free paths, mu_t^2 times the values per mfp^2.
+// An RGB albedo gives one column per channel, each the grey profile of its albedo.
+TEST(ProfileCommand, RadiiInMillimetresPerChannel) {
+  const ProcessResult result = profile({"--eta", "1", "--bottom", "matched", "--T", "0", "--albedo", "0.95,0.8,0.5",
+                                        "--g", "0.7", "--mu-t", "20", "--radii", "0.01,0.1"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const CsvOutput csv = parse_csv_output(result.out);
+  EXPECT_EQ(csv.header, (std::vector<std::string>{"r_mm", "reflectance_r", "reflectance_g", "reflectance_b",
+                                                  "transmittance_r", "transmittance_g", "transmittance_b"}));
+  ASSERT_EQ(csv.rows.size(), 2u);
+  const double radii_mfp[] = {0.2, 2.0};
+  const double albedos[] = {0.95, 0.8, 0.5};
+  for (int c = 0; c < 3; ++c) {
+    const OpenLayerProfile expected = open_layer_profile_at(kInf, albedos[c], 0.7, radii_mfp, command_options());
+    for (std::size_t i = 0; i < 2; ++i) {
+      EXPECT_NEAR(csv.rows[i][1 + c], 400.0 * expected.reflectance[i], 1e-9 * 400.0 * expected.reflectance[i]);
+      EXPECT_EQ(csv.rows[i][4 + c], 0.0);  // a half-space transmits nothing
+    }
+  }
+  EXPECT_GT(csv.rows[0][1], csv.rows[1][1]);  // the profile falls away from the beam
+  EXPECT_GT(csv.rows[0][1], csv.rows[0][3]);  // and with the albedo
+}
+
+TEST(ProfileCommand, WhatItCannotTakeIsOneLine) {
+  const std::vector<std::string> open = {"--eta", "1", "--bottom", "matched", "--albedo", "0.9"};
+  const auto with = [&](std::vector<std::string> more) {
+    std::vector<std::string> flags = open;
+    flags.insert(flags.end(), more.begin(), more.end());
+    return profile(flags);
+  };
+  EXPECT_TRUE(failed_with_one_line(profile({"--albedo", "0.9"}), 2, {"top interface", "eta 1.4", "--eta 1"}));
+  EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--bottom", "lambert:0.5", "--albedo", "0.9"}), 2,
+                                   {"Lambertian base"}));
+  EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--bottom", "matched"}), 2, {"albedo is 1"}));
+  EXPECT_TRUE(failed_with_one_line(profile({"--preset", "skin-two-layer"}), 2, {"stack of 2 layers"}));
+  EXPECT_TRUE(failed_with_one_line(profile({"--skin", "melanin=0.05"}), 2, {"skin", "rough top"}));
+  EXPECT_TRUE(failed_with_one_line(with({"--radii", "0,1"}), 2, {"radii", "'0'", "> 0"}));
+  EXPECT_TRUE(failed_with_one_line(with({"--radii", "-1"}), 2, {"radii", "> 0"}));
+  EXPECT_TRUE(failed_with_one_line(with({"--annuli", "0.1"}), 2, {"annuli", "DR:N"}));
+  EXPECT_TRUE(failed_with_one_line(with({"--annuli", "0.1:2.5"}), 2, {"annuli", "whole number"}));
+  EXPECT_TRUE(failed_with_one_line(with({"--annuli", "-0.1:5"}), 2, {"width", "> 0"}));
+  EXPECT_TRUE(failed_with_one_line(with({"--annuli", "0.1:5", "--radii", "1"}), 2, {"--annuli", "--radii"}));
+  EXPECT_TRUE(failed_with_one_line(with({"--incidence", "diffuse"}), 2, {"diffuse", "normal incidence"}));
+  EXPECT_TRUE(failed_with_one_line(with({"--mu-t", "-3"}), 2, {"mu-t = -3", "1/mm"}));
+}
+
+}  // namespace
+}  // namespace skinlayer::test
