@@ -12,8 +12,7 @@
 #include "app/cli/numeric_table.h"
 #include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
-#include "app/material/color_channels.h"
-#include "core/spatial/open_layer_profile.h"
+#include "app/solution/document_profile.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -22,36 +21,6 @@ constexpr std::string_view kIncidenceFlag = "incidence";
 constexpr std::string_view kAnnuliFlag = "annuli";
 constexpr std::string_view kRadiiFlag = "radii";
 constexpr int kMaxAnnuli = 10000;
-
-// The resolution of the profile: tests/core/spatial/open_layer_profile_test.cpp checks it against the walk and
-// MCML (within 2.6% or 3 standard errors wherever the profile exceeds 1e-3 of its peak).
-OpenLayerProfileOptions profile_options() {
-  OpenLayerProfileOptions options;
-  options.resolution = {12, 16};
-  options.frequencies = 40;
-  return options;
-}
-
-// One line naming what the profile cannot take yet, or nothing for an open layer.
-void require_open_layer(const Material& m) {
-  std::string why;
-  if (m.layer_count() > 1) {
-    why = "it is a stack of " + std::to_string(m.layer_count()) + " layers";
-  } else if (m.eta != 1.0) {
-    why = "it has a top interface (eta " + format_shortest(m.eta) + "; --eta 1 has none)";
-  } else if (m.bottom.kind == BottomKind::Lambert) {
-    why = "it has a Lambertian base (--bottom " + format_bottom(m.bottom) + ")";
-  } else if (m.bottom.kind == BottomKind::Air && m.bottom_eta() != 1.0 && std::isfinite(m.tau)) {
-    why = "it has a bottom interface (bottom-eta " + format_shortest(m.bottom_eta()) + "; --bottom matched has none)";
-  } else if (m.albedo >= 1.0) {
-    why = "its albedo is 1 (give --albedo below 1)";
-  }
-  if (why.empty()) return;
-  throw UsageError(
-      "profile: spatial profiles are computed so far for one layer with no interfaces and an albedo "
-      "below 1 (--eta 1 --bottom matched --albedo A < 1), and this material cannot be: " +
-      why);
-}
 
 double positive_number(std::string_view flag, std::string_view text) {
   const std::optional<double> value = parse_number(text);
@@ -129,45 +98,30 @@ int run_profile_command(std::span<const std::string_view> arguments, std::ostrea
     throw UsageError("flags --annuli and --radii both choose where the profile is given; give only one");
   }
   const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
-  if (document.skin) {
-    throw UsageError(
-        "profile: a skin has a rough top interface, and spatial profiles are computed so far for one "
-        "layer with no interfaces (--eta 1 --bottom matched)");
-  }
-  const std::vector<Material> channels =
-      document.grey() ? std::vector<Material>{document.layer} : color_channels(document).materials;
-  for (const Material& channel : channels) require_open_layer(channel);
-  const Material& layer = channels.front();
-  const double mu_t = layer.extinction.value_or(1.0);  // lengths in U = mm (mu_t 1/mm) or mfp (mu_t = 1)
-  const std::string unit = layer.extinction ? "mm" : "mfp";
-
   const bool at_radii = flags.has(kRadiiFlag);
+  // The default annuli are 0.1 mean free paths wide, in the output's unit.
+  const double mu_t = document.skin ? 1.0 : document.layer.extinction.value_or(1.0);
   const std::vector<double> positions =
       at_radii ? radius_list(*flags.value(kRadiiFlag)) : annulus_edges(flags.value(kAnnuliFlag), 0.1 / mu_t);
-  std::vector<double> in_mfp;
-  for (const double r : positions) in_mfp.push_back(r * mu_t);
-  std::vector<OpenLayerProfile> profiles;
-  for (const Material& channel : channels) {
-    profiles.push_back(at_radii
-                           ? open_layer_profile_at(channel.tau, channel.albedo, channel.g, in_mfp, profile_options())
-                           : open_layer_profile(channel.tau, channel.albedo, channel.g, in_mfp, profile_options()));
-  }
+  const DocumentProfile profile =
+      at_radii ? document_profile_at_radii(document, positions) : document_profile_in_annuli(document, positions);
+  const std::string& unit = profile.unit;
+  const std::size_t channels = profile.reflectance.size();
 
   const std::vector<std::string> inputs =
       at_radii ? std::vector<std::string>{"r_" + unit} : std::vector<std::string>{"r_inner_" + unit, "r_outer_" + unit};
   std::vector<std::string> columns;
   for (const std::string quantity : {"reflectance", "transmittance"}) {
-    const std::vector<std::string> names = channels.size() == 1 ? std::vector{quantity} : channel_columns(quantity);
+    const std::vector<std::string> names = channels == 1 ? std::vector{quantity} : channel_columns(quantity);
     columns.insert(columns.end(), names.begin(), names.end());
   }
   NumericTable table(inputs, columns);
-  const double per_area = mu_t * mu_t;  // 1/mfp^2 -> 1/U^2
   const std::size_t rows = at_radii ? positions.size() : positions.size() - 1;
   for (std::size_t i = 0; i < rows; ++i) {
     std::vector<double> row = {positions[i]};
     if (!at_radii) row.push_back(positions[i + 1]);
-    for (const OpenLayerProfile& p : profiles) row.push_back(per_area * p.reflectance[i]);
-    for (const OpenLayerProfile& p : profiles) row.push_back(per_area * p.transmittance[i]);
+    for (const std::vector<double>& channel : profile.reflectance) row.push_back(channel[i]);
+    for (const std::vector<double>& channel : profile.transmittance) row.push_back(channel[i]);
     table.add_row(row);
   }
   table.require_finite();

@@ -1,0 +1,28 @@
+// A material document's spatial profile (core/spatial/open_layer_profile.h) per colour channel, in the document's
+// length unit: what `skinlayer profile` writes and the Python module's Solution.profile returns, through the same
+// code. So far for an open layer only (one layer, no interfaces, an albedo below 1), at normal incidence.
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "app/material/material_document.h"
+
+namespace skinlayer {
+
+struct DocumentProfile {
+  // Lengths in mm when the layer has its extinction mu_t (1/mm), else in its mean free paths ("mfp").
+  std::string unit;
+  // [channel][position]: the scattered light leaving the top and the bottom per unit area and unit incident power,
+  // in 1/unit^2. One channel for a grey document, three (red, green, blue) for an RGB one.
+  std::vector<std::vector<double>> reflectance, transmittance;
+};
+
+// The means over the annuli [edges[i], edges[i + 1]) (increasing, from >= 0, in the unit), or the values at radii
+// (> 0, in the unit). Throws ParameterError, naming what it cannot take, for a material other than an open layer
+// (an interface, a base, a stack, a skin, albedo 1) and for bad positions.
+DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges);
+DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii);
+
+}  // namespace skinlayer
