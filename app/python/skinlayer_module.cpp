@@ -28,6 +28,7 @@
 #include "app/process/parallel_for.h"
 #include "app/python/interruptible.h"
 #include "app/solution/document_albedo.h"
+#include "app/solution/document_profile.h"
 #include "app/solution/material_solve.h"
 #include "app/solution/pair_evaluation.h"
 #include "app/solution/solved_document.h"
@@ -101,6 +102,13 @@ py::tuple eval(const Solution& solution, const InputArray& theta_i, const InputA
     return true;
   });
   return py::make_tuple(surface, subsurface, brdf, btdf);
+}
+
+// The spatial profile at radii in the document's unit: (unit, reflectance per channel, transmittance per channel).
+// Not interruptible: it has no cancellation points yet (about 2 s per channel).
+py::tuple profile(const Solution& solution, const std::vector<double>& radii) {
+  const DocumentProfile p = document_profile_at_radii(solution.document, radii);
+  return py::make_tuple(p.unit, p.reflectance, p.transmittance);
 }
 
 // Per channel, a dict of the albedo command's columns (without their _r, _g, _b), each one value per angle.
@@ -247,6 +255,7 @@ PYBIND11_MODULE(_skinlayer, module) {
       .def_property_readonly("to_rgb", &to_rgb)
       .def("eval", &eval, py::arg("theta_i"), py::arg("theta_o"), py::arg("phi"), py::arg("unscattered"))
       .def("albedo", &albedo, py::arg("theta_list"))
+      .def("profile", &profile, py::arg("radii"))
       .def("tables", &tables)
       .def("export", &export_file, py::arg("path"), py::arg("arguments"));
   module.def("solve", &solve_material, py::arg("material"), py::arg("arguments"));
