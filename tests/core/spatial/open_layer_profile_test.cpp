@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/conventions.h"
+#include "core/reference/diffusion_dipole.h"
 #include "core/reference/monte_carlo.h"
 #include "core/series/quadrature.h"
 #include "core/spatial/single_scattering_profile.h"
@@ -152,6 +153,35 @@ TEST(OpenLayerProfile, PointValuesAverageToTheAnnuli) {
   }
   const double zero[] = {0.0};
   EXPECT_THROW(open_layer_profile_at(kInf, 0.95, 0.7, zero, test_options()), std::invalid_argument);
+}
+
+// Far from the source, where diffusion holds, the exact profile takes the diffusion dipole's shape; near it the dipole
+// misses the light scattered a few times. A weakly absorbing half-space (Omega 0.99, g 0.8; the transport mean free
+// path is 4.8 mean free paths): within 6% of the dipole from 16 to 48 mean free paths, and 2-4 times above it inside
+// one transport mean free path. The dipole's own closed-form total checks its formula.
+TEST(OpenLayerProfile, FarFromTheSourceTheShapeIsTheDiffusionDipoles) {
+  double dipole_total = 0.0;
+  const QuadratureRule rule = gauss_legendre(64, 0.0, 1.0);
+  for (int i = 0; i < rule.size(); ++i) {  // r = t / (1 - t) maps [0, 1) onto [0, inf)
+    const double t = rule.nodes[static_cast<std::size_t>(i)], r = t / (1.0 - t);
+    dipole_total += rule.weights[static_cast<std::size_t>(i)] * 2.0 * kPi * r *
+                    diffusion_dipole_reflectance(0.99, 0.8, r) / ((1.0 - t) * (1.0 - t));
+  }
+  EXPECT_NEAR(dipole_total, diffusion_dipole_total_reflectance(0.99, 0.8), 1e-4 * dipole_total);
+
+  const std::vector<double> radii = {0.5, 1.0, 16.0, 24.0, 32.0, 48.0};
+  OpenLayerProfileOptions options = test_options();
+  options.frequencies = 48;
+  const OpenLayerProfile exact = open_layer_profile_at(kInf, 0.99, 0.8, radii, options);
+  for (std::size_t i = 0; i < radii.size(); ++i) {
+    const double ratio = exact.reflectance[i] / diffusion_dipole_reflectance(0.99, 0.8, radii[i]);
+    std::printf("  r %5.1f  exact / dipole %.4f\n", radii[i], ratio);
+    if (radii[i] >= 16.0) {
+      EXPECT_NEAR(ratio, 1.0, 0.06) << radii[i];
+    } else {
+      EXPECT_GT(ratio, 1.5) << radii[i];
+    }
+  }
 }
 
 // The annuli's powers add up to the light that leaves (the profile's integral is R(0)), and single scattering's
