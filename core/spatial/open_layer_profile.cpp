@@ -44,10 +44,12 @@ class FrequencySpline {
   double step_, scale_;
 };
 
-// int_0^kmax F(k) [r1 J1(k r1) - r0 J1(k r0)] dk by Gauss-Legendre panels no wider than the kernel's half period.
-double annulus_power(const FrequencySpline& F, double r0, double r1) {
+// int_0^kmax F(k) kernel(k) dk by 8-point Gauss-Legendre panels no wider than half the period of a Bessel kernel of
+// largest radius r (and 0.25).
+template <class Kernel>
+double integrate_over_frequency(const FrequencySpline& F, double r, const Kernel& kernel) {
   const double k_max = F.max_frequency();
-  const double width = std::min(0.25, kPi / std::max(r1, 1e-12));
+  const double width = std::min(0.25, kPi / std::max(r, 1e-12));
   const int panels = std::max(1, static_cast<int>(std::ceil(k_max / width)));
   const QuadratureRule rule = gauss_legendre(8, 0.0, 1.0);
   double total = 0.0;
@@ -55,29 +57,22 @@ double annulus_power(const FrequencySpline& F, double r0, double r1) {
     const double a = k_max * p / panels, b = k_max * (p + 1) / panels;
     for (int i = 0; i < rule.size(); ++i) {
       const double k = a + (b - a) * rule.nodes[static_cast<std::size_t>(i)];
-      const double kernel =
-          r1 * std::cyl_bessel_j(1.0, k * r1) - (r0 > 0.0 ? r0 * std::cyl_bessel_j(1.0, k * r0) : 0.0);
-      total += (b - a) * rule.weights[static_cast<std::size_t>(i)] * F(k) * kernel;
+      total += (b - a) * rule.weights[static_cast<std::size_t>(i)] * F(k) * kernel(k);
     }
   }
   return total;
 }
 
-// (1 / 2 pi) int_0^kmax F(k) J0(k r) k dk: the inverse Hankel transform at one radius, by the same panels.
+// int_0^kmax F(k) [r1 J1(k r1) - r0 J1(k r0)] dk: the power through the annulus [r0, r1).
+double annulus_power(const FrequencySpline& F, double r0, double r1) {
+  return integrate_over_frequency(F, r1, [&](double k) {
+    return r1 * std::cyl_bessel_j(1.0, k * r1) - (r0 > 0.0 ? r0 * std::cyl_bessel_j(1.0, k * r0) : 0.0);
+  });
+}
+
+// (1 / 2 pi) int_0^kmax F(k) J0(k r) k dk: the inverse Hankel transform at one radius.
 double point_value(const FrequencySpline& F, double r) {
-  const double k_max = F.max_frequency();
-  const double width = std::min(0.25, kPi / r);
-  const int panels = std::max(1, static_cast<int>(std::ceil(k_max / width)));
-  const QuadratureRule rule = gauss_legendre(8, 0.0, 1.0);
-  double total = 0.0;
-  for (int p = 0; p < panels; ++p) {
-    const double a = k_max * p / panels, b = k_max * (p + 1) / panels;
-    for (int i = 0; i < rule.size(); ++i) {
-      const double k = a + (b - a) * rule.nodes[static_cast<std::size_t>(i)];
-      total += (b - a) * rule.weights[static_cast<std::size_t>(i)] * F(k) * std::cyl_bessel_j(0.0, k * r) * k;
-    }
-  }
-  return total / (2.0 * kPi);
+  return integrate_over_frequency(F, r, [&](double k) { return std::cyl_bessel_j(0.0, k * r) * k; }) / (2.0 * kPi);
 }
 
 void check_options(const OpenLayerProfileOptions& options) {
