@@ -110,6 +110,21 @@ MultipleScatteringTransforms multiple_scattering_transforms(double tau, double a
           total_transmittance};
 }
 
+// The totals, then value(face, transform, i) at each of `count` places (annuli or radii), on both faces.
+template <class Value>
+OpenLayerProfile assemble_profile(double tau, double albedo, double g, const OpenLayerProfileOptions& options,
+                                  std::size_t count, const Value& value) {
+  const MultipleScatteringTransforms ms = multiple_scattering_transforms(tau, albedo, g, options);
+  OpenLayerProfile profile;
+  profile.total_reflectance = ms.total_reflectance;
+  profile.total_transmittance = ms.total_transmittance;
+  for (std::size_t i = 0; i < count; ++i) {
+    profile.reflectance.push_back(value(LayerFace::Top, ms.reflected, i));
+    profile.transmittance.push_back(std::isfinite(tau) ? value(LayerFace::Bottom, ms.transmitted, i) : 0.0);
+  }
+  return profile;
+}
+
 }  // namespace
 
 OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::span<const double> edges,
@@ -118,22 +133,12 @@ OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::sp
       !std::is_sorted(edges.begin(), edges.end()) || std::adjacent_find(edges.begin(), edges.end()) != edges.end()) {
     throw std::invalid_argument("open_layer_profile: edges must be at least two increasing radii from >= 0");
   }
-  const bool slab = std::isfinite(tau);
-  const MultipleScatteringTransforms ms = multiple_scattering_transforms(tau, albedo, g, options);
-  OpenLayerProfile profile;
-  profile.total_reflectance = ms.total_reflectance;
-  profile.total_transmittance = ms.total_transmittance;
-  for (std::size_t a = 0; a + 1 < edges.size(); ++a) {
-    const double r0 = edges[a], r1 = edges[a + 1];
-    const double area = kPi * (r1 * r1 - r0 * r0);
-    profile.reflectance.push_back(
-        (single_scattered_power(tau, albedo, g, LayerFace::Top, r0, r1) + annulus_power(ms.reflected, r0, r1)) / area);
-    profile.transmittance.push_back(slab ? (single_scattered_power(tau, albedo, g, LayerFace::Bottom, r0, r1) +
-                                            annulus_power(ms.transmitted, r0, r1)) /
-                                               area
-                                         : 0.0);
-  }
-  return profile;
+  return assemble_profile(
+      tau, albedo, g, options, edges.size() - 1, [&](LayerFace face, const FrequencySpline& transform, std::size_t a) {
+        const double r0 = edges[a], r1 = edges[a + 1];
+        return (single_scattered_power(tau, albedo, g, face, r0, r1) + annulus_power(transform, r0, r1)) /
+               (kPi * (r1 * r1 - r0 * r0));
+      });
 }
 
 OpenLayerProfile open_layer_profile_at(double tau, double albedo, double g, std::span<const double> radii,
@@ -141,18 +146,10 @@ OpenLayerProfile open_layer_profile_at(double tau, double albedo, double g, std:
   if (radii.empty() || !std::all_of(radii.begin(), radii.end(), [](double r) { return r > 0.0 && std::isfinite(r); })) {
     throw std::invalid_argument("open_layer_profile_at: radii must be finite and > 0 (the profile is infinite at 0)");
   }
-  const bool slab = std::isfinite(tau);
-  const MultipleScatteringTransforms ms = multiple_scattering_transforms(tau, albedo, g, options);
-  OpenLayerProfile profile;
-  profile.total_reflectance = ms.total_reflectance;
-  profile.total_transmittance = ms.total_transmittance;
-  for (const double r : radii) {
-    profile.reflectance.push_back(single_scattered_density(tau, albedo, g, LayerFace::Top, r) +
-                                  point_value(ms.reflected, r));
-    profile.transmittance.push_back(
-        slab ? single_scattered_density(tau, albedo, g, LayerFace::Bottom, r) + point_value(ms.transmitted, r) : 0.0);
-  }
-  return profile;
+  return assemble_profile(
+      tau, albedo, g, options, radii.size(), [&](LayerFace face, const FrequencySpline& transform, std::size_t i) {
+        return single_scattered_density(tau, albedo, g, face, radii[i]) + point_value(transform, radii[i]);
+      });
 }
 
 }  // namespace skinlayer
