@@ -37,27 +37,32 @@ class FrequencySpline {
     }
     return taper * value;
   }
-  double max_frequency() const { return scale_ * std::sinh(step_ * (static_cast<double>(values_.size()) - 1.0)); }
+  double max_frequency() const { return node(static_cast<int>(values_.size()) - 1); }
+  // The sample frequencies k_i, i = 0 .. samples() - 1: the spline is a cubic between them, C1 across them.
+  int samples() const { return static_cast<int>(values_.size()); }
+  double node(int i) const { return scale_ * std::sinh(step_ * i); }
 
  private:
   std::vector<double> values_;
   double step_, scale_;
 };
 
-// int_0^kmax F(k) kernel(k) dk by 8-point Gauss-Legendre panels no wider than half the period of a Bessel kernel of
-// largest radius r (and 0.25).
+// int_0^kmax F(k) kernel(k) dk by 8-point Gauss-Legendre panels: within each cell of the spline (so that no panel
+// straddles its C1 joins), no wider than half the period of a Bessel kernel of largest radius r (and 0.25).
 template <class Kernel>
 double integrate_over_frequency(const FrequencySpline& F, double r, const Kernel& kernel) {
-  const double k_max = F.max_frequency();
   const double width = std::min(0.25, kPi / std::max(r, 1e-12));
-  const int panels = std::max(1, static_cast<int>(std::ceil(k_max / width)));
   const QuadratureRule rule = gauss_legendre(8, 0.0, 1.0);
   double total = 0.0;
-  for (int p = 0; p < panels; ++p) {
-    const double a = k_max * p / panels, b = k_max * (p + 1) / panels;
-    for (int i = 0; i < rule.size(); ++i) {
-      const double k = a + (b - a) * rule.nodes[static_cast<std::size_t>(i)];
-      total += (b - a) * rule.weights[static_cast<std::size_t>(i)] * F(k) * kernel(k);
+  for (int cell = 0; cell + 1 < F.samples(); ++cell) {
+    const double from = F.node(cell), to = F.node(cell + 1);
+    const int panels = std::max(1, static_cast<int>(std::ceil((to - from) / width)));
+    for (int p = 0; p < panels; ++p) {
+      const double a = from + (to - from) * p / panels, b = from + (to - from) * (p + 1) / panels;
+      for (int i = 0; i < rule.size(); ++i) {
+        const double k = a + (b - a) * rule.nodes[static_cast<std::size_t>(i)];
+        total += (b - a) * rule.weights[static_cast<std::size_t>(i)] * F(k) * kernel(k);
+      }
     }
   }
   return total;
