@@ -1,50 +1,52 @@
 // docs/model.md §21.7: single scattering in closed form, the rest through k-space.
 #include "core/spatial/open_layer_profile.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <unsupported/Eigen/Splines>
 
 #include "core/conventions.h"
-#include "core/series/catmull_rom.h"
 #include "core/series/quadrature.h"
 #include "core/spatial/single_scattering_profile.h"
 
 namespace skinlayer {
 namespace {
 
-// R_ms (or T_ms) on the grid s_i = i h, k = k_s sinh(s), Catmull-Rom between samples, 0 beyond the last.
+// R_ms (or T_ms) on the grid s_i = i h, k = k_s sinh(s): the C2 cubic B-spline through the samples and their
+// mirror images at -s_i (R_ms is even in k, so its derivative in s vanishes at 0), 0 beyond the last sample.
 class FrequencySpline {
  public:
-  FrequencySpline(std::vector<double> values, double step, double scale)
-      : values_(std::move(values)), step_(step), scale_(scale) {}
+  FrequencySpline(const std::vector<double>& values, double step, double scale)
+      : count_(static_cast<int>(values.size())), step_(step), scale_(scale) {
+    const int n = 2 * count_ - 1;
+    Eigen::RowVectorXd points(n), parameters(n);
+    for (int j = 0; j < n; ++j) {
+      const int i = j - (count_ - 1);
+      points(j) = values[static_cast<std::size_t>(std::abs(i))];
+      parameters(j) = 0.5 + 0.5 * i / (count_ - 1.0);  // s / s_max mapped onto [0, 1]
+    }
+    spline_ = Eigen::SplineFitting<Spline>::Interpolate(points, 3, parameters);
+  }
   double operator()(double k) const {
     const double s = std::asinh(k / scale_) / step_;
-    const int last = static_cast<int>(values_.size()) - 1;
-    if (s >= last) return 0.0;
+    if (s >= count_ - 1) return 0.0;
     // A cosine roll-off over the upper half of the frequencies, so that the transform ends smoothly (§21.7).
     const double k_max = max_frequency();
     const double taper = k < 0.5 * k_max ? 1.0 : 0.5 * (1.0 + std::cos(kPi * (2.0 * k / k_max - 1.0)));
-    const int i = static_cast<int>(s);
-    double w[4];
-    catmull_rom_weights(s - i, w);
-    double value = 0.0;
-    for (int a = 0; a < 4; ++a) {
-      int index = i - 1 + a;
-      // R_ms is even in k: mirror below k = 0; hold the last sample beyond the grid.
-      index = index < 0 ? -index : std::min(index, last);
-      value += w[a] * values_[static_cast<std::size_t>(index)];
-    }
-    return taper * value;
+    return taper * spline_(0.5 + 0.5 * s / (count_ - 1.0))(0);
   }
-  double max_frequency() const { return node(static_cast<int>(values_.size()) - 1); }
-  // The sample frequencies k_i, i = 0 .. samples() - 1: the spline is a cubic between them, C1 across them.
-  int samples() const { return static_cast<int>(values_.size()); }
+  double max_frequency() const { return node(count_ - 1); }
+  // The sample frequencies k_i, i = 0 .. samples() - 1: the spline's joins.
+  int samples() const { return count_; }
   double node(int i) const { return scale_ * std::sinh(step_ * i); }
 
  private:
-  std::vector<double> values_;
+  using Spline = Eigen::Spline<double, 1, 3>;
+  int count_;
   double step_, scale_;
+  Spline spline_;
 };
 
 // int_0^kmax F(k) kernel(k) dk by 8-point Gauss-Legendre panels: within each cell of the spline (so that no panel
@@ -110,9 +112,8 @@ MultipleScatteringTransforms multiple_scattering_transforms(double tau, double a
       total_transmittance = all.transmittance;
     }
   }
-  return {FrequencySpline(std::move(reflected), step, options.frequency_scale),
-          FrequencySpline(std::move(transmitted), step, options.frequency_scale), total_reflectance,
-          total_transmittance};
+  return {FrequencySpline(reflected, step, options.frequency_scale),
+          FrequencySpline(transmitted, step, options.frequency_scale), total_reflectance, total_transmittance};
 }
 
 // The totals, then value(face, transform, i) at each of `count` places (annuli or radii), on both faces.
