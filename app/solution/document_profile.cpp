@@ -42,32 +42,42 @@ void require_open_layer(const Material& m) {
       why);
 }
 
-std::vector<Material> open_layer_channels(const MaterialDocument& document) {
+// The document's distinct solves and how they make the red, green and blue channels (a grey document: one solve).
+ColorChannels open_layer_solves(const MaterialDocument& document) {
   if (document.skin) {
     throw ParameterError(
         "profile: a skin has a rough top interface, and spatial profiles are computed so far for one "
         "layer with no interfaces (--eta 1 --bottom matched)");
   }
-  std::vector<Material> channels =
-      document.grey() ? std::vector<Material>{document.layer} : color_channels(document).materials;
-  for (const Material& channel : channels) require_open_layer(channel);
-  return channels;
+  ColorChannels solves = color_channels(document);
+  for (const Material& material : solves.materials) require_open_layer(material);
+  return solves;
 }
 
 template <class Profile>
 DocumentProfile document_profile(const MaterialDocument& document, std::span<const double> positions,
                                  const Profile& profile) {
-  const std::vector<Material> channels = open_layer_channels(document);
-  const double mu_t = channels.front().extinction.value_or(1.0);  // unit = mm (mu_t in 1/mm) or mfp (mu_t = 1)
+  const ColorChannels solves = open_layer_solves(document);
+  const Material& first = solves.materials.front();
+  const double mu_t = first.extinction.value_or(1.0);  // unit = mm (mu_t in 1/mm) or mfp (mu_t = 1)
   std::vector<double> in_mfp;
   for (const double r : positions) in_mfp.push_back(r * mu_t);
+  std::vector<OpenLayerProfile> per_solve;
+  for (const Material& material : solves.materials) per_solve.push_back(profile(material, in_mfp));
   DocumentProfile result;
-  result.unit = channels.front().extinction ? "mm" : "mfp";
-  for (const Material& channel : channels) {
-    const OpenLayerProfile p = profile(channel, in_mfp);
-    std::vector<double> reflectance, transmittance;
-    for (const double v : p.reflectance) reflectance.push_back(mu_t * mu_t * v);  // 1/mfp^2 -> 1/unit^2
-    for (const double v : p.transmittance) transmittance.push_back(mu_t * mu_t * v);
+  result.unit = first.extinction ? "mm" : "mfp";
+  // Channel c = sum_k to_rgb(c, k) solve k (an RGB document's channels each pick one of its distinct solves).
+  const int channels = document.grey() ? 1 : 3;
+  for (int c = 0; c < channels; ++c) {
+    std::vector<double> reflectance(per_solve.front().reflectance.size(), 0.0);
+    std::vector<double> transmittance(reflectance.size(), 0.0);
+    for (std::size_t k = 0; k < per_solve.size(); ++k) {
+      const double weight = mu_t * mu_t * solves.to_rgb(c, static_cast<Eigen::Index>(k));  // 1/mfp^2 -> 1/unit^2
+      for (std::size_t i = 0; i < reflectance.size(); ++i) {
+        reflectance[i] += weight * per_solve[k].reflectance[i];
+        transmittance[i] += weight * per_solve[k].transmittance[i];
+      }
+    }
     result.reflectance.push_back(std::move(reflectance));
     result.transmittance.push_back(std::move(transmittance));
   }

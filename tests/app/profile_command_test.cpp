@@ -71,6 +71,20 @@ TEST(ProfileCommand, RadiiInMillimetresPerChannel) {
   EXPECT_GT(csv.rows[0][1], csv.rows[0][3]);  // and with the albedo
 }
 
+// An RGB albedo with two equal channels is solved once per distinct channel, and still writes three columns.
+TEST(ProfileCommand, EqualChannelsAreSolvedOnceAndWrittenEach) {
+  const ProcessResult result =
+      profile({"--eta", "1", "--bottom", "matched", "--tau", "1", "--albedo", "0.9,0.9,0.5", "--annuli", "0.5:2"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const CsvOutput csv = parse_csv_output(result.out);
+  ASSERT_EQ(csv.header.size(), 8u);
+  for (const std::vector<double>& row : csv.rows) {
+    EXPECT_EQ(row[2], row[3]);  // reflectance_r == reflectance_g
+    EXPECT_EQ(row[5], row[6]);  // transmittance_r == transmittance_g
+    EXPECT_GT(row[2], row[4]);  // the blue channel absorbs more
+  }
+}
+
 TEST(ProfileCommand, WhatItCannotTakeIsOneLine) {
   const std::vector<std::string> open = {"--eta", "1", "--bottom", "matched", "--albedo", "0.9"};
   const auto with = [&](std::vector<std::string> more) {
