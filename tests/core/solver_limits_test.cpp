@@ -7,20 +7,13 @@
 #include "core/conventions.h"
 #include "core/medium/henyey_greenstein.h"
 #include "core/solver.h"
+#include "tests/core/index_matched_slab.h"
 #include "tests/core/reference_csv.h"
 
 namespace skinlayer {
 namespace {
 
-Material index_matched_slab(double tau, double albedo, double g) {
-  Material m;
-  m.eta = 1.0;
-  m.bottom.kind = BottomKind::Matched;
-  m.tau = tau;
-  m.albedo = albedo;
-  m.g = g;
-  return m;
-}
+using test::index_matched_slab;
 
 // Single scattering in a thin index-matched slab (Chandrasekhar 1960; Hanrahan & Krueger 1993, eq. 7 form):
 //   f_R = Omega p(cos Theta) (1 - e^{-tau (1/mu0 + 1/mu)}) / (mu0 + mu),

@@ -21,6 +21,7 @@
 #include "core/medium/henyey_greenstein.h"
 #include "core/series/quadrature.h"
 #include "core/solver.h"
+#include "tests/core/index_matched_slab.h"
 
 namespace skinlayer {
 namespace {
@@ -46,12 +47,7 @@ double single_scattering_reflectance(double g, double k) {
 TEST(LateralFrequencyResponse, AtZeroFrequencyItIsTheDirectionalAlbedo) {
   for (const double tau : {0.5, 2.0, kInf}) {
     for (const double g : {0.0, 0.8}) {
-      Material m;
-      m.eta = 1.0;
-      m.bottom.kind = BottomKind::Matched;
-      m.tau = tau;
-      m.albedo = 0.95;
-      m.g = g;
+      Material m = test::index_matched_slab(tau, 0.95, g);
       m.ordinates = 16;
       const double theta[] = {0.0};
       const DirectionalAlbedo albedo = directional_albedo(m, theta).front();

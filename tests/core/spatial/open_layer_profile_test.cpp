@@ -18,6 +18,7 @@
 #include "core/reference/monte_carlo.h"
 #include "core/series/quadrature.h"
 #include "core/spatial/single_scattering_profile.h"
+#include "tests/core/index_matched_slab.h"
 #include "tests/core/reference_csv.h"
 
 namespace skinlayer {
@@ -35,12 +36,7 @@ OpenLayerProfileOptions test_options() {
 
 void expect_profile_matches_the_walk(double tau, double albedo, double g, const std::vector<double>& edges) {
   const OpenLayerProfile profile = open_layer_profile(tau, albedo, g, edges, test_options());
-  Material m;
-  m.eta = 1.0;
-  m.bottom.kind = BottomKind::Matched;
-  m.tau = tau;
-  m.albedo = albedo;
-  m.g = g;
+  const Material m = test::index_matched_slab(tau, albedo, g);
   std::vector<RadialBin> bins;
   for (const ExitSide side : {ExitSide::Reflected, ExitSide::Transmitted}) {
     for (std::size_t i = 0; i + 1 < edges.size(); ++i) bins.push_back({side, edges[i], edges[i + 1]});
