@@ -14,6 +14,14 @@ struct QuadratureRule {
 // n-point Gauss-Legendre rule on [a, b]: exact for polynomials of degree <= 2n - 1. Nodes ascending.
 QuadratureRule gauss_legendre(int n, double a = -1.0, double b = 1.0);
 
+// int_a^b f(x) dx by `unit`, a rule on [0, 1], mapped onto [a, b]: one rule, computed once, serves every interval.
+template <class Function>
+double integrate_mapped(const QuadratureRule& unit, double a, double b, const Function& f) {
+  double total = 0.0;
+  for (std::size_t i = 0; i < unit.nodes.size(); ++i) total += unit.weights[i] * f(a + (b - a) * unit.nodes[i]);
+  return (b - a) * total;
+}
+
 // Double-Gauss (Sykes 1951; DISORT): Gauss-Legendre with n nodes on each half-range mu in (0, 1), weights summing
 // to 1. The same cosines serve upward (+mu) and downward (-mu) directions. No node at mu = 0; half-range moments
 // int_0^1 mu^k dmu are exact for k <= 2n - 1. Nodes ascending.

@@ -54,17 +54,15 @@ class FrequencySpline {
 template <class Kernel>
 double integrate_over_frequency(const FrequencySpline& F, double r, const Kernel& kernel) {
   const double width = std::min(0.25, kPi / std::max(r, 1e-12));
-  const QuadratureRule rule = gauss_legendre(8, 0.0, 1.0);
+  const QuadratureRule unit = gauss_legendre(8, 0.0, 1.0);
+  const auto integrand = [&](double k) { return F(k) * kernel(k); };
   double total = 0.0;
   for (int cell = 0; cell + 1 < F.samples(); ++cell) {
     const double from = F.node(cell), to = F.node(cell + 1);
     const int panels = std::max(1, static_cast<int>(std::ceil((to - from) / width)));
     for (int p = 0; p < panels; ++p) {
-      const double a = from + (to - from) * p / panels, b = from + (to - from) * (p + 1) / panels;
-      for (int i = 0; i < rule.size(); ++i) {
-        const double k = a + (b - a) * rule.nodes[static_cast<std::size_t>(i)];
-        total += (b - a) * rule.weights[static_cast<std::size_t>(i)] * F(k) * kernel(k);
-      }
+      total +=
+          integrate_mapped(unit, from + (to - from) * p / panels, from + (to - from) * (p + 1) / panels, integrand);
     }
   }
   return total;
