@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "app/cli/numbers.h"
 #include "app/material/color_channels.h"
@@ -88,21 +87,13 @@ DocumentProfile document_profile(const MaterialDocument& document, std::span<con
 
 DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges) {
   return document_profile(document, edges, [](const Material& m, std::span<const double> edges_mfp) {
-    try {
-      return open_layer_profile(m.tau, m.albedo, m.g, edges_mfp, profile_options());
-    } catch (const std::invalid_argument&) {
-      throw ParameterError("profile: the annuli's edges must be finite, increasing radii from 0 or more");
-    }
+    return open_layer_profile(m.tau, m.albedo, m.g, edges_mfp, profile_options());
   });
 }
 
 DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii) {
   return document_profile(document, radii, [](const Material& m, std::span<const double> radii_mfp) {
-    try {
-      return open_layer_profile_at(m.tau, m.albedo, m.g, radii_mfp, profile_options());
-    } catch (const std::invalid_argument&) {
-      throw ParameterError("profile: radii must be finite and > 0 (the profile is infinite at the beam)");
-    }
+    return open_layer_profile_at(m.tau, m.albedo, m.g, radii_mfp, profile_options());
   });
 }
 

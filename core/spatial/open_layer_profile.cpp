@@ -8,6 +8,7 @@
 #include <unsupported/Eigen/Splines>
 
 #include "core/conventions.h"
+#include "core/material.h"
 #include "core/series/quadrature.h"
 #include "core/spatial/single_scattering_profile.h"
 
@@ -135,7 +136,7 @@ OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::sp
                                     const OpenLayerProfileOptions& options) {
   if (edges.size() < 2 || !(edges.front() >= 0.0) || !std::isfinite(edges.back()) ||
       !std::is_sorted(edges.begin(), edges.end()) || std::adjacent_find(edges.begin(), edges.end()) != edges.end()) {
-    throw std::invalid_argument("open_layer_profile: edges must be at least two increasing radii from >= 0");
+    throw ParameterError("profile: the annuli's edges must be at least two finite, increasing radii from 0 or more");
   }
   return assemble_profile(
       tau, albedo, g, options, edges.size() - 1, [&](LayerFace face, const FrequencySpline& transform, std::size_t a) {
@@ -148,7 +149,7 @@ OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::sp
 OpenLayerProfile open_layer_profile_at(double tau, double albedo, double g, std::span<const double> radii,
                                        const OpenLayerProfileOptions& options) {
   if (radii.empty() || !std::all_of(radii.begin(), radii.end(), [](double r) { return r > 0.0 && std::isfinite(r); })) {
-    throw std::invalid_argument("open_layer_profile_at: radii must be finite and > 0 (the profile is infinite at 0)");
+    throw ParameterError("profile: radii must be finite and > 0 (the profile is infinite at the beam)");
   }
   return assemble_profile(
       tau, albedo, g, options, radii.size(), [&](LayerFace face, const FrequencySpline& transform, std::size_t i) {

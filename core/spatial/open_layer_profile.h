@@ -34,7 +34,8 @@ struct OpenLayerProfile {
   double total_reflectance = 0.0, total_transmittance = 0.0;
 };
 
-// edges: finite, increasing radii from >= 0, in mean free paths. Throws std::invalid_argument for bad input.
+// edges: finite, increasing radii from >= 0, in mean free paths. Throws ParameterError (one line for the user) for bad
+// edges or radii, std::invalid_argument for bad options or layer parameters.
 OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::span<const double> edges,
                                     const OpenLayerProfileOptions& options = {});
 
