@@ -63,9 +63,11 @@ std::string range_text(const ParameterInfo& info) {
   return text;
 }
 
-void check_parameter(const ParameterInfo& info, double value) {
+void check_parameter(const ParameterInfo& info, double value) { check_parameter(info, value, info.flag); }
+
+void check_parameter(const ParameterInfo& info, double value, std::string_view name) {
   if (!(value >= info.min && value <= info.max)) {  // false for NaN too
-    throw ParameterError(std::string(info.flag) + " = " + format_number(value) + " is out of range; valid range is " +
+    throw ParameterError(std::string(name) + " = " + format_number(value) + " is out of range; valid range is " +
                          range_text(info) + " (" + std::string(info.description) + ")");
   }
 }

@@ -127,6 +127,8 @@ std::string range_text(const ParameterInfo& info);
 // Throws ParameterError unless value is a number in [info.min, info.max]. The message reads
 // "<flag> = <value> is out of range; valid range is [<min>, <max>] (<description>)".
 void check_parameter(const ParameterInfo& info, double value);
+// The same naming the parameter as the caller spells it (a --layer key "mu_t" for the row "mu-t").
+void check_parameter(const ParameterInfo& info, double value, std::string_view name);
 
 // Validates every field of the material against the table. Throws ParameterError naming the first bad field; a
 // stacked layer's message starts "layer <i>: " (1-based, top to bottom), its interface's keys are "sigma" and "eta".

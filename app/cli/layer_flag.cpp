@@ -26,12 +26,9 @@ double checked(const ParameterInfo& info, std::string_view key, std::string_view
                      "; valid range is " + range_text(info) + " (" + std::string(info.description) + ")");
   }
   try {
-    check_parameter(info, *value);
+    check_parameter(info, *value, key);  // named as the layer spells it ("mu_t" for the row "mu-t")
   } catch (const ParameterError& error) {
-    // The table names the flag ("mu-t"); the message names the key as the layer spells it ("mu_t").
-    std::string message = error.what();
-    if (key != info.flag && message.starts_with(info.flag)) message.replace(0, info.flag.size(), key);
-    throw ParameterError(prefix(place) + message);
+    throw ParameterError(prefix(place) + error.what());
   }
   return *value;
 }
