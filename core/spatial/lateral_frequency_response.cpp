@@ -35,9 +35,8 @@ void check(bool ok, const std::string& message) {
 // with source_albedo = Omega is the first order in Omega, single scattering, exactly.
 LateralFrequencyResponse lateral_response(double tau, double operator_albedo, double source_albedo, double g, double k,
                                           const LateralFrequencyResolution& resolution) {
-  const double albedo = operator_albedo;
   check(tau >= 0.0, "tau must be >= 0 (+inf: semi-infinite)");
-  check(albedo >= 0.0 && albedo < 1.0, "albedo must be in [0, 1)");
+  check(operator_albedo >= 0.0 && operator_albedo < 1.0, "albedo must be in [0, 1)");
   check(source_albedo >= 0.0 && source_albedo <= 1.0, "albedo must be in [0, 1]");
   check(std::abs(g) <= 0.95, "g must be in [-0.95, 0.95]");
   check(k >= 0.0 && std::isfinite(k), "k must be finite and >= 0");
@@ -69,7 +68,8 @@ LateralFrequencyResponse lateral_response(double tau, double operator_albedo, do
         for (int from_up = 0; from_up < 2; ++from_up) {
           const Eigen::MatrixXd& p =
               from_up == up ? phase.same[static_cast<std::size_t>(m)] : phase.opposite[static_cast<std::size_t>(m)];
-          for (int j = 0; j < N; ++j) A(row, layout.at(m, from_up, j)) -= albedo * c_m * q.weights[j] * p(i, j);
+          for (int j = 0; j < N; ++j)
+            A(row, layout.at(m, from_up, j)) -= operator_albedo * c_m * q.weights[j] * p(i, j);
         }
       }
     }
@@ -121,7 +121,7 @@ LateralFrequencyResponse lateral_response(double tau, double operator_albedo, do
   const Eigen::MatrixXd QP = Q * P;
   Eigen::VectorXcd squared(h);
   Eigen::MatrixXcd S = Eigen::MatrixXcd::Zero(h, h);
-  if (albedo == 0.0) {
+  if (operator_albedo == 0.0) {
     for (int i = 0; i < N; ++i) {  // down_rows[m N + i] is mode m at node i
       Eigen::MatrixXd block(M, M);
       for (int a = 0; a < M; ++a) {
