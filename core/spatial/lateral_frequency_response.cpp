@@ -14,6 +14,7 @@
 #include "core/medium/henyey_greenstein.h"
 #include "core/series/fourier.h"
 #include "core/series/quadrature.h"
+#include "core/spatial/lateral_top_interface.h"
 
 namespace skinlayer {
 namespace {
@@ -32,15 +33,22 @@ void check(bool ok, const std::string& message) {
 }
 
 // The solve with the albedo in the scattering operator and in the beam's source given apart: operator_albedo = 0
-// with source_albedo = Omega is the first order in Omega, single scattering, exactly.
+// with source_albedo = Omega is the first order in Omega, single scattering, exactly. Under a rough top (`top` not
+// null) there is no collimated beam: the light enters as the top's node radiance, and source_albedo is unused.
 LateralFrequencyResponse lateral_response(double tau, double operator_albedo, double source_albedo, double g, double k,
-                                          const LateralFrequencyResolution& resolution) {
+                                          const LateralFrequencyResolution& resolution,
+                                          const LateralTopInterface* top = nullptr) {
   check(tau >= 0.0, "tau must be >= 0 (+inf: semi-infinite)");
   check(operator_albedo >= 0.0 && operator_albedo < 1.0, "albedo must be in [0, 1)");
   check(source_albedo >= 0.0 && source_albedo <= 1.0, "albedo must be in [0, 1]");
   check(std::abs(g) <= 0.95, "g must be in [-0.95, 0.95]");
   check(k >= 0.0 && std::isfinite(k), "k must be finite and >= 0");
   check(resolution.ordinates >= 2 && resolution.azimuth_modes >= 1, "resolution needs >= 2 ordinates and >= 1 mode");
+  if (top != nullptr) {
+    check(top->source.size() == resolution.ordinates && top->exit.size() == resolution.ordinates &&
+              static_cast<int>(top->reflection.size()) >= resolution.azimuth_modes,
+          "the top interface's operators were built for another resolution");
+  }
   if (tau == 0.0) return {};
 
   const QuadratureRule q = double_gauss_half_range(resolution.ordinates);
@@ -48,23 +56,20 @@ LateralFrequencyResponse lateral_response(double tau, double operator_albedo, do
   const int N = layout.nodes, M = layout.modes, n = layout.size();
   const bool semi_infinite = std::isinf(tau);
 
-  // Phase matrices per mode (mode 0 renormalized to conserve energy on the nodes), projected as the BSDF's are.
-  const double forwardness = 1.0 - std::abs(g);
-  const int azimuths = std::max({2 * M + 1, static_cast<int>(std::ceil(20.0 / forwardness)) + 1, 49});
-  const PhaseMatrices phase = henyey_greenstein_matrices(g, q.nodes, q.weights, CosineProjector(M, azimuths));
+  const PhaseMatrices phase = lateral_phase_matrices(g, q, M);
+  const Eigen::MatrixXd coupling = lateral_mode_coupling(M);
 
   // L U = (1 + k sin(theta) C) U - Omega S U, and A = D^-1 L with D = diag(signed mu): dU/dtau = -A U + D^-1 s e^-tau.
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
   for (int m = 0; m < M; ++m) {
-    const double c_m = m == 0 ? 2.0 * kPi : kPi;  // fourier_azimuth_weight
+    const double c_m = fourier_azimuth_weight(m);
     for (int up = 0; up < 2; ++up) {
       for (int i = 0; i < N; ++i) {
         const int row = layout.at(m, up, i);
         const double sin_theta = std::sqrt(std::max(0.0, 1.0 - q.nodes[i] * q.nodes[i]));
         A(row, row) += 1.0;
-        // i cos(phi) i^(m-1) cos((m-1) phi) and i cos(phi) i^(m+1) cos((m+1) phi), divided by i^m (§21.2).
-        if (m >= 1) A(row, layout.at(m - 1, up, i)) += k * sin_theta * (m - 1 == 0 ? 1.0 : 0.5);
-        if (m + 1 < M) A(row, layout.at(m + 1, up, i)) -= k * sin_theta * 0.5;
+        if (m >= 1) A(row, layout.at(m - 1, up, i)) += k * sin_theta * coupling(m, m - 1);
+        if (m + 1 < M) A(row, layout.at(m + 1, up, i)) += k * sin_theta * coupling(m, m + 1);
         for (int from_up = 0; from_up < 2; ++from_up) {
           const Eigen::MatrixXd& p =
               from_up == up ? phase.same[static_cast<std::size_t>(m)] : phase.opposite[static_cast<std::size_t>(m)];
@@ -83,7 +88,7 @@ LateralFrequencyResponse lateral_response(double tau, double operator_albedo, do
   for (int up = 0; up < 2; ++up) {
     for (int i = 0; i < N; ++i) {
       const double mu = up ? -q.nodes[i] : q.nodes[i];
-      source(layout.at(0, up, i)) = source_albedo * henyey_greenstein(mu, g) * norm / mu;
+      source(layout.at(0, up, i)) = top ? 0.0 : source_albedo * henyey_greenstein(mu, g) * norm / mu;
     }
   }
   for (int row = 0; row < n; ++row) {
@@ -163,7 +168,9 @@ LateralFrequencyResponse lateral_response(double tau, double operator_albedo, do
     growing.push_back(h + l);
   }
 
-  // Boundary conditions: nothing enters the top going down; with a finite layer, nothing enters the bottom going up.
+  // Boundary conditions. At the top, u-(0) = t12 + R21 u+(0) under a rough top, mode by mode (the i^m factor is the
+  // same on both sides, and t12 is mode 0 alone), and nothing enters going down under an open one. With a finite
+  // layer, nothing enters the bottom going up.
   const int unknowns = semi_infinite ? n / 2 : n;
   Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(unknowns, unknowns);
   Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(unknowns);
@@ -176,7 +183,17 @@ LateralFrequencyResponse lateral_response(double tau, double operator_albedo, do
     for (int i = 0; i < N; ++i) {
       const int row = layout.at(m, 0, i);
       for (int c = 0; c < unknowns; ++c) B(equation, c) = column_value(c, row, 0.0);
-      rhs(equation++) = -X(row);
+      rhs(equation) = -X(row);
+      if (top != nullptr) {
+        const Eigen::MatrixXd& reflect = top->reflection[static_cast<std::size_t>(m)];
+        for (int j = 0; j < N; ++j) {
+          const int from = layout.at(m, 1, j);
+          for (int c = 0; c < unknowns; ++c) B(equation, c) -= reflect(i, j) * column_value(c, from, 0.0);
+          rhs(equation) += reflect(i, j) * X(from);
+        }
+        if (m == 0) rhs(equation) += top->source(i);
+      }
+      ++equation;
     }
   }
   if (!semi_infinite) {
@@ -190,14 +207,15 @@ LateralFrequencyResponse lateral_response(double tau, double operator_albedo, do
   }
   const Eigen::VectorXcd coefficients = B.partialPivLu().solve(rhs);
 
-  // Fluxes out of the faces: mode 0 only, 2 pi sum_j a_j mu_j I(mu_j).
+  // Fluxes out of the faces: mode 0 only, 2 pi sum_j a_j mu_j I(mu_j) times the fraction that crosses the face.
   const auto mode0_flux = [&](int up, double depth) {
     std::complex<double> flux = 0.0;
     for (int i = 0; i < N; ++i) {
       const int row = layout.at(0, up, i);
       std::complex<double> value = X(row) * std::exp(-depth);
       for (int c = 0; c < unknowns; ++c) value += coefficients(c) * column_value(c, row, depth);
-      flux += q.weights[i] * q.nodes[i] * value;
+      const double crossing = up == 1 && top != nullptr ? top->exit(i) : 1.0;
+      flux += q.weights[i] * q.nodes[i] * crossing * value;
     }
     return 2.0 * kPi * flux.real();
   };
@@ -208,6 +226,27 @@ LateralFrequencyResponse lateral_response(double tau, double operator_albedo, do
 }
 
 }  // namespace
+
+PhaseMatrices lateral_phase_matrices(double g, const QuadratureRule& quadrature, int modes) {
+  const double forwardness = 1.0 - std::abs(g);
+  const int azimuths = std::max({2 * modes + 1, static_cast<int>(std::ceil(20.0 / forwardness)) + 1, 49});
+  return henyey_greenstein_matrices(g, quadrature.nodes, quadrature.weights, CosineProjector(modes, azimuths));
+}
+
+Eigen::MatrixXd lateral_mode_coupling(int modes) {
+  // i cos(phi) i^(m-1) cos((m-1) phi) and i cos(phi) i^(m+1) cos((m+1) phi), divided by i^m (§21.2).
+  Eigen::MatrixXd coupling = Eigen::MatrixXd::Zero(modes, modes);
+  for (int m = 0; m < modes; ++m) {
+    if (m >= 1) coupling(m, m - 1) = m - 1 == 0 ? 1.0 : 0.5;
+    if (m + 1 < modes) coupling(m, m + 1) = -0.5;
+  }
+  return coupling;
+}
+
+LateralFrequencyResponse rough_top_lateral_response(double tau, double albedo, double g, const LateralTopInterface& top,
+                                                    double k, const LateralFrequencyResolution& resolution) {
+  return lateral_response(tau, albedo, 0.0, g, k, resolution, &top);
+}
 
 LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
                                                      const LateralFrequencyResolution& resolution) {

@@ -9,16 +9,31 @@
 // R(k) and T(k), the scattered light leaving the top and the bottom per unit incident power, are the Hankel
 // transforms of the profiles: R(k) = int_0^inf R(r) J0(k r) 2 pi r dr, so R(0) is the subsurface reflectance.
 //
-// Written for the open layer first: no interface at the top (eta = 1) and an index-matched half-space or none
-// below, normal incidence. Rough interfaces enter through the interface operators, as in the BSDF, next.
+// Below the layer: an index-matched half-space or none. Above it: no interface (eta = 1, the open layer) or a rough
+// one (lateral_top_interface.h), through the BSDF's own operators. Normal incidence.
 #pragma once
 
+#include <Eigen/Core>
+
+#include "core/medium/henyey_greenstein.h"
+#include "core/series/quadrature.h"
+
 namespace skinlayer {
+
+struct LateralTopInterface;
 
 struct LateralFrequencyResolution {
   int ordinates = 16;      // double-Gauss nodes per hemisphere
   int azimuth_modes = 24;  // cosine modes m = 0 .. azimuth_modes - 1 that the k.s term couples
 };
+
+// The phase function's Fourier matrices on the nodes, as every lateral solve projects them (mode 0 renormalized to
+// conserve energy on the nodes, §7).
+PhaseMatrices lateral_phase_matrices(double g, const QuadratureRule& quadrature, int modes);
+
+// C, the k.s term between the modes (§21.2): with I = sum_m i^m a_m cos(m phi), the streaming operator of node mu is
+// (1 + k sin(theta) C) / mu on the coefficients a_m, C(m, m - 1) = 1 for m = 1 and 1/2 above, C(m, m + 1) = -1/2.
+Eigen::MatrixXd lateral_mode_coupling(int modes);
 
 struct LateralFrequencyResponse {
   double reflectance = 0.0;    // R(k): scattered light out of the top, per unit incident power
@@ -32,7 +47,13 @@ struct LateralFrequencyResponse {
 LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
                                                      const LateralFrequencyResolution& resolution = {});
 
-// The same discretization's first order in the albedo: the beam scattered once, then only streaming (the operator
+// The same under a rough top, whose operators were built for `resolution` (lateral_top_interface). The beam enters
+// as the top's refracted node radiance, so the transmittance holds all the light leaving the bottom, the part that
+// crossed unscattered included.
+LateralFrequencyResponse rough_top_lateral_response(double tau, double albedo, double g, const LateralTopInterface& top,
+                                                    double k, const LateralFrequencyResolution& resolution = {});
+
+// The open layer's first order in the albedo: the beam scattered once, then only streaming (the operator
 // without scattering). Its k-coupling joins the modes of one node alone, so it costs N small eigen-solves.
 LateralFrequencyResponse open_layer_single_scattering_response(double tau, double albedo, double g, double k,
                                                                const LateralFrequencyResolution& resolution = {});

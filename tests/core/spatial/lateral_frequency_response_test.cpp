@@ -17,10 +17,12 @@
 #include <limits>
 
 #include "core/conventions.h"
+#include "core/interfaces/layer_interfaces.h"
 #include "core/material.h"
 #include "core/medium/henyey_greenstein.h"
 #include "core/series/quadrature.h"
 #include "core/solver.h"
+#include "core/spatial/lateral_top_interface.h"
 #include "tests/core/index_matched_slab.h"
 
 namespace skinlayer {
@@ -57,6 +59,30 @@ TEST(LateralFrequencyResponse, AtZeroFrequencyItIsTheDirectionalAlbedo) {
                   albedo.reflectance_subsurface, at_zero.transmittance, albedo.transmittance - direct);
       EXPECT_NEAR(at_zero.reflectance, albedo.reflectance_subsurface, 1e-6) << "tau " << tau << " g " << g;
       EXPECT_NEAR(at_zero.transmittance, albedo.transmittance - direct, 1e-6) << "tau " << tau << " g " << g;
+    }
+  }
+}
+
+// Under a rough top the solve takes the BSDF's own top operators, so at k = 0 it is the BSDF's directional albedo
+// again: the subsurface reflectance less the interface's multiply scattered reflection (which leaves where the beam
+// enters), and all the light through a matched bottom.
+TEST(LateralFrequencyResponse, UnderARoughTopAtZeroFrequencyItIsTheDirectionalAlbedo) {
+  for (const double sigma : {0.5, 1.0}) {
+    for (const double tau : {2.0, kInf}) {
+      Material m = test::index_matched_slab(tau, 0.9, 0.8);
+      m.eta = 1.4;
+      m.sigma = sigma;
+      m.ordinates = 12;
+      const double theta[] = {0.0};
+      const DirectionalAlbedo albedo = directional_albedo(m, theta).front();
+      const LateralTopInterface top = lateral_top_interface(top_interface(m), 12, 4);
+      const LateralFrequencyResponse at_zero = rough_top_lateral_response(tau, 0.9, 0.8, top, 0.0, {12, 4});
+      std::printf("  sigma %.1f tau %4.1f  R(0) + surface %.9f  solver %.9f   T(0) %.9f  solver %.9f\n", sigma, tau,
+                  at_zero.reflectance + top.surface_multiple_reflectance, albedo.reflectance_subsurface,
+                  at_zero.transmittance, albedo.transmittance);
+      EXPECT_GT(top.surface_multiple_reflectance, 0.0);
+      EXPECT_NEAR(at_zero.reflectance + top.surface_multiple_reflectance, albedo.reflectance_subsurface, 1e-6);
+      EXPECT_NEAR(at_zero.transmittance, albedo.transmittance, 1e-6);
     }
   }
 }

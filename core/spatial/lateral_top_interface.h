@@ -1,0 +1,35 @@
+// A rough top interface as the discrete ordinates of a lateral-frequency solve see it, for a pencil beam at normal
+// incidence (docs/model.md §21.9). These are the BSDF solve's own operators (core/interfaces/layer_interfaces.h), on
+// the same nodes and energy-matched the same way, so that the k = 0 response is the BSDF's subsurface reflectance.
+//
+// The interface has no thickness: it moves no light sideways, so in k-space it acts on each azimuthal mode as it does
+// in the BSDF, R21^m mapping the upward node radiance of mode m to the downward one, whatever the frequency.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/interfaces/microfacet.h"
+
+namespace skinlayer {
+
+struct LateralTopInterface {
+  // R21^m for m = 0 .. modes - 1 (N x N, dimensionless, quadrature weights included): upward node radiance at the
+  // top to downward node radiance.
+  std::vector<Eigen::MatrixXd> reflection;
+  // t12: the downward node radiance that a beam of unit power per unit area at normal incidence leaves below the
+  // interface (1/sr). At normal incidence it is uniform in azimuth: mode 0 alone.
+  Eigen::VectorXd source;
+  // T_top,inside(mu_j): the fraction of the flux meeting the interface from inside along node j that leaves it.
+  Eigen::VectorXd exit;
+  // The interface's own multiply scattered reflection of the beam (under MicrofacetModel::Multiple, else 0): it leaves
+  // at the entry point, so it is in the BSDF's subsurface reflectance but not in the spatial profile.
+  double surface_multiple_reflectance = 0.0;
+};
+
+// The top's operators on `ordinates` double-Gauss nodes per hemisphere and `modes` cosine modes, projected on
+// `azimuths` samples of [0, pi] as the BSDF solve projects them. Throws std::invalid_argument for eta = 1 (no
+// interface: the open layer's collimated beam instead).
+LateralTopInterface lateral_top_interface(const RoughDielectric& top, int ordinates, int modes, int azimuths = 97);
+
+}  // namespace skinlayer
