@@ -5,15 +5,15 @@
 
 #include "app/cli/numbers.h"
 #include "app/material/color_channels.h"
-#include "core/spatial/open_layer_profile.h"
+#include "core/spatial/layer_profile.h"
 
 namespace skinlayer {
 namespace {
 
-// The resolution of the profile: tests/core/spatial/open_layer_profile_test.cpp checks it against the walk and
+// The resolution of the profile: tests/core/spatial/layer_profile_test.cpp checks it against the walk and
 // MCML (within 2.6% or 3 standard errors wherever the profile exceeds 1e-3 of its peak).
-OpenLayerProfileOptions profile_options() {
-  OpenLayerProfileOptions options;
+LayerProfileOptions profile_options() {
+  LayerProfileOptions options;
   options.resolution = {12, 16};
   options.frequencies = 40;
   return options;
@@ -61,7 +61,7 @@ DocumentProfile document_profile(const MaterialDocument& document, std::span<con
   const double mu_t = first.extinction.value_or(1.0);  // unit = mm (mu_t in 1/mm) or mfp (mu_t = 1)
   std::vector<double> in_mfp;
   for (const double r : positions) in_mfp.push_back(r * mu_t);
-  std::vector<OpenLayerProfile> per_solve;
+  std::vector<LayerProfile> per_solve;
   for (const Material& material : solves.materials) per_solve.push_back(profile(material, in_mfp));
   DocumentProfile result;
   result.unit = first.extinction ? "mm" : "mfp";
@@ -87,13 +87,13 @@ DocumentProfile document_profile(const MaterialDocument& document, std::span<con
 
 DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges) {
   return document_profile(document, edges, [](const Material& m, std::span<const double> edges_mfp) {
-    return open_layer_profile(m.tau, m.albedo, m.g, edges_mfp, profile_options());
+    return layer_profile(m.tau, m.albedo, m.g, edges_mfp, profile_options());
   });
 }
 
 DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii) {
   return document_profile(document, radii, [](const Material& m, std::span<const double> radii_mfp) {
-    return open_layer_profile_at(m.tau, m.albedo, m.g, radii_mfp, profile_options());
+    return layer_profile_at(m.tau, m.albedo, m.g, radii_mfp, profile_options());
   });
 }
 

@@ -1,4 +1,4 @@
-// A material document's spatial profile (core/spatial/open_layer_profile.h) per colour channel, in the document's
+// A material document's spatial profile (core/spatial/layer_profile.h) per colour channel, in the document's
 // length unit: what `skinlayer profile` writes and the Python module's Solution.profile returns, through the same
 // code. So far for an open layer only (one layer, no interfaces, an albedo below 1), at normal incidence.
 #pragma once

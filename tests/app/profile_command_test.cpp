@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/spatial/open_layer_profile.h"
+#include "core/spatial/layer_profile.h"
 #include "tests/app/csv_output.h"
 #include "tests/app/error_expectations.h"
 #include "tests/app/process_runner.h"
@@ -18,8 +18,8 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The command's resolution (app/cli/profile_command.cpp), so that the numbers must agree to the last digits.
-OpenLayerProfileOptions command_options() {
-  OpenLayerProfileOptions options;
+LayerProfileOptions command_options() {
+  LayerProfileOptions options;
   options.resolution = {12, 16};
   options.frequencies = 40;
   return options;
@@ -39,7 +39,7 @@ TEST(ProfileCommand, AnnuliInMeanFreePathsAreTheCoresProfile) {
   ASSERT_EQ(csv.rows.size(), 8u);
   std::vector<double> edges;
   for (int i = 0; i <= 8; ++i) edges.push_back(0.25 * i);
-  const OpenLayerProfile expected = open_layer_profile(2.0, 0.9, 0.5, edges, command_options());
+  const LayerProfile expected = layer_profile(2.0, 0.9, 0.5, edges, command_options());
   for (std::size_t i = 0; i < 8; ++i) {
     EXPECT_EQ(csv.rows[i][0], edges[i]);
     EXPECT_EQ(csv.rows[i][1], edges[i + 1]);
@@ -61,7 +61,7 @@ TEST(ProfileCommand, RadiiInMillimetresPerChannel) {
   const double radii_mfp[] = {0.2, 2.0};
   const double albedos[] = {0.95, 0.8, 0.5};
   for (int c = 0; c < 3; ++c) {
-    const OpenLayerProfile expected = open_layer_profile_at(kInf, albedos[c], 0.7, radii_mfp, command_options());
+    const LayerProfile expected = layer_profile_at(kInf, albedos[c], 0.7, radii_mfp, command_options());
     for (std::size_t i = 0; i < 2; ++i) {
       EXPECT_NEAR(csv.rows[i][1 + c], 400.0 * expected.reflectance[i], 1e-9 * 400.0 * expected.reflectance[i]);
       EXPECT_EQ(csv.rows[i][4 + c], 0.0);  // a half-space transmits nothing

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/spatial/lateral_frequency_response.h"
-#include "core/spatial/open_layer_profile.h"
+#include "core/spatial/layer_profile.h"
 
 namespace skinlayer::bench {
 namespace {
@@ -32,16 +32,16 @@ void BM_LateralSingleScattering(benchmark::State& state) {
 }
 BENCHMARK(BM_LateralSingleScattering)->Args({12, 16})->Args({16, 24})->Unit(benchmark::kMillisecond);
 
-// The half-space profile of tests/core/spatial/open_layer_profile_test.cpp: 15 annuli out to 24 mfp, 40 frequencies.
-void BM_OpenLayerProfile(benchmark::State& state) {
+// The half-space profile of tests/core/spatial/layer_profile_test.cpp: 15 annuli out to 24 mfp, 40 frequencies.
+void BM_LayerProfile(benchmark::State& state) {
   const std::vector<double> edges = {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0,  1.5,
                                      2.0, 3.0, 4.0, 6.0,  8.0, 12.0, 16.0, 24.0};
-  OpenLayerProfileOptions options;
+  LayerProfileOptions options;
   options.resolution = {static_cast<int>(state.range(0)), static_cast<int>(state.range(1))};
   options.frequencies = 40;
-  for (auto _ : state) benchmark::DoNotOptimize(open_layer_profile(kInf, 0.99, 0.8, edges, options));
+  for (auto _ : state) benchmark::DoNotOptimize(layer_profile(kInf, 0.99, 0.8, edges, options));
 }
-BENCHMARK(BM_OpenLayerProfile)->Args({12, 16})->Args({16, 24})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_LayerProfile)->Args({12, 16})->Args({16, 24})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace skinlayer::bench

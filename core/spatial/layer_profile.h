@@ -18,15 +18,15 @@
 
 namespace skinlayer {
 
-struct OpenLayerProfileOptions {
+struct LayerProfileOptions {
   LateralFrequencyResolution resolution{16, 24};
   int frequencies = 48;           // samples of R_ms(k)
   double max_frequency = 100.0;   // 1 / mean free path; R_ms is taken as 0 beyond it
   double frequency_scale = 0.01;  // k_s: the grid is uniform in asinh(k / k_s)
 };
 
-struct OpenLayerProfile {
-  // Per annulus [edges[i], edges[i + 1]) (open_layer_profile: the mean over it) or per radius (open_layer_profile_at:
+struct LayerProfile {
+  // Per annulus [edges[i], edges[i + 1]) (layer_profile: the mean over it) or per radius (layer_profile_at:
   // the value there): the light leaving per unit area and unit incident power (1/mfp^2), all scattering orders; the
   // transmittance leaves out the direct beam (a delta at r = 0). Zero for a semi-infinite layer's bottom.
   std::vector<double> reflectance, transmittance;
@@ -36,13 +36,13 @@ struct OpenLayerProfile {
 
 // edges: finite, increasing radii from >= 0, in mean free paths. Throws ParameterError (one line for the user) for bad
 // edges or radii, std::invalid_argument for bad options or layer parameters.
-OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::span<const double> edges,
-                                    const OpenLayerProfileOptions& options = {});
+LayerProfile layer_profile(double tau, double albedo, double g, std::span<const double> edges,
+                           const LayerProfileOptions& options = {});
 
 // The profile at radii r > 0 (mean free paths): single scattering's density plus
 //   R_ms(r) = (1 / 2 pi) int_0^kmax R_ms(k) J0(k r) k dk.
 // At r = 0 the profile is infinite (single scattering grows like 1/r), so radii must be > 0.
-OpenLayerProfile open_layer_profile_at(double tau, double albedo, double g, std::span<const double> radii,
-                                       const OpenLayerProfileOptions& options = {});
+LayerProfile layer_profile_at(double tau, double albedo, double g, std::span<const double> radii,
+                              const LayerProfileOptions& options = {});
 
 }  // namespace skinlayer

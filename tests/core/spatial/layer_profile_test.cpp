@@ -1,9 +1,9 @@
-// The open layer's spatial profile (core/spatial/open_layer_profile.h) against the Monte Carlo reference's exit
+// The open layer's spatial profile (core/spatial/layer_profile.h) against the Monte Carlo reference's exit
 // positions, annulus by annulus, and its single-scattering part against its own transform.
 //
 // Agreement: within 2% of the walk's value, or 3 of its standard errors, in every annulus where the profile exceeds
 // 1e-3 of its peak (the criterion), for reflection and a slab's transmission.
-#include "core/spatial/open_layer_profile.h"
+#include "core/spatial/layer_profile.h"
 
 #include <gtest/gtest.h>
 
@@ -27,15 +27,15 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kMcmlPhotons = 2e6;  // per case, tests/reference/README.md
 
-OpenLayerProfileOptions test_options() {
-  OpenLayerProfileOptions options;
+LayerProfileOptions test_options() {
+  LayerProfileOptions options;
   options.resolution = {12, 16};
   options.frequencies = 40;
   return options;
 }
 
 void expect_profile_matches_the_walk(double tau, double albedo, double g, const std::vector<double>& edges) {
-  const OpenLayerProfile profile = open_layer_profile(tau, albedo, g, edges, test_options());
+  const LayerProfile profile = layer_profile(tau, albedo, g, edges, test_options());
   const Material m = test::index_matched_slab(tau, albedo, g);
   std::vector<RadialBin> bins;
   for (const ExitSide side : {ExitSide::Reflected, ExitSide::Transmitted}) {
@@ -68,13 +68,13 @@ void expect_profile_matches_the_walk(double tau, double albedo, double g, const 
 }
 
 // A weakly absorbing, forward-scattering half-space: light spreads to ~20 mean free paths.
-TEST(OpenLayerProfile, HalfSpaceMatchesTheWalkInEveryAnnulus) {
+TEST(LayerProfile, HalfSpaceMatchesTheWalkInEveryAnnulus) {
   expect_profile_matches_the_walk(
       kInf, 0.99, 0.8, {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0, 24.0});
 }
 
 // A slab: reflection and transmission, both peaked at the beam.
-TEST(OpenLayerProfile, SlabReflectionAndTransmissionMatchTheWalk) {
+TEST(LayerProfile, SlabReflectionAndTransmissionMatchTheWalk) {
   expect_profile_matches_the_walk(2.0, 0.9, 0.5, {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0});
 }
 
@@ -82,7 +82,7 @@ TEST(OpenLayerProfile, SlabReflectionAndTransmissionMatchTheWalk) {
 // independent program's annuli, 0.5 mean free paths wide for the half-space and 0.1 for the slab. Where the profile
 // exceeds 1e-3 of its peak, it agrees within 2% plus 3 times MCML's own noise, which for an annulus that 2e6
 // photons leave through with power P is about 1/sqrt(2e6 P) relative (2% at r = 4 in the slab's thin annuli).
-TEST(OpenLayerProfile, AgreesWithMcmlsAnnuli) {
+TEST(LayerProfile, AgreesWithMcmlsAnnuli) {
   const test::CsvTable mcml = test::read_reference("mcml_open_layers.csv");
   struct Case {
     std::string name;
@@ -98,7 +98,7 @@ TEST(OpenLayerProfile, AgreesWithMcmlsAnnuli) {
         expected.push_back(mcml.number(row, "per_mfp2"));
       }
       if (expected.empty()) continue;
-      const OpenLayerProfile profile = open_layer_profile(c.tau, c.albedo, c.g, edges, test_options());
+      const LayerProfile profile = layer_profile(c.tau, c.albedo, c.g, edges, test_options());
       const std::vector<double>& got = side == "reflectance" ? profile.reflectance : profile.transmittance;
       double peak = 0.0, worst = 0.0;
       for (const double v : got) peak = std::max(peak, v);
@@ -121,7 +121,7 @@ TEST(OpenLayerProfile, AgreesWithMcmlsAnnuli) {
 // The profile at points, averaged over an annulus by quadrature in r, is the annulus's value: the J0 and J1 forms of
 // the inverse transform, and single scattering's density and annulus forms, are independent quadratures of one
 // integral. (Without the roll-off of the transform towards k_max, the J0 form's truncation made them differ by 1%.)
-TEST(OpenLayerProfile, PointValuesAverageToTheAnnuli) {
+TEST(LayerProfile, PointValuesAverageToTheAnnuli) {
   const std::vector<double> edges = {0.2, 0.5, 1.0, 2.0, 5.0, 8.0};
   const QuadratureRule rule = gauss_legendre(24, 0.0, 1.0);
   std::vector<double> radii;
@@ -129,8 +129,8 @@ TEST(OpenLayerProfile, PointValuesAverageToTheAnnuli) {
     for (const double t : rule.nodes) radii.push_back(edges[a] + (edges[a + 1] - edges[a]) * t);
   }
   for (const double tau : {kInf, 1.5}) {
-    const OpenLayerProfile points = open_layer_profile_at(tau, 0.95, 0.7, radii, test_options());
-    const OpenLayerProfile annuli = open_layer_profile(tau, 0.95, 0.7, edges, test_options());
+    const LayerProfile points = layer_profile_at(tau, 0.95, 0.7, radii, test_options());
+    const LayerProfile annuli = layer_profile(tau, 0.95, 0.7, edges, test_options());
     for (std::size_t a = 0; a + 1 < edges.size(); ++a) {
       const double r0 = edges[a], r1 = edges[a + 1];
       double reflected = 0.0, transmitted = 0.0;
@@ -148,14 +148,14 @@ TEST(OpenLayerProfile, PointValuesAverageToTheAnnuli) {
     }
   }
   const double zero[] = {0.0};
-  EXPECT_THROW(open_layer_profile_at(kInf, 0.95, 0.7, zero, test_options()), std::invalid_argument);
+  EXPECT_THROW(layer_profile_at(kInf, 0.95, 0.7, zero, test_options()), std::invalid_argument);
 }
 
 // Far from the source, where diffusion holds, the exact profile takes the diffusion dipole's shape; near it the dipole
 // misses the light scattered a few times. A weakly absorbing half-space (Omega 0.99, g 0.8; the transport mean free
 // path is 4.8 mean free paths): within 6% of the dipole from 16 to 48 mean free paths, and 2-4 times above it inside
 // one transport mean free path. The dipole's own closed-form total checks its formula.
-TEST(OpenLayerProfile, FarFromTheSourceTheShapeIsTheDiffusionDipoles) {
+TEST(LayerProfile, FarFromTheSourceTheShapeIsTheDiffusionDipoles) {
   double dipole_total = 0.0;
   const QuadratureRule rule = gauss_legendre(64, 0.0, 1.0);
   for (int i = 0; i < rule.size(); ++i) {  // r = t / (1 - t) maps [0, 1) onto [0, inf)
@@ -166,9 +166,9 @@ TEST(OpenLayerProfile, FarFromTheSourceTheShapeIsTheDiffusionDipoles) {
   EXPECT_NEAR(dipole_total, diffusion_dipole_total_reflectance(0.99, 0.8), 1e-4 * dipole_total);
 
   const std::vector<double> radii = {0.5, 1.0, 16.0, 24.0, 32.0, 48.0};
-  OpenLayerProfileOptions options = test_options();
+  LayerProfileOptions options = test_options();
   options.frequencies = 48;
-  const OpenLayerProfile exact = open_layer_profile_at(kInf, 0.99, 0.8, radii, options);
+  const LayerProfile exact = layer_profile_at(kInf, 0.99, 0.8, radii, options);
   for (std::size_t i = 0; i < radii.size(); ++i) {
     const double ratio = exact.reflectance[i] / diffusion_dipole_reflectance(0.99, 0.8, radii[i]);
     std::printf("  r %5.1f  exact / dipole %.4f\n", radii[i], ratio);
@@ -182,10 +182,10 @@ TEST(OpenLayerProfile, FarFromTheSourceTheShapeIsTheDiffusionDipoles) {
 
 // The annuli's powers add up to the light that leaves (the profile's integral is R(0)), and single scattering's
 // closed form through all space is its transform at k = 0.
-TEST(OpenLayerProfile, PowersAddUpToTheDirectionalAlbedo) {
+TEST(LayerProfile, PowersAddUpToTheDirectionalAlbedo) {
   std::vector<double> edges = {0.0};
   for (double r = 0.05; r < 120.0; r *= 1.25) edges.push_back(r);
-  const OpenLayerProfile profile = open_layer_profile(kInf, 0.95, 0.6, edges, test_options());
+  const LayerProfile profile = layer_profile(kInf, 0.95, 0.6, edges, test_options());
   double power = 0.0;
   for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
     power += profile.reflectance[i] * kPi * (edges[i + 1] * edges[i + 1] - edges[i] * edges[i]);
@@ -199,8 +199,7 @@ TEST(OpenLayerProfile, PowersAddUpToTheDirectionalAlbedo) {
   // The closed-form transform of the half-space against the panels' one, at k > 0.
   EXPECT_NEAR(single_scattered_transform(kInf, 0.8, 0.3, LayerFace::Top, 2.0),
               single_scattered_transform(60.0, 0.8, 0.3, LayerFace::Top, 2.0), 1e-7);
-  EXPECT_THROW(open_layer_profile(kInf, 0.95, 0.6, std::vector<double>{1.0, 0.5}, test_options()),
-               std::invalid_argument);
+  EXPECT_THROW(layer_profile(kInf, 0.95, 0.6, std::vector<double>{1.0, 0.5}, test_options()), std::invalid_argument);
   EXPECT_THROW(single_scattered_power(kInf, 0.5, 0.0, LayerFace::Bottom, 0.0, 1.0), std::invalid_argument);
 }
 

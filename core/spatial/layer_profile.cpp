@@ -1,5 +1,5 @@
 // docs/model.md §21.7: single scattering in closed form, the rest through k-space.
-#include "core/spatial/open_layer_profile.h"
+#include "core/spatial/layer_profile.h"
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -81,9 +81,9 @@ double point_value(const FrequencySpline& F, double r) {
   return integrate_over_frequency(F, r, [&](double k) { return std::cyl_bessel_j(0.0, k * r) * k; }) / (2.0 * kPi);
 }
 
-void check_options(const OpenLayerProfileOptions& options) {
+void check_options(const LayerProfileOptions& options) {
   if (options.frequencies < 4 || !(options.max_frequency > 0.0) || !(options.frequency_scale > 0.0)) {
-    throw std::invalid_argument("open_layer_profile: needs >= 4 frequencies and positive frequency bounds");
+    throw std::invalid_argument("layer_profile: needs >= 4 frequencies and positive frequency bounds");
   }
 }
 
@@ -94,7 +94,7 @@ struct MultipleScatteringTransforms {
 };
 
 MultipleScatteringTransforms multiple_scattering_transforms(double tau, double albedo, double g,
-                                                            const OpenLayerProfileOptions& options) {
+                                                            const LayerProfileOptions& options) {
   check_options(options);
   const double step = std::asinh(options.max_frequency / options.frequency_scale) / (options.frequencies - 1);
   std::vector<double> reflected(static_cast<std::size_t>(options.frequencies));
@@ -117,10 +117,10 @@ MultipleScatteringTransforms multiple_scattering_transforms(double tau, double a
 
 // The totals, then value(face, transform, i) at each of `count` places (annuli or radii), on both faces.
 template <class Value>
-OpenLayerProfile assemble_profile(double tau, double albedo, double g, const OpenLayerProfileOptions& options,
-                                  std::size_t count, const Value& value) {
+LayerProfile assemble_profile(double tau, double albedo, double g, const LayerProfileOptions& options,
+                              std::size_t count, const Value& value) {
   const MultipleScatteringTransforms ms = multiple_scattering_transforms(tau, albedo, g, options);
-  OpenLayerProfile profile;
+  LayerProfile profile;
   profile.total_reflectance = ms.total_reflectance;
   profile.total_transmittance = ms.total_transmittance;
   for (std::size_t i = 0; i < count; ++i) {
@@ -132,8 +132,8 @@ OpenLayerProfile assemble_profile(double tau, double albedo, double g, const Ope
 
 }  // namespace
 
-OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::span<const double> edges,
-                                    const OpenLayerProfileOptions& options) {
+LayerProfile layer_profile(double tau, double albedo, double g, std::span<const double> edges,
+                           const LayerProfileOptions& options) {
   if (edges.size() < 2 || !(edges.front() >= 0.0) || !std::isfinite(edges.back()) ||
       !std::is_sorted(edges.begin(), edges.end()) || std::adjacent_find(edges.begin(), edges.end()) != edges.end()) {
     throw ParameterError("profile: the annuli's edges must be at least two finite, increasing radii from 0 or more");
@@ -146,8 +146,8 @@ OpenLayerProfile open_layer_profile(double tau, double albedo, double g, std::sp
       });
 }
 
-OpenLayerProfile open_layer_profile_at(double tau, double albedo, double g, std::span<const double> radii,
-                                       const OpenLayerProfileOptions& options) {
+LayerProfile layer_profile_at(double tau, double albedo, double g, std::span<const double> radii,
+                              const LayerProfileOptions& options) {
   if (radii.empty() || !std::all_of(radii.begin(), radii.end(), [](double r) { return r > 0.0 && std::isfinite(r); })) {
     throw ParameterError("profile: radii must be finite and > 0 (the profile is infinite at the beam)");
   }
