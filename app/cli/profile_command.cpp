@@ -69,10 +69,11 @@ std::string profile_usage() {
          "  r_U,reflectance,transmittance\n"
          "in 1/U^2, where U is mm when the layer has its extinction (--mu-t, 1/mm) and mfp, its mean free path,\n"
          "when it has none. An RGB albedo writes reflectance_r, _g, _b and transmittance_r, _g, _b.\n"
-         "So far the layer must be open: one layer, no top interface (--eta 1), an index-matched half-space or\n"
-         "nothing below (--bottom matched), and an albedo below 1. Single scattering, singular at the beam, is exact;\n"
-         "the rest comes from the discrete ordinates in the lateral frequency (docs/model.md section 21), about 2 s\n"
-         "per channel.\n"
+         "So far the material must be one layer with an albedo below 1 and nothing reflecting below it: either\n"
+         "open (--eta 1 --bottom matched) or semi-infinite under its rough top (--T 0). Under a rough top the\n"
+         "reflectance leaves out the interface's own reflection, which leaves at the entry point. Single\n"
+         "scattering, singular at the beam, is exact; the rest comes from the discrete ordinates in the lateral\n"
+         "frequency (docs/model.md section 21), about 2 s per channel.\n"
          "\n"
          "  --incidence normal\n"
          "      the incident beam; normal incidence is the one computed so far.\n"
@@ -82,9 +83,10 @@ std::string profile_usage() {
          "      comma-separated radii > 0 (in U) at which to give the profile, instead of annuli.\n" +
          rgb_albedo_usage() + "\n" + material_flags_usage() +
          "\n"
-         "Example:\n"
+         "Examples:\n"
          "  skinlayer profile --eta 1 --bottom matched --T 0 --albedo 0.99 --g 0.8 --mu-t 10 --annuli 0.05:60\n"
-         "  skinlayer profile --eta 1 --bottom matched --tau 2 --albedo 0.9,0.8,0.6 --radii 0.1,0.5,1,2\n";
+         "  skinlayer profile --eta 1 --bottom matched --tau 2 --albedo 0.9,0.8,0.6 --radii 0.1,0.5,1,2\n"
+         "  skinlayer profile --eta 1.4 --sigma 0.3 --T 0 --albedo 0.95 --g 0.8 --mu-t 20 --annuli 0.02:100\n";
 }
 
 int run_profile_command(std::span<const std::string_view> arguments, std::ostream& out) {

@@ -5,6 +5,7 @@
 
 #include "app/cli/numbers.h"
 #include "app/material/color_channels.h"
+#include "core/interfaces/layer_interfaces.h"
 #include "core/spatial/layer_profile.h"
 
 namespace skinlayer {
@@ -19,13 +20,15 @@ LayerProfileOptions profile_options() {
   return options;
 }
 
-// One line naming what the profile cannot take yet, or nothing for an open layer.
-void require_open_layer(const Material& m) {
+// One line naming what the profile cannot take yet, or nothing for a layer it can: one layer with an albedo below 1,
+// an index-matched half-space or nothing below, and either no top interface or a rough one over a half-space.
+void require_profile_layer(const Material& m) {
   std::string why;
   if (m.layer_count() > 1) {
     why = "it is a stack of " + std::to_string(m.layer_count()) + " layers";
-  } else if (m.eta != 1.0) {
-    why = "it has a top interface (eta " + cli::format_shortest(m.eta) + "; --eta 1 has none)";
+  } else if (m.eta != 1.0 && std::isfinite(m.tau)) {
+    why = "it has a top interface (eta " + cli::format_shortest(m.eta) + ") over a finite layer (tau " +
+          cli::format_shortest(m.tau) + "; --eta 1 has no interface, --T 0 makes the layer semi-infinite)";
   } else if (m.bottom.kind == BottomKind::Lambert) {
     why = "it has a Lambertian base (--bottom " + format_bottom(m.bottom) + ")";
   } else if (m.bottom.kind == BottomKind::Air && m.bottom_eta() != 1.0 && std::isfinite(m.tau)) {
@@ -36,27 +39,35 @@ void require_open_layer(const Material& m) {
   }
   if (why.empty()) return;
   throw ParameterError(
-      "profile: spatial profiles are computed so far for one layer with no interfaces and an albedo "
-      "below 1 (--eta 1 --bottom matched --albedo A < 1), and this material cannot be: " +
+      "profile: spatial profiles are computed so far for one layer with an albedo below 1 and nothing reflecting "
+      "below it, either with no interfaces (--eta 1 --bottom matched) or semi-infinite under a rough top (--T 0), "
+      "and this material cannot be: " +
       why);
 }
 
 // The document's distinct solves and how they make the red, green and blue channels (a grey document: one solve).
-ColorChannels open_layer_solves(const MaterialDocument& document) {
+ColorChannels profile_solves(const MaterialDocument& document) {
   if (document.skin) {
     throw ParameterError(
-        "profile: a skin has a rough top interface, and spatial profiles are computed so far for one "
-        "layer with no interfaces (--eta 1 --bottom matched)");
+        "profile: a skin is a stack of layers, and spatial profiles are computed so far for one layer (no "
+        "interfaces, or semi-infinite under a rough top)");
   }
   ColorChannels solves = color_channels(document);
-  for (const Material& material : solves.materials) require_open_layer(material);
+  for (const Material& material : solves.materials) require_profile_layer(material);
   return solves;
+}
+
+// The material as the profile sees it (core/spatial/layer_profile.h).
+ProfileLayer profile_layer(const Material& m) {
+  ProfileLayer layer{m.tau, m.albedo, m.g};
+  if (m.eta != 1.0) layer.top = top_interface(m);
+  return layer;
 }
 
 template <class Profile>
 DocumentProfile document_profile(const MaterialDocument& document, std::span<const double> positions,
                                  const Profile& profile) {
-  const ColorChannels solves = open_layer_solves(document);
+  const ColorChannels solves = profile_solves(document);
   const Material& first = solves.materials.front();
   const double mu_t = first.extinction.value_or(1.0);  // unit = mm (mu_t in 1/mm) or mfp (mu_t = 1)
   std::vector<double> in_mfp;
@@ -87,13 +98,13 @@ DocumentProfile document_profile(const MaterialDocument& document, std::span<con
 
 DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges) {
   return document_profile(document, edges, [](const Material& m, std::span<const double> edges_mfp) {
-    return layer_profile(m.tau, m.albedo, m.g, edges_mfp, profile_options());
+    return layer_profile(profile_layer(m), edges_mfp, profile_options());
   });
 }
 
 DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii) {
   return document_profile(document, radii, [](const Material& m, std::span<const double> radii_mfp) {
-    return layer_profile_at(m.tau, m.albedo, m.g, radii_mfp, profile_options());
+    return layer_profile_at(profile_layer(m), radii_mfp, profile_options());
   });
 }
 

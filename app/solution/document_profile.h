@@ -1,6 +1,7 @@
 // A material document's spatial profile (core/spatial/layer_profile.h) per colour channel, in the document's
 // length unit: what `skinlayer profile` writes and the Python module's Solution.profile returns, through the same
-// code. So far for an open layer only (one layer, no interfaces, an albedo below 1), at normal incidence.
+// code. So far for one layer with an albedo below 1 and nothing reflecting below it, open (no interfaces) or
+// semi-infinite under a rough top, at normal incidence.
 #pragma once
 
 #include <span>
@@ -20,8 +21,8 @@ struct DocumentProfile {
 };
 
 // The means over the annuli [edges[i], edges[i + 1]) (increasing, from >= 0, in the unit), or the values at radii
-// (> 0, in the unit). Throws ParameterError, naming what it cannot take, for a material other than an open layer
-// (an interface, a base, a stack, a skin, albedo 1) and for bad positions.
+// (> 0, in the unit). Throws ParameterError, naming what it cannot take (a finite layer under a top interface, a
+// bottom interface or base, a stack, a skin, albedo 1), and for bad positions.
 DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges);
 DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii);
 

@@ -1,4 +1,4 @@
-// docs/model.md §21.7: single scattering in closed form, the rest through k-space.
+// docs/model.md §21.7 and §21.10: single scattering in closed form, the rest through k-space.
 #include "core/spatial/layer_profile.h"
 
 #include <Eigen/Core>
@@ -10,6 +10,8 @@
 #include "core/conventions.h"
 #include "core/material.h"
 #include "core/series/quadrature.h"
+#include "core/spatial/lateral_top_interface.h"
+#include "core/spatial/rough_top_single_scattering.h"
 #include "core/spatial/single_scattering_profile.h"
 
 namespace skinlayer {
@@ -87,23 +89,59 @@ void check_options(const LayerProfileOptions& options) {
   }
 }
 
+// The layer as the solves see it: its rough top's operators built once, at the options' resolution.
+struct SolvedLayer {
+  SolvedLayer(const ProfileLayer& described, const LayerProfileOptions& chosen) : layer(described), options(chosen) {
+    check_options(options);
+    if (layer.top) {
+      if (std::isfinite(layer.tau)) {
+        throw ParameterError(
+            "profile: under a rough top, profiles are computed so far for a semi-infinite layer (tau inf)");
+      }
+      top = lateral_top_interface(*layer.top, options.resolution.ordinates, options.resolution.azimuth_modes);
+    }
+  }
+  LateralFrequencyResponse response(double k) const {
+    if (!top) return open_layer_lateral_response(layer.tau, layer.albedo, layer.g, k, options.resolution);
+    return rough_top_lateral_response(layer.tau, layer.albedo, layer.g, *top, k, options.resolution);
+  }
+  // The discrete ordinates' own single scattering at k: R_1 and T_1.
+  LateralFrequencyResponse single_scattering(double k) const {
+    if (!top) return open_layer_single_scattering_response(layer.tau, layer.albedo, layer.g, k, options.resolution);
+    return {rough_top_single_scattering_reflectance(layer.tau, layer.albedo, layer.g, *top, k, options.resolution),
+            0.0};
+  }
+  // Single scattering's power through the annulus [r0, r1) of a face, and its density at r > 0, in closed form.
+  double single_scattered_power(LayerFace face, double r0, double r1) const {
+    if (!top) return skinlayer::single_scattered_power(layer.tau, layer.albedo, layer.g, face, r0, r1);
+    return rough_top_single_scattered_power(layer.albedo, layer.g, *top, options.resolution.ordinates, r0, r1);
+  }
+  double single_scattered_density(LayerFace face, double r) const {
+    if (!top) return skinlayer::single_scattered_density(layer.tau, layer.albedo, layer.g, face, r);
+    return rough_top_single_scattered_density(layer.albedo, layer.g, *top, options.resolution.ordinates, r);
+  }
+
+  ProfileLayer layer;
+  LayerProfileOptions options;
+  std::optional<LateralTopInterface> top;
+};
+
 // The multiply scattered light's transforms, sampled and splined (§21.7), with the totals at k = 0.
 struct MultipleScatteringTransforms {
   FrequencySpline reflected, transmitted;
   double total_reflectance = 0.0, total_transmittance = 0.0;
 };
 
-MultipleScatteringTransforms multiple_scattering_transforms(double tau, double albedo, double g,
-                                                            const LayerProfileOptions& options) {
-  check_options(options);
+MultipleScatteringTransforms multiple_scattering_transforms(const SolvedLayer& solved) {
+  const LayerProfileOptions& options = solved.options;
   const double step = std::asinh(options.max_frequency / options.frequency_scale) / (options.frequencies - 1);
   std::vector<double> reflected(static_cast<std::size_t>(options.frequencies));
   std::vector<double> transmitted(reflected.size());
   double total_reflectance = 0.0, total_transmittance = 0.0;
   for (int i = 0; i < options.frequencies; ++i) {
     const double k = options.frequency_scale * std::sinh(step * i);
-    const LateralFrequencyResponse all = open_layer_lateral_response(tau, albedo, g, k, options.resolution);
-    const LateralFrequencyResponse once = open_layer_single_scattering_response(tau, albedo, g, k, options.resolution);
+    const LateralFrequencyResponse all = solved.response(k);
+    const LateralFrequencyResponse once = solved.single_scattering(k);
     reflected[static_cast<std::size_t>(i)] = all.reflectance - once.reflectance;
     transmitted[static_cast<std::size_t>(i)] = all.transmittance - once.transmittance;
     if (i == 0) {
@@ -115,45 +153,49 @@ MultipleScatteringTransforms multiple_scattering_transforms(double tau, double a
           FrequencySpline(transmitted, step, options.frequency_scale), total_reflectance, total_transmittance};
 }
 
-// The totals, then value(face, transform, i) at each of `count` places (annuli or radii), on both faces.
+// The totals, then value(solved, face, transform, i) at each of `count` places (annuli or radii), on both faces.
 template <class Value>
-LayerProfile assemble_profile(double tau, double albedo, double g, const LayerProfileOptions& options,
-                              std::size_t count, const Value& value) {
-  const MultipleScatteringTransforms ms = multiple_scattering_transforms(tau, albedo, g, options);
+LayerProfile assemble_profile(const ProfileLayer& layer, const LayerProfileOptions& options, std::size_t count,
+                              const Value& value) {
+  const SolvedLayer solved(layer, options);
+  const MultipleScatteringTransforms ms = multiple_scattering_transforms(solved);
   LayerProfile profile;
   profile.total_reflectance = ms.total_reflectance;
   profile.total_transmittance = ms.total_transmittance;
   for (std::size_t i = 0; i < count; ++i) {
-    profile.reflectance.push_back(value(LayerFace::Top, ms.reflected, i));
-    profile.transmittance.push_back(std::isfinite(tau) ? value(LayerFace::Bottom, ms.transmitted, i) : 0.0);
+    profile.reflectance.push_back(value(solved, LayerFace::Top, ms.reflected, i));
+    profile.transmittance.push_back(std::isfinite(layer.tau) ? value(solved, LayerFace::Bottom, ms.transmitted, i)
+                                                             : 0.0);
   }
   return profile;
 }
 
 }  // namespace
 
-LayerProfile layer_profile(double tau, double albedo, double g, std::span<const double> edges,
+LayerProfile layer_profile(const ProfileLayer& layer, std::span<const double> edges,
                            const LayerProfileOptions& options) {
   if (edges.size() < 2 || !(edges.front() >= 0.0) || !std::isfinite(edges.back()) ||
       !std::is_sorted(edges.begin(), edges.end()) || std::adjacent_find(edges.begin(), edges.end()) != edges.end()) {
     throw ParameterError("profile: the annuli's edges must be at least two finite, increasing radii from 0 or more");
   }
   return assemble_profile(
-      tau, albedo, g, options, edges.size() - 1, [&](LayerFace face, const FrequencySpline& transform, std::size_t a) {
+      layer, options, edges.size() - 1,
+      [&](const SolvedLayer& solved, LayerFace face, const FrequencySpline& transform, std::size_t a) {
         const double r0 = edges[a], r1 = edges[a + 1];
-        return (single_scattered_power(tau, albedo, g, face, r0, r1) + annulus_power(transform, r0, r1)) /
+        return (solved.single_scattered_power(face, r0, r1) + annulus_power(transform, r0, r1)) /
                (kPi * (r1 * r1 - r0 * r0));
       });
 }
 
-LayerProfile layer_profile_at(double tau, double albedo, double g, std::span<const double> radii,
+LayerProfile layer_profile_at(const ProfileLayer& layer, std::span<const double> radii,
                               const LayerProfileOptions& options) {
   if (radii.empty() || !std::all_of(radii.begin(), radii.end(), [](double r) { return r > 0.0 && std::isfinite(r); })) {
     throw ParameterError("profile: radii must be finite and > 0 (the profile is infinite at the beam)");
   }
   return assemble_profile(
-      tau, albedo, g, options, radii.size(), [&](LayerFace face, const FrequencySpline& transform, std::size_t i) {
-        return single_scattered_density(tau, albedo, g, face, radii[i]) + point_value(transform, radii[i]);
+      layer, options, radii.size(),
+      [&](const SolvedLayer& solved, LayerFace face, const FrequencySpline& transform, std::size_t i) {
+        return solved.single_scattered_density(face, radii[i]) + point_value(transform, radii[i]);
       });
 }
 

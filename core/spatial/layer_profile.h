@@ -1,22 +1,32 @@
-// The spatially resolved response of an open layer (no interfaces, normal incidence): where a pencil beam's light
-// leaves the top and the bottom, averaged over annuli about the entry point (docs/model.md §21.7). Lengths are in
-// mean free paths.
+// The spatially resolved response of one layer to a pencil beam at normal incidence: where its light leaves the top
+// and the bottom, averaged over annuli about the entry point or at radii (docs/model.md §21.7, §21.10). Lengths are in
+// mean free paths. The layer has an index-matched half-space or nothing below it, and above it no interface (the open
+// layer) or a rough one; under a rough top it must be semi-infinite, so far.
 //
-// Single scattering is singular at r -> 0 and is taken in closed form (single_scattering_profile.h). The rest, the
-// light scattered more than once, is smooth enough for k-space: R_ms(k) = R(k) - R_1(k), where R(k) is the
-// discrete-ordinate response at one frequency (lateral_frequency_response.h) and R_1 its first order in the albedo,
-// the discrete ordinates' own single scattering. Through an annulus, since int_0^a J0(k r) 2 pi r dr =
-// 2 pi a J1(k a) / k, its power is
+// Single scattering is singular at r -> 0 and is taken in closed form (single_scattering_profile.h under an open top,
+// rough_top_single_scattering.h under a rough one). The rest, the light scattered more than once, is smooth enough
+// for k-space: R_ms(k) = R(k) - R_1(k), where R(k) is the discrete-ordinate response at one frequency
+// (lateral_frequency_response.h) and R_1 its first order in the albedo, the discrete ordinates' own single
+// scattering. Through an annulus, since int_0^a J0(k r) 2 pi r dr = 2 pi a J1(k a) / k, its power is
 //   P_ms = int_0^inf R_ms(k) [r1 J1(k r1) - r0 J1(k r0)] dk,
 // integrated over a spline of R_ms on a grid uniform in asinh(k / k_s).
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "core/interfaces/microfacet.h"
 #include "core/spatial/lateral_frequency_response.h"
 
 namespace skinlayer {
+
+struct ProfileLayer {
+  double tau = 0.0;                                   // optical depth; +infinity: semi-infinite
+  double albedo = 0.0;                                // Omega in [0, 1)
+  double g = 0.0;                                     // Henyey-Greenstein asymmetry
+  std::optional<RoughDielectric> top = std::nullopt;  // none: no interface (eta = 1)
+};
 
 struct LayerProfileOptions {
   LateralFrequencyResolution resolution{16, 24};
@@ -30,19 +40,20 @@ struct LayerProfile {
   // the value there): the light leaving per unit area and unit incident power (1/mfp^2), all scattering orders; the
   // transmittance leaves out the direct beam (a delta at r = 0). Zero for a semi-infinite layer's bottom.
   std::vector<double> reflectance, transmittance;
-  // The same light's totals at k = 0 (the directional albedo's subsurface part at normal incidence).
+  // The same light's totals at k = 0: the directional albedo's subsurface part at normal incidence, less the rough
+  // top's own multiply scattered reflection, which leaves at the entry point (LateralTopInterface).
   double total_reflectance = 0.0, total_transmittance = 0.0;
 };
 
 // edges: finite, increasing radii from >= 0, in mean free paths. Throws ParameterError (one line for the user) for bad
-// edges or radii, std::invalid_argument for bad options or layer parameters.
-LayerProfile layer_profile(double tau, double albedo, double g, std::span<const double> edges,
+// edges or radii and for a finite layer under a rough top, std::invalid_argument for bad options or layer parameters.
+LayerProfile layer_profile(const ProfileLayer& layer, std::span<const double> edges,
                            const LayerProfileOptions& options = {});
 
 // The profile at radii r > 0 (mean free paths): single scattering's density plus
 //   R_ms(r) = (1 / 2 pi) int_0^kmax R_ms(k) J0(k r) k dk.
 // At r = 0 the profile is infinite (single scattering grows like 1/r), so radii must be > 0.
-LayerProfile layer_profile_at(double tau, double albedo, double g, std::span<const double> radii,
+LayerProfile layer_profile_at(const ProfileLayer& layer, std::span<const double> radii,
                               const LayerProfileOptions& options = {});
 
 }  // namespace skinlayer

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/interfaces/layer_interfaces.h"
 #include "core/spatial/layer_profile.h"
 #include "tests/app/csv_output.h"
 #include "tests/app/error_expectations.h"
@@ -39,7 +40,7 @@ TEST(ProfileCommand, AnnuliInMeanFreePathsAreTheCoresProfile) {
   ASSERT_EQ(csv.rows.size(), 8u);
   std::vector<double> edges;
   for (int i = 0; i <= 8; ++i) edges.push_back(0.25 * i);
-  const LayerProfile expected = layer_profile(2.0, 0.9, 0.5, edges, command_options());
+  const LayerProfile expected = layer_profile({2.0, 0.9, 0.5}, edges, command_options());
   for (std::size_t i = 0; i < 8; ++i) {
     EXPECT_EQ(csv.rows[i][0], edges[i]);
     EXPECT_EQ(csv.rows[i][1], edges[i + 1]);
@@ -61,7 +62,7 @@ TEST(ProfileCommand, RadiiInMillimetresPerChannel) {
   const double radii_mfp[] = {0.2, 2.0};
   const double albedos[] = {0.95, 0.8, 0.5};
   for (int c = 0; c < 3; ++c) {
-    const LayerProfile expected = layer_profile_at(kInf, albedos[c], 0.7, radii_mfp, command_options());
+    const LayerProfile expected = layer_profile_at({kInf, albedos[c], 0.7}, radii_mfp, command_options());
     for (std::size_t i = 0; i < 2; ++i) {
       EXPECT_NEAR(csv.rows[i][1 + c], 400.0 * expected.reflectance[i], 1e-9 * 400.0 * expected.reflectance[i]);
       EXPECT_EQ(csv.rows[i][4 + c], 0.0);  // a half-space transmits nothing
@@ -69,6 +70,26 @@ TEST(ProfileCommand, RadiiInMillimetresPerChannel) {
   }
   EXPECT_GT(csv.rows[0][1], csv.rows[1][1]);  // the profile falls away from the beam
   EXPECT_GT(csv.rows[0][1], csv.rows[0][3]);  // and with the albedo
+}
+
+// A half-space under a rough top: the core's profile with the material's own top interface.
+TEST(ProfileCommand, RoughTopHalfSpaceIsTheCoresProfile) {
+  const ProcessResult result =
+      profile({"--eta", "1.4", "--sigma", "0.4", "--T", "0", "--albedo", "0.95", "--g", "0.8", "--radii", "0.5,2"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const CsvOutput csv = parse_csv_output(result.out);
+  ASSERT_EQ(csv.rows.size(), 2u);
+  Material m;
+  m.eta = 1.4;
+  m.sigma = 0.4;
+  ProfileLayer layer{kInf, 0.95, 0.8};
+  layer.top = top_interface(m);
+  const double radii[] = {0.5, 2.0};
+  const LayerProfile expected = layer_profile_at(layer, radii, command_options());
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(csv.rows[i][1], expected.reflectance[i], 1e-12 * expected.reflectance[i]);
+    EXPECT_EQ(csv.rows[i][2], 0.0);
+  }
 }
 
 // An RGB albedo with two equal channels is solved once per distinct channel, and still writes three columns.
@@ -92,12 +113,13 @@ TEST(ProfileCommand, WhatItCannotTakeIsOneLine) {
     flags.insert(flags.end(), more.begin(), more.end());
     return profile(flags);
   };
-  EXPECT_TRUE(failed_with_one_line(profile({"--albedo", "0.9"}), 2, {"top interface", "eta 1.4", "--eta 1"}));
+  EXPECT_TRUE(failed_with_one_line(profile({"--albedo", "0.9", "--T", "0.5"}), 2,
+                                   {"top interface", "eta 1.4", "finite layer", "--eta 1", "--T 0"}));
   EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--bottom", "lambert:0.5", "--albedo", "0.9"}), 2,
                                    {"Lambertian base"}));
   EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--bottom", "matched"}), 2, {"albedo is 1"}));
   EXPECT_TRUE(failed_with_one_line(profile({"--preset", "skin-two-layer"}), 2, {"stack of 2 layers"}));
-  EXPECT_TRUE(failed_with_one_line(profile({"--skin", "melanin=0.05"}), 2, {"skin", "rough top"}));
+  EXPECT_TRUE(failed_with_one_line(profile({"--skin", "melanin=0.05"}), 2, {"skin", "stack"}));
   EXPECT_TRUE(failed_with_one_line(with({"--radii", "0,1"}), 2, {"radii", "'0'", "> 0"}));
   EXPECT_TRUE(failed_with_one_line(with({"--radii", "-1"}), 2, {"radii", "> 0"}));
   EXPECT_TRUE(failed_with_one_line(with({"--annuli", "0.1"}), 2, {"annuli", "DR:N"}));

@@ -39,7 +39,7 @@ void BM_LayerProfile(benchmark::State& state) {
   LayerProfileOptions options;
   options.resolution = {static_cast<int>(state.range(0)), static_cast<int>(state.range(1))};
   options.frequencies = 40;
-  for (auto _ : state) benchmark::DoNotOptimize(layer_profile(kInf, 0.99, 0.8, edges, options));
+  for (auto _ : state) benchmark::DoNotOptimize(layer_profile({kInf, 0.99, 0.8}, edges, options));
 }
 BENCHMARK(BM_LayerProfile)->Args({12, 16})->Args({16, 24})->Unit(benchmark::kMillisecond);
 

@@ -1,8 +1,6 @@
 // The open layer's spatial profile (core/spatial/layer_profile.h) against the Monte Carlo reference's exit
-// positions, annulus by annulus, and its single-scattering part against its own transform.
-//
-// Agreement: within 2% of the walk's value, or 3 of its standard errors, in every annulus where the profile exceeds
-// 1e-3 of its peak (the issue's criterion), for reflection and a slab's transmission.
+// positions annulus by annulus (tests/core/spatial/profile_against_walk.h), against MCML and the diffusion dipole, and
+// its single-scattering part against its own transform.
 #include "core/spatial/layer_profile.h"
 
 #include <gtest/gtest.h>
@@ -15,11 +13,11 @@
 
 #include "core/conventions.h"
 #include "core/reference/diffusion_dipole.h"
-#include "core/reference/monte_carlo.h"
 #include "core/series/quadrature.h"
 #include "core/spatial/single_scattering_profile.h"
 #include "tests/core/index_matched_slab.h"
 #include "tests/core/reference_csv.h"
+#include "tests/core/spatial/profile_against_walk.h"
 
 namespace skinlayer {
 namespace {
@@ -34,48 +32,17 @@ LayerProfileOptions test_options() {
   return options;
 }
 
-void expect_profile_matches_the_walk(double tau, double albedo, double g, const std::vector<double>& edges) {
-  const LayerProfile profile = layer_profile(tau, albedo, g, edges, test_options());
-  const Material m = test::index_matched_slab(tau, albedo, g);
-  std::vector<RadialBin> bins;
-  for (const ExitSide side : {ExitSide::Reflected, ExitSide::Transmitted}) {
-    for (std::size_t i = 0; i + 1 < edges.size(); ++i) bins.push_back({side, edges[i], edges[i + 1]});
-  }
-  MonteCarloOptions options;
-  options.paths = 1'000'000;
-  options.seed = 11;
-  const MonteCarloResult mc = simulate_layer(m, 0.0, {}, options, bins);
-  EXPECT_NEAR(profile.total_reflectance, mc.reflectance_subsurface.value,
-              4.0 * mc.reflectance_subsurface.standard_error);
-  const std::size_t annuli = edges.size() - 1;
-  for (const ExitSide side : {ExitSide::Reflected, ExitSide::Transmitted}) {
-    const std::vector<double>& values = side == ExitSide::Reflected ? profile.reflectance : profile.transmittance;
-    if (std::isinf(tau) && side == ExitSide::Transmitted) continue;
-    double peak = 0.0;
-    for (const double v : values) peak = std::max(peak, v);
-    for (std::size_t i = 0; i < annuli; ++i) {
-      const MonteCarloEstimate& walk = mc.radial_bins[(side == ExitSide::Reflected ? 0 : annuli) + i];
-      const double diff = values[i] - walk.value;
-      std::printf("  %s [%5.2f, %5.2f)  profile %.4e  walk %.4e +- %.1e  (%+.2f%%, %+.2f SE)\n",
-                  side == ExitSide::Reflected ? "R" : "T", edges[i], edges[i + 1], values[i], walk.value,
-                  walk.standard_error, 100.0 * diff / walk.value, diff / walk.standard_error);
-      if (values[i] < 1e-3 * peak) continue;
-      EXPECT_TRUE(std::abs(diff) <= 0.02 * walk.value || std::abs(diff) <= 3.0 * walk.standard_error)
-          << (side == ExitSide::Reflected ? "R" : "T") << " annulus [" << edges[i] << ", " << edges[i + 1]
-          << "): profile " << values[i] << ", walk " << walk.value << " +- " << walk.standard_error;
-    }
-  }
-}
-
 // A weakly absorbing, forward-scattering half-space: light spreads to ~20 mean free paths.
 TEST(LayerProfile, HalfSpaceMatchesTheWalkInEveryAnnulus) {
-  expect_profile_matches_the_walk(
-      kInf, 0.99, 0.8, {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0, 24.0});
+  test::expect_profile_matches_the_walk(
+      {kInf, 0.99, 0.8}, test::index_matched_slab(kInf, 0.99, 0.8), test_options(),
+      {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0, 24.0});
 }
 
 // A slab: reflection and transmission, both peaked at the beam.
 TEST(LayerProfile, SlabReflectionAndTransmissionMatchTheWalk) {
-  expect_profile_matches_the_walk(2.0, 0.9, 0.5, {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0});
+  test::expect_profile_matches_the_walk({2.0, 0.9, 0.5}, test::index_matched_slab(2.0, 0.9, 0.5), test_options(),
+                                        {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0});
 }
 
 // MCML 1.2.2 (Wang, Jacques & Zheng 1995), run on the same two open layers (tests/reference/README.md): an
@@ -98,7 +65,7 @@ TEST(LayerProfile, AgreesWithMcmlsAnnuli) {
         expected.push_back(mcml.number(row, "per_mfp2"));
       }
       if (expected.empty()) continue;
-      const LayerProfile profile = layer_profile(c.tau, c.albedo, c.g, edges, test_options());
+      const LayerProfile profile = layer_profile({c.tau, c.albedo, c.g}, edges, test_options());
       const std::vector<double>& got = side == "reflectance" ? profile.reflectance : profile.transmittance;
       double peak = 0.0, worst = 0.0;
       for (const double v : got) peak = std::max(peak, v);
@@ -129,8 +96,8 @@ TEST(LayerProfile, PointValuesAverageToTheAnnuli) {
     for (const double t : rule.nodes) radii.push_back(edges[a] + (edges[a + 1] - edges[a]) * t);
   }
   for (const double tau : {kInf, 1.5}) {
-    const LayerProfile points = layer_profile_at(tau, 0.95, 0.7, radii, test_options());
-    const LayerProfile annuli = layer_profile(tau, 0.95, 0.7, edges, test_options());
+    const LayerProfile points = layer_profile_at({tau, 0.95, 0.7}, radii, test_options());
+    const LayerProfile annuli = layer_profile({tau, 0.95, 0.7}, edges, test_options());
     for (std::size_t a = 0; a + 1 < edges.size(); ++a) {
       const double r0 = edges[a], r1 = edges[a + 1];
       double reflected = 0.0, transmitted = 0.0;
@@ -148,7 +115,7 @@ TEST(LayerProfile, PointValuesAverageToTheAnnuli) {
     }
   }
   const double zero[] = {0.0};
-  EXPECT_THROW(layer_profile_at(kInf, 0.95, 0.7, zero, test_options()), std::invalid_argument);
+  EXPECT_THROW(layer_profile_at({kInf, 0.95, 0.7}, zero, test_options()), std::invalid_argument);
 }
 
 // Far from the source, where diffusion holds, the exact profile takes the diffusion dipole's shape; near it the dipole
@@ -168,7 +135,7 @@ TEST(LayerProfile, FarFromTheSourceTheShapeIsTheDiffusionDipoles) {
   const std::vector<double> radii = {0.5, 1.0, 16.0, 24.0, 32.0, 48.0};
   LayerProfileOptions options = test_options();
   options.frequencies = 48;
-  const LayerProfile exact = layer_profile_at(kInf, 0.99, 0.8, radii, options);
+  const LayerProfile exact = layer_profile_at({kInf, 0.99, 0.8}, radii, options);
   for (std::size_t i = 0; i < radii.size(); ++i) {
     const double ratio = exact.reflectance[i] / diffusion_dipole_reflectance(0.99, 0.8, radii[i]);
     std::printf("  r %5.1f  exact / dipole %.4f\n", radii[i], ratio);
@@ -185,7 +152,7 @@ TEST(LayerProfile, FarFromTheSourceTheShapeIsTheDiffusionDipoles) {
 TEST(LayerProfile, PowersAddUpToTheDirectionalAlbedo) {
   std::vector<double> edges = {0.0};
   for (double r = 0.05; r < 120.0; r *= 1.25) edges.push_back(r);
-  const LayerProfile profile = layer_profile(kInf, 0.95, 0.6, edges, test_options());
+  const LayerProfile profile = layer_profile({kInf, 0.95, 0.6}, edges, test_options());
   double power = 0.0;
   for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
     power += profile.reflectance[i] * kPi * (edges[i + 1] * edges[i + 1] - edges[i] * edges[i]);
@@ -199,7 +166,7 @@ TEST(LayerProfile, PowersAddUpToTheDirectionalAlbedo) {
   // The closed-form transform of the half-space against the panels' one, at k > 0.
   EXPECT_NEAR(single_scattered_transform(kInf, 0.8, 0.3, LayerFace::Top, 2.0),
               single_scattered_transform(60.0, 0.8, 0.3, LayerFace::Top, 2.0), 1e-7);
-  EXPECT_THROW(layer_profile(kInf, 0.95, 0.6, std::vector<double>{1.0, 0.5}, test_options()), std::invalid_argument);
+  EXPECT_THROW(layer_profile({kInf, 0.95, 0.6}, std::vector<double>{1.0, 0.5}, test_options()), std::invalid_argument);
   EXPECT_THROW(single_scattered_power(kInf, 0.5, 0.0, LayerFace::Bottom, 0.0, 1.0), std::invalid_argument);
 }
 

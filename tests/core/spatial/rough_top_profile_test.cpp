@@ -1,0 +1,114 @@
+// The profile of a half-space under a rough top (core/spatial/layer_profile.h with ProfileLayer::top): against the
+// Monte Carlo reference, whose walk crosses the same rough interface facet by facet, against the BSDF's subsurface
+// reflectance, and its point and annulus forms against each other.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <vector>
+
+#include "core/conventions.h"
+#include "core/interfaces/layer_interfaces.h"
+#include "core/material.h"
+#include "core/series/quadrature.h"
+#include "core/solver.h"
+#include "core/spatial/lateral_top_interface.h"
+#include "core/spatial/layer_profile.h"
+#include "tests/core/index_matched_slab.h"
+#include "tests/core/spatial/profile_against_walk.h"
+
+namespace skinlayer {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+LayerProfileOptions test_options() {
+  LayerProfileOptions options;
+  options.resolution = {12, 16};
+  options.frequencies = 40;
+  return options;
+}
+
+Material rough_half_space(double sigma, double albedo, double g) {
+  Material m = test::index_matched_slab(kInf, albedo, g);
+  m.eta = 1.4;
+  m.sigma = sigma;
+  return m;
+}
+
+ProfileLayer as_profile_layer(const Material& m) {
+  ProfileLayer layer{m.tau, m.albedo, m.g};
+  layer.top = top_interface(m);
+  return layer;
+}
+
+const std::vector<double> kEdges = {0.0, 0.05, 0.1, 0.2, 0.35, 0.5,  0.75, 1.0, 1.5,
+                                    2.0, 3.0,  4.0, 6.0, 8.0,  12.0, 16.0, 24.0};
+
+// Skin-like: a weakly absorbing, forward-scattering half-space under a fairly smooth top.
+TEST(RoughTopProfile, ForwardScatteringHalfSpaceMatchesTheWalk) {
+  const Material m = rough_half_space(0.3, 0.99, 0.8);
+  test::expect_profile_matches_the_walk(as_profile_layer(m), m, test_options(), kEdges);
+}
+
+// A rougher top over a more absorbing, less forward medium: the light stays near the beam.
+TEST(RoughTopProfile, RoughTopOverAnAbsorbingHalfSpaceMatchesTheWalk) {
+  const Material m = rough_half_space(0.8, 0.9, 0.5);
+  test::expect_profile_matches_the_walk(as_profile_layer(m), m, test_options(), kEdges);
+}
+
+// The annuli's powers through all space add up to R(0), and R(0) plus the top's own multiply scattered reflection
+// (which leaves at the entry point) is the BSDF's subsurface reflectance at normal incidence, on the same ordinates.
+TEST(RoughTopProfile, PowersAddUpToTheDirectionalAlbedo) {
+  Material m = rough_half_space(0.5, 0.95, 0.6);
+  m.ordinates = 12;
+  std::vector<double> edges = {0.0};
+  for (double r = 0.05; r < 120.0; r *= 1.25) edges.push_back(r);
+  const LayerProfile profile = layer_profile(as_profile_layer(m), edges, test_options());
+  double power = 0.0;
+  for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
+    power += profile.reflectance[i] * kPi * (edges[i + 1] * edges[i + 1] - edges[i] * edges[i]);
+  }
+  const double theta[] = {0.0};
+  const DirectionalAlbedo albedo = directional_albedo(m, theta).front();
+  const double surface = lateral_top_interface(top_interface(m), 12, 16).surface_multiple_reflectance;
+  std::printf("  through r < %.1f: %.8f   R(0): %.8f   solver less the surface's: %.8f\n", edges.back(), power,
+              profile.total_reflectance, albedo.reflectance_subsurface - surface);
+  EXPECT_NEAR(power, profile.total_reflectance, 1e-6);
+  EXPECT_NEAR(profile.total_reflectance, albedo.reflectance_subsurface - surface, 1e-6);
+}
+
+// Point values averaged over an annulus (Gauss-Legendre in r) are the annulus's value.
+TEST(RoughTopProfile, PointValuesAverageToTheAnnuli) {
+  const ProfileLayer layer = as_profile_layer(rough_half_space(0.4, 0.95, 0.7));
+  const std::vector<double> edges = {0.1, 0.3, 1.0, 3.0, 8.0};
+  const QuadratureRule rule = gauss_legendre(24, 0.0, 1.0);
+  std::vector<double> radii;
+  for (std::size_t a = 0; a + 1 < edges.size(); ++a) {
+    for (const double t : rule.nodes) radii.push_back(edges[a] + (edges[a + 1] - edges[a]) * t);
+  }
+  const LayerProfile points = layer_profile_at(layer, radii, test_options());
+  const LayerProfile annuli = layer_profile(layer, edges, test_options());
+  for (std::size_t a = 0; a + 1 < edges.size(); ++a) {
+    const double r0 = edges[a], r1 = edges[a + 1];
+    double reflected = 0.0;
+    for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
+      const std::size_t at = a * rule.nodes.size() + i;
+      reflected += rule.weights[i] * (r1 - r0) * 2.0 * kPi * radii[at] * points.reflectance[at];
+    }
+    const double mean = reflected / (kPi * (r1 * r1 - r0 * r0));
+    EXPECT_NEAR(mean, annuli.reflectance[a], 1e-5 * annuli.reflectance[a] + 1e-7) << r0;
+    EXPECT_EQ(points.transmittance[a], 0.0);
+  }
+}
+
+TEST(RoughTopProfile, AFiniteLayerUnderARoughTopIsRefused) {
+  ProfileLayer layer = as_profile_layer(rough_half_space(0.4, 0.95, 0.7));
+  layer.tau = 2.0;
+  const double radii[] = {1.0};
+  EXPECT_THROW(layer_profile_at(layer, radii, test_options()), ParameterError);
+}
+
+}  // namespace
+}  // namespace skinlayer
