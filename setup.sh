@@ -85,10 +85,14 @@ sanitize_skipped_tests=(
   'StackSolver\.StackBrdfIsReciprocal'
   'StackSolver\.CuttingASlabIntoIdenticalSlabsChangesNothing'
   'ReferenceTables\.DisortIntensities'                                       # the van de Hulst tables
-  'OpenLayerProfile\.HalfSpaceMatchesTheWalkInEveryAnnulus'                  # the other OpenLayerProfile ones
-  'OpenLayerProfile\.SlabReflectionAndTransmissionMatchTheWalk'
-  'OpenLayerProfile\.AgreesWithMcmlsAnnuli'
-  'OpenLayerProfile\.PointValuesAverageToTheAnnuli'
+  'LayerProfile\.HalfSpaceMatchesTheWalkInEveryAnnulus'                      # the other LayerProfile ones
+  'LayerProfile\.SlabReflectionAndTransmissionMatchTheWalk'
+  'LayerProfile\.AgreesWithMcmlsAnnuli'
+  'LayerProfile\.PointValuesAverageToTheAnnuli'
+  'RoughTopProfile\.ForwardScatteringHalfSpaceMatchesTheWalk'                # the other RoughTopProfile ones
+  'RoughTopProfile\.RoughTopOverAnAbsorbingHalfSpaceMatchesTheWalk'
+  'RoughTopProfile\.PointValuesAverageToTheAnnuli'
+  'RoughTopSingleScattering\.IsTheFirstOrderInTheAlbedoOfTheFullSolve'       # its other checks
   'LateralFrequencyResponse\.WeakScatteringIsTheClosedFormOfSingleScatteringAtEveryFrequency'  # its other checks
 )
 sanitize_skipped="^($(IFS='|'; echo "${sanitize_skipped_tests[*]}"))$"
