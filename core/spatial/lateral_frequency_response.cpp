@@ -1,261 +1,177 @@
-// docs/model.md §21: the discrete-ordinate system of one lateral spatial frequency, its eigen-solution and the
-// open layer's boundary conditions.
+// docs/model.md §21.4, §21.9 and §21.11: slabs at one lateral frequency joined through their faces, under an open or
+// a rough top, and the fluxes out of the stack.
 #include "core/spatial/lateral_frequency_response.h"
 
 #include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
-#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/conventions.h"
-#include "core/medium/henyey_greenstein.h"
-#include "core/series/fourier.h"
 #include "core/series/quadrature.h"
+#include "core/spatial/lateral_slab_modes.h"
 #include "core/spatial/lateral_top_interface.h"
 
 namespace skinlayer {
 namespace {
 
-// The state: cosine modes m of I = sum_m i^m a_m(tau, mu) cos(m phi), each at the nodes down (+mu_j) then up
-// (-mu_j). With the factor i^m the k.s term couples the modes with real coefficients (§21.2).
-struct Layout {
-  int nodes = 0;  // N
-  int modes = 0;  // M
-  int size() const { return 2 * nodes * modes; }
-  int at(int m, int up, int j) const { return (m * 2 + up) * nodes + j; }
-};
-
 void check(bool ok, const std::string& message) {
-  if (!ok) throw std::invalid_argument("open_layer_lateral_response: " + message);
+  if (!ok) throw std::invalid_argument("lateral_stack_response: " + message);
 }
 
-// The solve with the albedo in the scattering operator and in the beam's source given apart: operator_albedo = 0
-// with source_albedo = Omega is the first order in Omega, single scattering, exactly. Under a rough top (`top` not
-// null) there is no collimated beam: the light enters as the top's node radiance, and source_albedo is unused.
-LateralFrequencyResponse lateral_response(double tau, double operator_albedo, double source_albedo, double g, double k,
-                                          const LateralFrequencyResolution& resolution,
-                                          const LateralTopInterface* top = nullptr) {
-  check(tau >= 0.0, "tau must be >= 0 (+inf: semi-infinite)");
-  check(operator_albedo >= 0.0 && operator_albedo < 1.0, "albedo must be in [0, 1)");
-  check(source_albedo >= 0.0 && source_albedo <= 1.0, "albedo must be in [0, 1]");
-  check(std::abs(g) <= 0.95, "g must be in [-0.95, 0.95]");
+// One slab of the solve: its modes, its depth, where its unknowns start, and the collimated beam's flux at its top.
+struct SolvedSlab {
+  LateralSlabModes modes;
+  double tau = 0.0;
+  int offset = 0;  // the first unknown: decaying modes (weights referred to the top), then growing ones (to the bottom)
+  int count = 0;   // n, or n / 2 for a semi-infinite slab (decaying only)
+  double beam = 0;  // e^{-(optical depth above)} under an open top, else 0
+
+  // Column c's solution at node row `row` and depth t in the slab.
+  std::complex<double> column(int c, int row, double t) const {
+    const std::complex<double> rate = modes.lambda(c);
+    const int h = static_cast<int>(modes.lambda.size()) / 2;
+    return modes.vectors(row, c) * std::exp(-rate * (c < h ? t : t - tau));
+  }
+  double particular(int row, double t) const { return beam == 0.0 ? 0.0 : beam * modes.beam(row) * std::exp(-t); }
+};
+
+// The solve with the albedo in the scattering operator scaled by operator_scale (1, or 0 for the first order in Omega
+// under an open top, whose beam source keeps its albedo).
+LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, double operator_scale,
+                                        const LateralTopInterface* top, double k,
+                                        const LateralFrequencyResolution& resolution) {
+  check(!slabs.empty(), "needs at least one slab");
   check(k >= 0.0 && std::isfinite(k), "k must be finite and >= 0");
   check(resolution.ordinates >= 2 && resolution.azimuth_modes >= 1, "resolution needs >= 2 ordinates and >= 1 mode");
+  for (std::size_t l = 0; l < slabs.size(); ++l) {
+    check(slabs[l].tau >= 0.0, "tau must be >= 0");
+    check(std::isfinite(slabs[l].tau) || l + 1 == slabs.size(), "only the last slab can be semi-infinite");
+    check(slabs[l].relative_extinction > 0.0 && std::isfinite(slabs[l].relative_extinction),
+          "the relative extinction must be finite and > 0");
+  }
   if (top != nullptr) {
     check(top->source.size() == resolution.ordinates && top->exit.size() == resolution.ordinates &&
               static_cast<int>(top->reflection.size()) >= resolution.azimuth_modes,
           "the top interface's operators were built for another resolution");
   }
-  if (tau == 0.0) return {};
-
   const QuadratureRule q = double_gauss_half_range(resolution.ordinates);
-  const Layout layout{resolution.ordinates, resolution.azimuth_modes};
-  const int N = layout.nodes, M = layout.modes, n = layout.size();
-  const bool semi_infinite = std::isinf(tau);
+  const LateralLayout layout{resolution.ordinates, resolution.azimuth_modes};
+  const int N = layout.nodes, M = layout.modes, n = layout.size(), h = n / 2;
 
-  const PhaseMatrices phase = lateral_phase_matrices(g, q, M);
-  const Eigen::MatrixXd coupling = lateral_mode_coupling(M);
+  std::vector<SolvedSlab> solved;
+  int unknowns = 0;
+  double above = 0.0;  // optical depth above the slab
+  for (const LateralSlab& slab : slabs) {
+    if (slab.tau == 0.0) continue;
+    SolvedSlab s;
+    // k is per mean free path of the first slab; in this slab's own it is k mu_t,first / mu_t.
+    s.modes = lateral_slab_modes(operator_scale * slab.albedo, top ? 0.0 : slab.albedo, slab.g,
+                                 k / slab.relative_extinction, q, M);
+    s.tau = slab.tau;
+    s.offset = unknowns;
+    s.count = std::isinf(slab.tau) ? h : n;
+    s.beam = top ? 0.0 : std::exp(-above);
+    unknowns += s.count;
+    above += slab.tau;
+    solved.push_back(std::move(s));
+  }
+  if (solved.empty()) return {};
 
-  // L U = (1 + k sin(theta) C) U - Omega S U, and A = D^-1 L with D = diag(signed mu): dU/dtau = -A U + D^-1 s e^-tau.
-  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);
-  for (int m = 0; m < M; ++m) {
-    const double c_m = fourier_azimuth_weight(m);
-    for (int up = 0; up < 2; ++up) {
-      for (int i = 0; i < N; ++i) {
-        const int row = layout.at(m, up, i);
-        const double sin_theta = std::sqrt(std::max(0.0, 1.0 - q.nodes[i] * q.nodes[i]));
-        A(row, row) += 1.0;
-        if (m >= 1) A(row, layout.at(m - 1, up, i)) += k * sin_theta * coupling(m, m - 1);
-        if (m + 1 < M) A(row, layout.at(m + 1, up, i)) += k * sin_theta * coupling(m, m + 1);
-        for (int from_up = 0; from_up < 2; ++from_up) {
-          const Eigen::MatrixXd& p =
-              from_up == up ? phase.same[static_cast<std::size_t>(m)] : phase.opposite[static_cast<std::size_t>(m)];
-          for (int j = 0; j < N; ++j)
-            A(row, layout.at(m, from_up, j)) -= operator_albedo * c_m * q.weights[j] * p(i, j);
-        }
-      }
-    }
-  }
-  Eigen::VectorXd source = Eigen::VectorXd::Zero(n);  // D^-1 s: the beam's first scattering, mode 0
-  double scattered = 0.0;
-  for (int j = 0; j < N; ++j) {
-    scattered += q.weights[j] * (henyey_greenstein(q.nodes[j], g) + henyey_greenstein(-q.nodes[j], g));
-  }
-  const double norm = 1.0 / (2.0 * kPi * scattered);  // the quadrature scatters exactly what the beam loses
-  for (int up = 0; up < 2; ++up) {
-    for (int i = 0; i < N; ++i) {
-      const double mu = up ? -q.nodes[i] : q.nodes[i];
-      source(layout.at(0, up, i)) = top ? 0.0 : source_albedo * henyey_greenstein(mu, g) * norm / mu;
-    }
-  }
-  for (int row = 0; row < n; ++row) {
-    const int i = row % N;
-    const bool up = (row / N) % 2 == 1;
-    A.row(row) /= up ? -q.nodes[i] : q.nodes[i];
-  }
-
-  // Particular solution X e^-tau: (A - 1) X = D^-1 s.
-  const Eigen::VectorXd X = (A - Eigen::MatrixXd::Identity(n, n)).partialPivLu().solve(source);
-
-  // Homogeneous solutions v e^{-lambda tau}, at half size (§21.3). Within each mode block A is
-  // [[D^-1 L1, D^-1 L2], [-D^-1 L2, -D^-1 L1]] (down, up); for S = v_down + v_up and Delta = v_down - v_up,
-  //   lambda^2 S = D^-1 (L1 - L2) D^-1 (L1 + L2) S,   Delta = D^-1 (L1 + L2) S / lambda,
-  // and -lambda swaps v_down and v_up. Here the blocks are gathered over the modes.
-  const int h = n / 2;
-  std::vector<int> down_rows, up_rows;
-  for (int m = 0; m < M; ++m) {
-    for (int i = 0; i < N; ++i) {
-      down_rows.push_back(layout.at(m, 0, i));
-      up_rows.push_back(layout.at(m, 1, i));
-    }
-  }
-  Eigen::MatrixXd P(h, h), Q(h, h);  // D^-1 (L1 + L2) and D^-1 (L1 - L2): A's down rows are D^-1 (L1, L2)
-  for (int r = 0; r < h; ++r) {
-    for (int c = 0; c < h; ++c) {
-      const double same = A(down_rows[static_cast<std::size_t>(r)], down_rows[static_cast<std::size_t>(c)]);
-      const double opposite = A(down_rows[static_cast<std::size_t>(r)], up_rows[static_cast<std::size_t>(c)]);
-      P(r, c) = same + opposite;
-      Q(r, c) = same - opposite;
-    }
-  }
-  // lambda^2 and S. Without scattering in the operator only the k-term couples, mode to mode at one node, so
-  // Q P falls apart into one M x M block per node.
-  const Eigen::MatrixXd QP = Q * P;
-  Eigen::VectorXcd squared(h);
-  Eigen::MatrixXcd S = Eigen::MatrixXcd::Zero(h, h);
-  if (operator_albedo == 0.0) {
-    for (int i = 0; i < N; ++i) {  // down_rows[m N + i] is mode m at node i
-      Eigen::MatrixXd block(M, M);
-      for (int a = 0; a < M; ++a) {
-        for (int b = 0; b < M; ++b) block(a, b) = QP(a * N + i, b * N + i);
-      }
-      const Eigen::EigenSolver<Eigen::MatrixXd> eigen(block);
-      check(eigen.info() == Eigen::Success, "the eigen-decomposition failed");
-      for (int l = 0; l < M; ++l) {
-        squared(i * M + l) = eigen.eigenvalues()(l);
-        for (int a = 0; a < M; ++a) S(a * N + i, i * M + l) = eigen.eigenvectors()(a, l);
-      }
-    }
-  } else {
-    const Eigen::EigenSolver<Eigen::MatrixXd> eigen(QP);
-    check(eigen.info() == Eigen::Success, "the eigen-decomposition failed");
-    squared = eigen.eigenvalues();
-    S = eigen.eigenvectors();
-  }
-  Eigen::VectorXcd lambda(n);
-  Eigen::MatrixXcd V(n, n);
-  const Eigen::MatrixXcd PS = P.cast<std::complex<double>>() * S;
-  for (int l = 0; l < h; ++l) {
-    const std::complex<double> root = std::sqrt(squared(l));  // Re >= 0: the decaying one
-    check(root.real() > 0.0, "a mode neither decays nor grows (conservative scattering at k = 0?)");
-    const Eigen::VectorXcd delta = PS.col(l) / root;
-    lambda(l) = root;
-    lambda(h + l) = -root;
-    for (int r = 0; r < h; ++r) {
-      const std::complex<double> down = 0.5 * (S(r, l) + delta(r)), up = 0.5 * (S(r, l) - delta(r));
-      V(down_rows[static_cast<std::size_t>(r)], l) = down;
-      V(up_rows[static_cast<std::size_t>(r)], l) = up;
-      V(down_rows[static_cast<std::size_t>(r)], h + l) = up;  // -lambda swaps the halves
-      V(up_rows[static_cast<std::size_t>(r)], h + l) = down;
-    }
-  }
-  std::vector<int> decaying, growing;  // Re lambda > 0: e^{-lambda tau}; < 0: e^{-lambda (tau - tau_b)}
-  for (int l = 0; l < h; ++l) {
-    decaying.push_back(l);
-    growing.push_back(h + l);
-  }
-
-  // Boundary conditions. At the top, u-(0) = t12 + R21 u+(0) under a rough top, mode by mode (the i^m factor is the
-  // same on both sides, and t12 is mode 0 alone), and nothing enters going down under an open one. With a finite
-  // layer, nothing enters the bottom going up.
-  const int unknowns = semi_infinite ? n / 2 : n;
+  // Boundary conditions (one row each). At the top, u-(0) = t12 + R21 u+(0) under a rough top, mode by mode (the i^m
+  // factor is the same on both sides, and t12 is mode 0 alone), and nothing enters going down under an open one.
+  // Between slabs every node radiance is continuous. Under a finite last slab nothing enters the bottom going up.
   Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(unknowns, unknowns);
   Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(unknowns);
-  const auto column_value = [&](int c, int row, double depth) -> std::complex<double> {
-    if (c < n / 2) return V(row, decaying[c]) * std::exp(-lambda(decaying[c]) * depth);
-    return V(row, growing[c - n / 2]) * std::exp(-lambda(growing[c - n / 2]) * (depth - tau));
-  };
   int equation = 0;
+  const SolvedSlab& first = solved.front();
   for (int m = 0; m < M; ++m) {
     for (int i = 0; i < N; ++i) {
       const int row = layout.at(m, 0, i);
-      for (int c = 0; c < unknowns; ++c) B(equation, c) = column_value(c, row, 0.0);
-      rhs(equation) = -X(row);
+      for (int c = 0; c < first.count; ++c) B(equation, first.offset + c) = first.column(c, row, 0.0);
+      rhs(equation) = -first.particular(row, 0.0);
       if (top != nullptr) {
         const Eigen::MatrixXd& reflect = top->reflection[static_cast<std::size_t>(m)];
         for (int j = 0; j < N; ++j) {
           const int from = layout.at(m, 1, j);
-          for (int c = 0; c < unknowns; ++c) B(equation, c) -= reflect(i, j) * column_value(c, from, 0.0);
-          rhs(equation) += reflect(i, j) * X(from);
+          for (int c = 0; c < first.count; ++c)
+            B(equation, first.offset + c) -= reflect(i, j) * first.column(c, from, 0.0);
+          rhs(equation) += reflect(i, j) * first.particular(from, 0.0);
         }
         if (m == 0) rhs(equation) += top->source(i);
       }
       ++equation;
     }
   }
+  for (std::size_t l = 0; l + 1 < solved.size(); ++l) {
+    const SolvedSlab &upper = solved[l], &lower = solved[l + 1];
+    for (int row = 0; row < n; ++row) {
+      for (int c = 0; c < upper.count; ++c) B(equation, upper.offset + c) = upper.column(c, row, upper.tau);
+      for (int c = 0; c < lower.count; ++c) B(equation, lower.offset + c) = -lower.column(c, row, 0.0);
+      rhs(equation++) = lower.particular(row, 0.0) - upper.particular(row, upper.tau);
+    }
+  }
+  const SolvedSlab& last = solved.back();
+  const bool semi_infinite = std::isinf(last.tau);
   if (!semi_infinite) {
     for (int m = 0; m < M; ++m) {
       for (int i = 0; i < N; ++i) {
         const int row = layout.at(m, 1, i);
-        for (int c = 0; c < unknowns; ++c) B(equation, c) = column_value(c, row, tau);
-        rhs(equation++) = -X(row) * std::exp(-tau);
+        for (int c = 0; c < last.count; ++c) B(equation, last.offset + c) = last.column(c, row, last.tau);
+        rhs(equation++) = -last.particular(row, last.tau);
       }
     }
   }
   const Eigen::VectorXcd coefficients = B.partialPivLu().solve(rhs);
 
   // Fluxes out of the faces: mode 0 only, 2 pi sum_j a_j mu_j I(mu_j) times the fraction that crosses the face.
-  const auto mode0_flux = [&](int up, double depth) {
+  const auto mode0_flux = [&](const SolvedSlab& slab, int up, double depth) {
     std::complex<double> flux = 0.0;
     for (int i = 0; i < N; ++i) {
       const int row = layout.at(0, up, i);
-      std::complex<double> value = X(row) * std::exp(-depth);
-      for (int c = 0; c < unknowns; ++c) value += coefficients(c) * column_value(c, row, depth);
+      std::complex<double> value = slab.particular(row, depth);
+      for (int c = 0; c < slab.count; ++c) value += coefficients(slab.offset + c) * slab.column(c, row, depth);
       const double crossing = up == 1 && top != nullptr ? top->exit(i) : 1.0;
       flux += q.weights[i] * q.nodes[i] * crossing * value;
     }
     return 2.0 * kPi * flux.real();
   };
   LateralFrequencyResponse response;
-  response.reflectance = mode0_flux(1, 0.0);
-  if (!semi_infinite) response.transmittance = mode0_flux(0, tau);
+  response.reflectance = mode0_flux(first, 1, 0.0);
+  if (!semi_infinite) response.transmittance = mode0_flux(last, 0, last.tau);
   return response;
 }
 
 }  // namespace
 
-PhaseMatrices lateral_phase_matrices(double g, const QuadratureRule& quadrature, int modes) {
-  const double forwardness = 1.0 - std::abs(g);
-  const int azimuths = std::max({2 * modes + 1, static_cast<int>(std::ceil(20.0 / forwardness)) + 1, 49});
-  return henyey_greenstein_matrices(g, quadrature.nodes, quadrature.weights, CosineProjector(modes, azimuths));
+LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> slabs, const LateralTopInterface* top,
+                                                double k, const LateralFrequencyResolution& resolution) {
+  return stack_response(slabs, 1.0, top, k, resolution);
 }
 
-Eigen::MatrixXd lateral_mode_coupling(int modes) {
-  // i cos(phi) i^(m-1) cos((m-1) phi) and i cos(phi) i^(m+1) cos((m+1) phi), divided by i^m (§21.2).
-  Eigen::MatrixXd coupling = Eigen::MatrixXd::Zero(modes, modes);
-  for (int m = 0; m < modes; ++m) {
-    if (m >= 1) coupling(m, m - 1) = m - 1 == 0 ? 1.0 : 0.5;
-    if (m + 1 < modes) coupling(m, m + 1) = -0.5;
-  }
-  return coupling;
+LateralFrequencyResponse open_stack_single_scattering_response(std::span<const LateralSlab> slabs, double k,
+                                                               const LateralFrequencyResolution& resolution) {
+  return stack_response(slabs, 0.0, nullptr, k, resolution);
 }
 
 LateralFrequencyResponse rough_top_lateral_response(double tau, double albedo, double g, const LateralTopInterface& top,
                                                     double k, const LateralFrequencyResolution& resolution) {
-  return lateral_response(tau, albedo, 0.0, g, k, resolution, &top);
+  const LateralSlab slab{tau, albedo, g};
+  return stack_response({&slab, 1}, 1.0, &top, k, resolution);
 }
 
 LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
                                                      const LateralFrequencyResolution& resolution) {
-  return lateral_response(tau, albedo, albedo, g, k, resolution);
+  const LateralSlab slab{tau, albedo, g};
+  return stack_response({&slab, 1}, 1.0, nullptr, k, resolution);
 }
 
 LateralFrequencyResponse open_layer_single_scattering_response(double tau, double albedo, double g, double k,
                                                                const LateralFrequencyResolution& resolution) {
-  return lateral_response(tau, 0.0, albedo, g, k, resolution);
+  const LateralSlab slab{tau, albedo, g};
+  return stack_response({&slab, 1}, 0.0, nullptr, k, resolution);
 }
 
 }  // namespace skinlayer

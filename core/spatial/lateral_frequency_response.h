@@ -9,14 +9,12 @@
 // R(k) and T(k), the scattered light leaving the top and the bottom per unit incident power, are the Hankel
 // transforms of the profiles: R(k) = int_0^inf R(r) J0(k r) 2 pi r dr, so R(0) is the subsurface reflectance.
 //
-// Below the layer: an index-matched half-space or none. Above it: no interface (eta = 1, the open layer) or a rough
-// one (lateral_top_interface.h), through the BSDF's own operators. Normal incidence.
+// A stack of homogeneous slabs (lateral_slab_modes.h) with no interfaces between them, and below it an
+// index-matched half-space or none. Above it: no interface (eta = 1, the open layer) or a rough one
+// (lateral_top_interface.h), through the BSDF's own operators. Normal incidence.
 #pragma once
 
-#include <Eigen/Core>
-
-#include "core/medium/henyey_greenstein.h"
-#include "core/series/quadrature.h"
+#include <span>
 
 namespace skinlayer {
 
@@ -27,22 +25,33 @@ struct LateralFrequencyResolution {
   int azimuth_modes = 24;  // cosine modes m = 0 .. azimuth_modes - 1 that the k.s term couples
 };
 
-// The phase function's Fourier matrices on the nodes, as every lateral solve projects them (mode 0 renormalized to
-// conserve energy on the nodes, §7).
-PhaseMatrices lateral_phase_matrices(double g, const QuadratureRule& quadrature, int modes);
-
-// C, the k.s term between the modes (§21.2): with I = sum_m i^m a_m cos(m phi), the streaming operator of node mu is
-// (1 + k sin(theta) C) / mu on the coefficients a_m, C(m, m - 1) = 1 for m = 1 and 1/2 above, C(m, m + 1) = -1/2.
-Eigen::MatrixXd lateral_mode_coupling(int modes);
-
 struct LateralFrequencyResponse {
   double reflectance = 0.0;    // R(k): scattered light out of the top, per unit incident power
   double transmittance = 0.0;  // T(k): scattered light out of the bottom (the direct beam, a delta at r = 0, is not
                                // in it); 0 for a semi-infinite layer
 };
 
-// tau: optical depth (+infinity: semi-infinite); albedo Omega in [0, 1); g the Henyey-Greenstein asymmetry;
-// k >= 0 in 1 / mean free path. Throws std::invalid_argument for values outside those ranges (Omega = 1 with
+// One slab of a stack. Lengths are in mean free paths of the first slab, so a slab whose extinction mu_t differs
+// from the first's sees the frequency k / relative_extinction in its own mean free paths.
+struct LateralSlab {
+  double tau = 0.0;                  // optical depth; +infinity (semi-infinite) for the last slab only
+  double albedo = 0.0;               // Omega in [0, 1)
+  double g = 0.0;                    // Henyey-Greenstein asymmetry
+  double relative_extinction = 1.0;  // mu_t / the first slab's mu_t
+};
+
+// The stack's response at k (1 / the first slab's mean free path) under an open top (top null: a collimated beam
+// scattered in each slab with its own albedo) or a rough one built for `resolution`. Throws std::invalid_argument
+// for values outside the ranges above.
+LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> slabs, const LateralTopInterface* top,
+                                                double k, const LateralFrequencyResolution& resolution = {});
+
+// Under an open top, the stack's first order in the albedos: the beam scattered once, then only streaming.
+LateralFrequencyResponse open_stack_single_scattering_response(std::span<const LateralSlab> slabs, double k,
+                                                               const LateralFrequencyResolution& resolution = {});
+
+// One slab: tau the optical depth (+infinity: semi-infinite); albedo Omega in [0, 1); g the Henyey-Greenstein
+// asymmetry; k >= 0 in 1 / mean free path. Throws std::invalid_argument for values outside those ranges (Omega = 1 with
 // k = 0 in a semi-infinite layer has no decaying solution).
 LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
                                                      const LateralFrequencyResolution& resolution = {});

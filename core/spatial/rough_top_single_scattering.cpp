@@ -12,6 +12,7 @@
 #include "core/conventions.h"
 #include "core/medium/henyey_greenstein.h"
 #include "core/series/quadrature.h"
+#include "core/spatial/lateral_slab_modes.h"
 
 namespace skinlayer {
 namespace {

@@ -122,6 +122,56 @@ TEST(LateralFrequencyResponse, SingleScatteringIsTheFirstOrderOfTheFullSolve) {
               1e-3 * expected);
 }
 
+// A slab cut in two is the same slab, at every frequency and under either top: the faces between slabs join every
+// mode of every node.
+TEST(LateralFrequencyResponse, CuttingASlabInTwoChangesNothing) {
+  Material m;
+  m.eta = 1.4;
+  m.sigma = 0.5;
+  const LateralTopInterface rough = lateral_top_interface(top_interface(m), 12, 16);
+  for (const LateralTopInterface* top : {static_cast<const LateralTopInterface*>(nullptr), &rough}) {
+    for (const double k : {0.0, 0.7, 5.0}) {
+      const LateralSlab whole[] = {{3.0, 0.9, 0.7}};
+      const LateralSlab cut[] = {{1.2, 0.9, 0.7}, {1.8, 0.9, 0.7}};
+      const LateralFrequencyResponse one = lateral_stack_response(whole, top, k, {12, 16});
+      const LateralFrequencyResponse two = lateral_stack_response(cut, top, k, {12, 16});
+      EXPECT_NEAR(two.reflectance, one.reflectance, 1e-9 * one.reflectance) << k;
+      EXPECT_NEAR(two.transmittance, one.transmittance, 1e-9 * one.transmittance) << k;
+    }
+  }
+}
+
+// At k = 0 a two-slab stack under a rough top is the stack solver's directional albedo at normal incidence.
+TEST(LateralFrequencyResponse, AStackAtZeroFrequencyIsTheStackSolversAlbedo) {
+  for (const double tau_below : {1.5, kInf}) {
+    Material m = test::index_matched_slab(0.8, 0.7, 0.8);
+    m.eta = 1.4;
+    m.sigma = 0.6;
+    m.ordinates = 12;
+    m.below = {StackedLayer{tau_below, 0.95, 0.6, std::nullopt}};
+    const double theta[] = {0.0};
+    const DirectionalAlbedo albedo = directional_albedo(m, theta).front();
+    const LateralTopInterface top = lateral_top_interface(top_interface(m), 12, 4);
+    const LateralSlab slabs[] = {{0.8, 0.7, 0.8}, {tau_below, 0.95, 0.6}};
+    const LateralFrequencyResponse at_zero = lateral_stack_response(slabs, &top, 0.0, {12, 4});
+    EXPECT_NEAR(at_zero.reflectance + top.surface_multiple_reflectance, albedo.reflectance_subsurface, 1e-6);
+    EXPECT_NEAR(at_zero.transmittance, albedo.transmittance, 1e-6);
+  }
+}
+
+// Lengths are the first slab's mean free paths: scaling every slab's extinction and the frequency together changes
+// nothing, while a denser lower slab (the same optical depth, half the thickness) spreads the light less.
+TEST(LateralFrequencyResponse, EachSlabSeesTheFrequencyInItsOwnMeanFreePaths) {
+  const LateralSlab slabs[] = {{0.5, 0.9, 0.8, 1.0}, {kInf, 0.98, 0.8, 2.0}};
+  const LateralSlab scaled[] = {{0.5, 0.9, 0.8, 0.5}, {kInf, 0.98, 0.8, 1.0}};
+  const LateralSlab uniform[] = {{0.5, 0.9, 0.8, 1.0}, {kInf, 0.98, 0.8, 1.0}};
+  const double r = lateral_stack_response(slabs, nullptr, 1.0, {12, 16}).reflectance;
+  EXPECT_NEAR(lateral_stack_response(scaled, nullptr, 0.5, {12, 16}).reflectance, r, 1e-10 * r);
+  EXPECT_GT(r, lateral_stack_response(uniform, nullptr, 1.0, {12, 16}).reflectance);
+  EXPECT_NEAR(lateral_stack_response(slabs, nullptr, 0.0, {12, 16}).reflectance,
+              lateral_stack_response(uniform, nullptr, 0.0, {12, 16}).reflectance, 1e-12);
+}
+
 TEST(LateralFrequencyResponse, FallsWithFrequencyAndRefusesBadInput) {
   double previous = 1.0;
   for (const double k : {0.0, 0.1, 0.5, 2.0, 8.0}) {
