@@ -89,39 +89,41 @@ void check_options(const LayerProfileOptions& options) {
   }
 }
 
-// The layer as the solves see it: its rough top's operators built once, at the options' resolution.
+// The layer as the solves see it: its slabs, and its rough top's operators built once, at the options' resolution.
 struct SolvedLayer {
-  SolvedLayer(const ProfileLayer& described, const LayerProfileOptions& chosen) : layer(described), options(chosen) {
+  SolvedLayer(const ProfileLayer& described, const LayerProfileOptions& chosen)
+      : layer(described), slabs(described.slabs()), options(chosen) {
     check_options(options);
     if (layer.top) {
-      if (std::isfinite(layer.tau)) {
+      if (std::isfinite(slabs.back().tau)) {
         throw ParameterError(
-            "profile: under a rough top, profiles are computed so far for a semi-infinite layer (tau inf)");
+            "profile: under a rough top, profiles are computed so far for layers that end in a half-space (tau inf)");
       }
       top = lateral_top_interface(*layer.top, options.resolution.ordinates, options.resolution.azimuth_modes);
+    } else if (slabs.size() > 1) {
+      throw ParameterError("profile: a stack of layers is computed so far under a rough top only");
     }
   }
   LateralFrequencyResponse response(double k) const {
-    if (!top) return open_layer_lateral_response(layer.tau, layer.albedo, layer.g, k, options.resolution);
-    return rough_top_lateral_response(layer.tau, layer.albedo, layer.g, *top, k, options.resolution);
+    return lateral_stack_response(slabs, top ? &*top : nullptr, k, options.resolution);
   }
   // The discrete ordinates' own single scattering at k: R_1 and T_1.
   LateralFrequencyResponse single_scattering(double k) const {
-    if (!top) return open_layer_single_scattering_response(layer.tau, layer.albedo, layer.g, k, options.resolution);
-    return {rough_top_single_scattering_reflectance(layer.tau, layer.albedo, layer.g, *top, k, options.resolution),
-            0.0};
+    if (!top) return open_stack_single_scattering_response(slabs, k, options.resolution);
+    return {rough_top_single_scattering_reflectance(slabs, *top, k, options.resolution), 0.0};
   }
   // Single scattering's power through the annulus [r0, r1) of a face, and its density at r > 0, in closed form.
   double single_scattered_power(LayerFace face, double r0, double r1) const {
     if (!top) return skinlayer::single_scattered_power(layer.tau, layer.albedo, layer.g, face, r0, r1);
-    return rough_top_single_scattered_power(layer.albedo, layer.g, *top, options.resolution.ordinates, r0, r1);
+    return rough_top_single_scattered_power(slabs, *top, options.resolution.ordinates, r0, r1);
   }
   double single_scattered_density(LayerFace face, double r) const {
     if (!top) return skinlayer::single_scattered_density(layer.tau, layer.albedo, layer.g, face, r);
-    return rough_top_single_scattered_density(layer.albedo, layer.g, *top, options.resolution.ordinates, r);
+    return rough_top_single_scattered_density(slabs, *top, options.resolution.ordinates, r);
   }
 
   ProfileLayer layer;
+  std::vector<LateralSlab> slabs;
   LayerProfileOptions options;
   std::optional<LateralTopInterface> top;
 };
@@ -164,13 +166,19 @@ LayerProfile assemble_profile(const ProfileLayer& layer, const LayerProfileOptio
   profile.total_transmittance = ms.total_transmittance;
   for (std::size_t i = 0; i < count; ++i) {
     profile.reflectance.push_back(value(solved, LayerFace::Top, ms.reflected, i));
-    profile.transmittance.push_back(std::isfinite(layer.tau) ? value(solved, LayerFace::Bottom, ms.transmitted, i)
-                                                             : 0.0);
+    profile.transmittance.push_back(
+        std::isfinite(solved.slabs.back().tau) ? value(solved, LayerFace::Bottom, ms.transmitted, i) : 0.0);
   }
   return profile;
 }
 
 }  // namespace
+
+std::vector<LateralSlab> ProfileLayer::slabs() const {
+  std::vector<LateralSlab> all = {{tau, albedo, g, 1.0}};
+  all.insert(all.end(), below.begin(), below.end());
+  return all;
+}
 
 LayerProfile layer_profile(const ProfileLayer& layer, std::span<const double> edges,
                            const LayerProfileOptions& options) {

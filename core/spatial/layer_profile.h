@@ -1,7 +1,7 @@
 // The spatially resolved response of one layer to a pencil beam at normal incidence: where its light leaves the top
 // and the bottom, averaged over annuli about the entry point or at radii (docs/model.md §21.7, §21.10). Lengths are in
-// mean free paths. The layer has an index-matched half-space or nothing below it, and above it no interface (the open
-// layer) or a rough one; under a rough top it must be semi-infinite, so far.
+// mean free paths of its first slab. The layer has an index-matched half-space or nothing below it, and above it no
+// interface (the open layer, one slab) or a rough one over a stack of slabs that ends in a half-space, so far.
 //
 // Single scattering is singular at r -> 0 and is taken in closed form (single_scattering_profile.h under an open top,
 // rough_top_single_scattering.h under a rough one). The rest, the light scattered more than once, is smooth enough
@@ -21,11 +21,16 @@
 
 namespace skinlayer {
 
+// The first slab, its top, and the slabs below it (without interfaces between them; lengths in the first slab's mean
+// free paths, each slab's relative extinction saying how its own compare).
 struct ProfileLayer {
   double tau = 0.0;                                   // optical depth; +infinity: semi-infinite
   double albedo = 0.0;                                // Omega in [0, 1)
   double g = 0.0;                                     // Henyey-Greenstein asymmetry
   std::optional<RoughDielectric> top = std::nullopt;  // none: no interface (eta = 1)
+  std::vector<LateralSlab> below = {};                // under a rough top only, so far
+
+  std::vector<LateralSlab> slabs() const;  // all of them, top to bottom
 };
 
 struct LayerProfileOptions {
@@ -46,7 +51,8 @@ struct LayerProfile {
 };
 
 // edges: finite, increasing radii from >= 0, in mean free paths. Throws ParameterError (one line for the user) for bad
-// edges or radii and for a finite layer under a rough top, std::invalid_argument for bad options or layer parameters.
+// edges or radii and for what it cannot take yet (a finite stack under a rough top, a stack under an open one),
+// std::invalid_argument for bad options or layer parameters.
 LayerProfile layer_profile(const ProfileLayer& layer, std::span<const double> edges,
                            const LayerProfileOptions& options = {});
 

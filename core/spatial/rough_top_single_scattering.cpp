@@ -8,6 +8,7 @@
 #include <complex>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "core/conventions.h"
 #include "core/medium/henyey_greenstein.h"
@@ -17,20 +18,47 @@
 namespace skinlayer {
 namespace {
 
-void check(double albedo, double g, const LateralTopInterface& top, int ordinates) {
-  if (!(albedo >= 0.0 && albedo <= 1.0) || !(std::abs(g) <= 0.95)) {
-    throw std::invalid_argument("rough-top single scattering: albedo in [0, 1] and g in [-0.95, 0.95]");
+void check(std::span<const LateralSlab> slabs, const LateralTopInterface& top, int ordinates) {
+  if (slabs.empty()) throw std::invalid_argument("rough-top single scattering: needs at least one slab");
+  for (std::size_t l = 0; l < slabs.size(); ++l) {
+    const LateralSlab& s = slabs[l];
+    if (!(s.tau >= 0.0) || (std::isinf(s.tau) && l + 1 != slabs.size()) || !(s.albedo >= 0.0 && s.albedo <= 1.0) ||
+        !(std::abs(s.g) <= 0.95) || !(s.relative_extinction > 0.0 && std::isfinite(s.relative_extinction))) {
+      throw std::invalid_argument(
+          "rough-top single scattering: tau >= 0 (infinite only last), albedo in [0, 1], g in [-0.95, 0.95] and a "
+          "finite relative extinction > 0");
+    }
   }
   if (top.source.size() != ordinates || top.exit.size() != ordinates) {
     throw std::invalid_argument("rough-top single scattering: the top's operators were built for another resolution");
   }
 }
 
-// sum over node pairs (i up, j down) of 2 pi a_i T_i a_j mu_j t_j Omega int_0^{2 pi} p(d.o) along(a, rho) ddphi.
+// The slabs' depths: optical depth T_l above slab l and geometric depth G_l (first slab's mean free paths).
+struct SlabDepths {
+  std::vector<double> optical, geometric;
+};
+SlabDepths slab_depths(std::span<const LateralSlab> slabs) {
+  SlabDepths depths;
+  double optical = 0.0, geometric = 0.0;
+  for (const LateralSlab& s : slabs) {
+    depths.optical.push_back(optical);
+    depths.geometric.push_back(geometric);
+    optical += s.tau;
+    geometric += s.tau / s.relative_extinction;
+  }
+  return depths;
+}
+
+// sum over node pairs (i up, j down) and slabs l of
+//   2 pi a_i T_i a_j mu_j t_j Omega_l e_l e^{-T_l a / mu_j} int_0^{2 pi} p_l(d.o) along(rate, s_l, s_l + ds_l, rho)
+// with rate = e_l a: along gives the path integral int e^{-rate (s - s_l)} [...] ds over the slab.
 template <class Along>
-double over_node_pairs(double albedo, double g, const LateralTopInterface& top, int ordinates, const Along& along) {
-  check(albedo, g, top, ordinates);
+double over_node_pairs(std::span<const LateralSlab> slabs, const LateralTopInterface& top, int ordinates,
+                       const Along& along) {
+  check(slabs, top, ordinates);
   const QuadratureRule q = double_gauss_half_range(ordinates);
+  const SlabDepths depths = slab_depths(slabs);
   // Panels in dphi on [0, pi] (the integrand is even), closer towards pi, where rho is least.
   QuadratureRule azimuth;
   for (const auto& [from, to] :
@@ -45,15 +73,24 @@ double over_node_pairs(double albedo, double g, const LateralTopInterface& top, 
     if (top.source(j) == 0.0) continue;
     for (int i = 0; i < ordinates; ++i) {
       const double mu_i = q.nodes[i], sin_i = std::sqrt(std::max(0.0, 1.0 - mu_i * mu_i));
-      const double weight = 2.0 * kPi * q.weights[i] * top.exit(i) * q.weights[j] * mu_j * top.source(j) * albedo;
+      const double weight = 2.0 * kPi * q.weights[i] * top.exit(i) * q.weights[j] * mu_j * top.source(j);
       const double a = 1.0 + mu_j / mu_i, lateral = mu_j * sin_i / mu_i;  // mu_j tan(theta_i)
-      double sum = 0.0;
-      for (std::size_t p = 0; p < azimuth.nodes.size(); ++p) {
-        const double c = std::cos(azimuth.nodes[p]);
-        const double rho = std::sqrt(std::max(0.0, sin_j * sin_j + lateral * lateral + 2.0 * sin_j * lateral * c));
-        sum += azimuth.weights[p] * henyey_greenstein(-mu_i * mu_j + sin_i * sin_j * c, g) * along(a, rho);
+      for (std::size_t l = 0; l < slabs.size(); ++l) {
+        const LateralSlab& slab = slabs[l];
+        if (slab.tau == 0.0 || slab.albedo == 0.0) continue;
+        const double entry = std::exp(-depths.optical[l] * a / mu_j);
+        if (entry == 0.0) continue;
+        const double s0 = depths.geometric[l] / mu_j, s1 = s0 + slab.tau / slab.relative_extinction / mu_j;
+        const double rate = slab.relative_extinction * a;
+        double sum = 0.0;
+        for (std::size_t p = 0; p < azimuth.nodes.size(); ++p) {
+          const double c = std::cos(azimuth.nodes[p]);
+          const double rho = std::sqrt(std::max(0.0, sin_j * sin_j + lateral * lateral + 2.0 * sin_j * lateral * c));
+          sum += azimuth.weights[p] * henyey_greenstein(-mu_i * mu_j + sin_i * sin_j * c, slab.g) *
+                 along(rate, s0, s1, rho);
+        }
+        total += weight * slab.albedo * slab.relative_extinction * entry * 2.0 * sum;
       }
-      total += weight * 2.0 * sum;
     }
   }
   return total;
@@ -69,15 +106,15 @@ std::complex<double> depth_integral(std::complex<double> rate, double tau) {
 
 }  // namespace
 
-double rough_top_single_scattering_reflectance(double tau, double albedo, double g, const LateralTopInterface& top,
+double rough_top_single_scattering_reflectance(std::span<const LateralSlab> slabs, const LateralTopInterface& top,
                                                double k, const LateralFrequencyResolution& resolution) {
   const int N = resolution.ordinates, M = resolution.azimuth_modes;
-  check(albedo, g, top, N);
-  if (!(tau >= 0.0) || !(k >= 0.0 && std::isfinite(k)) || static_cast<int>(top.reflection.size()) < M) {
-    throw std::invalid_argument("rough-top single scattering: tau >= 0, finite k >= 0, and the top built for M modes");
+  check(slabs, top, N);
+  if (!(k >= 0.0 && std::isfinite(k)) || static_cast<int>(top.reflection.size()) < M) {
+    throw std::invalid_argument("rough-top single scattering: finite k >= 0, and the top built for M modes");
   }
   const QuadratureRule q = double_gauss_half_range(N);
-  const PhaseMatrices phase = lateral_phase_matrices(g, q, M);
+  const SlabDepths depths = slab_depths(slabs);
   const Eigen::EigenSolver<Eigen::MatrixXd> eigen(lateral_mode_coupling(M));
   if (eigen.info() != Eigen::Success) throw std::runtime_error("rough-top single scattering: eigen-solve failed");
   const Eigen::MatrixXcd W = eigen.eigenvectors(), inverse = W.inverse();
@@ -86,62 +123,81 @@ double rough_top_single_scattering_reflectance(double tau, double albedo, double
   //   e0^T W diag(..) W^-1 = sum_a W(0, a) (..)_a W^-1(a, :),   W diag(..) W^-1 e0 = sum_b W(:, b) (..)_b W^-1(b, 0).
   const Eigen::MatrixXcd out = W.row(0).transpose().asDiagonal() * inverse;  // out(a, m)
   const Eigen::MatrixXcd in = W * inverse.col(0).asDiagonal();               // in(m, b)
-  Eigen::MatrixXcd gamma(M, N);  // gamma(a, node) = (1 + k sin(theta) lambda_a) / mu: the streaming's decay rates
+  // Per node, the streaming's decay per unit optical depth, 1/mu, and its lateral part per unit geometric depth (first
+  // slab's mean free paths), k sin(theta) lambda_a / mu: slab l decays at 1/mu + lateral / e_l.
+  Eigen::MatrixXcd lateral(M, N);
   for (int node = 0; node < N; ++node) {
     const double mu = q.nodes[node], sine = std::sqrt(std::max(0.0, 1.0 - mu * mu));
-    for (int a = 0; a < M; ++a) gamma(a, node) = (1.0 + k * sine * lambda(a)) / mu;
+    for (int a = 0; a < M; ++a) lateral(a, node) = k * sine * lambda(a) / mu;
   }
 
   double reflectance = 0.0;
   Eigen::MatrixXcd depth(M, M), mixed(M, M);
-  for (int i = 0; i < N; ++i) {
-    std::complex<double> up = 0.0;  // mode 0 of the once-scattered radiance leaving node i upward at the top
-    for (int j = 0; j < N; ++j) {
-      if (top.source(j) == 0.0) continue;
-      // int_0^tau e^{-t (gamma_ia + gamma_jb)} dt
-      for (int a = 0; a < M; ++a) {
-        for (int b = 0; b < M; ++b) {
-          depth(a, b) = depth_integral(gamma(a, i) + gamma(b, j), tau);
+  for (std::size_t l = 0; l < slabs.size(); ++l) {
+    const LateralSlab& slab = slabs[l];
+    if (slab.tau == 0.0 || slab.albedo == 0.0) continue;
+    const PhaseMatrices phase = lateral_phase_matrices(slab.g, q, M);
+    const double e = slab.relative_extinction, above = depths.optical[l], above_geometric = depths.geometric[l];
+    for (int i = 0; i < N; ++i) {
+      std::complex<double> up = 0.0;  // mode 0 of the once-scattered radiance leaving node i upward at the top
+      for (int j = 0; j < N; ++j) {
+        if (top.source(j) == 0.0) continue;
+        const double base = 1.0 / q.nodes[i] + 1.0 / q.nodes[j];
+        // Down to the slab and back (e^{-(T_l base + G_l lateral)}), then int_0^tau_l e^{-t (base + lateral / e_l)} dt.
+        for (int a = 0; a < M; ++a) {
+          for (int b = 0; b < M; ++b) {
+            const std::complex<double> sideways = lateral(a, i) + lateral(b, j);
+            depth(a, b) =
+                std::exp(-(above * base + above_geometric * sideways)) * depth_integral(base + sideways / e, slab.tau);
+          }
         }
+        // sum_m pi_m out(a, m) in(m, b), pi_m = c_m a_j P_opp^m(i, j): the scattering, diagonal in m.
+        mixed.setZero();
+        for (int m = 0; m < M; ++m) {
+          const double scatter =
+              fourier_azimuth_weight(m) * q.weights[j] * phase.opposite[static_cast<std::size_t>(m)](i, j);
+          mixed.noalias() += scatter * out.col(m) * in.row(m);
+        }
+        up += top.source(j) * (depth.array() * mixed.array()).sum();
       }
-      // sum_m pi_m out(a, m) in(m, b), pi_m = c_m a_j P_opp^m(i, j): the scattering, diagonal in m.
-      mixed.setZero();
-      for (int m = 0; m < M; ++m) {
-        const double scatter =
-            fourier_azimuth_weight(m) * q.weights[j] * phase.opposite[static_cast<std::size_t>(m)](i, j);
-        mixed.noalias() += scatter * out.col(m) * in.row(m);
-      }
-      up += top.source(j) * (depth.array() * mixed.array()).sum();
+      // mu_i cancels the 1/mu_i of the source.
+      reflectance += 2.0 * kPi * q.weights[i] * top.exit(i) * slab.albedo * up.real();
     }
-    reflectance +=
-        2.0 * kPi * q.weights[i] * top.exit(i) * albedo * up.real();  // mu_i cancels the 1/mu_i of the source
   }
   return reflectance;
 }
 
-double rough_top_single_scattered_power(double albedo, double g, const LateralTopInterface& top, int ordinates,
-                                        double r0, double r1) {
+double rough_top_single_scattered_power(std::span<const LateralSlab> slabs, const LateralTopInterface& top,
+                                        int ordinates, double r0, double r1) {
   if (!(r0 >= 0.0 && r1 >= r0)) throw std::invalid_argument("rough-top single scattering: needs 0 <= r0 <= r1");
-  return over_node_pairs(albedo, g, top, ordinates, [&](double a, double rho) {
-    if (rho <= 0.0) return r0 == 0.0 && r1 > 0.0 ? 1.0 / a : 0.0;
-    const double outer = std::isinf(r1) ? 0.0 : std::exp(-a * r1 / rho);
-    return (std::exp(-a * r0 / rho) - outer) / a;
+  return over_node_pairs(slabs, top, ordinates, [&](double rate, double s0, double s1, double rho) {
+    const double lo = rho > 0.0 ? std::max(s0, r0 / rho) : (r0 == 0.0 && r1 > 0.0 ? s0 : s1);
+    const double hi = rho > 0.0 ? std::min(s1, r1 / rho) : s1;
+    if (!(hi > lo)) return 0.0;
+    const double far = std::isinf(hi) ? 0.0 : std::exp(-rate * (hi - s0));
+    return (std::exp(-rate * (lo - s0)) - far) / rate;
   });
 }
 
-double rough_top_single_scattered_density(double albedo, double g, const LateralTopInterface& top, int ordinates,
-                                          double r) {
+double rough_top_single_scattered_density(std::span<const LateralSlab> slabs, const LateralTopInterface& top,
+                                          int ordinates, double r) {
   if (!(r > 0.0 && std::isfinite(r))) throw std::invalid_argument("rough-top single scattering: r must be > 0");
-  return over_node_pairs(albedo, g, top, ordinates,
-                         [&](double a, double rho) { return rho <= 0.0 ? 0.0 : std::exp(-a * r / rho) / rho; }) /
+  return over_node_pairs(slabs, top, ordinates,
+                         [&](double rate, double s0, double s1, double rho) {
+                           if (rho <= 0.0) return 0.0;
+                           const double s = r / rho;
+                           return s >= s0 && s < s1 ? std::exp(-rate * (s - s0)) / rho : 0.0;
+                         }) /
          (2.0 * kPi * r);
 }
 
 double rough_top_single_scattered_transform(double albedo, double g, const LateralTopInterface& top, int ordinates,
                                             double k) {
   if (!(k >= 0.0 && std::isfinite(k))) throw std::invalid_argument("rough-top single scattering: k must be >= 0");
-  return over_node_pairs(albedo, g, top, ordinates,
-                         [&](double a, double rho) { return 1.0 / std::sqrt(a * a + k * k * rho * rho); });
+  const LateralSlab half_space{std::numeric_limits<double>::infinity(), albedo, g};
+  return over_node_pairs({&half_space, 1}, top, ordinates, [&](double rate, double, double, double rho) {
+    return 1.0 / std::sqrt(rate * rate + k * k * rho * rho);
+  });
 }
 
 }  // namespace skinlayer

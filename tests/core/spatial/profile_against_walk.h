@@ -16,11 +16,16 @@
 
 namespace skinlayer::test {
 
-// `material` is `layer` as the walk takes it.
+// `material` is `layer` as the walk takes it. With mu_t (the first layer's extinction, 1/mm) the edges are in mm,
+// as the walk tallies a stack whose layers all have their lengths, and the profile's values become 1/mm^2.
 inline void expect_profile_matches_the_walk(const ProfileLayer& layer, const Material& material,
                                             const LayerProfileOptions& profile_options,
-                                            const std::vector<double>& edges) {
-  const LayerProfile profile = layer_profile(layer, edges, profile_options);
+                                            const std::vector<double>& edges, double mu_t = 1.0) {
+  std::vector<double> in_mfp;
+  for (const double r : edges) in_mfp.push_back(r * mu_t);
+  LayerProfile profile = layer_profile(layer, in_mfp, profile_options);
+  for (double& v : profile.reflectance) v *= mu_t * mu_t;
+  for (double& v : profile.transmittance) v *= mu_t * mu_t;
   const double tau = layer.tau;
   std::vector<RadialBin> bins;
   for (const ExitSide side : {ExitSide::Reflected, ExitSide::Transmitted}) {

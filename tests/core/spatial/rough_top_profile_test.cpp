@@ -58,6 +58,22 @@ TEST(RoughTopProfile, RoughTopOverAnAbsorbingHalfSpaceMatchesTheWalk) {
   test::expect_profile_matches_the_walk(as_profile_layer(m), m, test_options(), kEdges);
 }
 
+// A skin-like stack in millimetres: a 0.08 mm layer (mu_t 20/mm, Omega 0.9) over a half-space of twice its extinction
+// (Omega 0.99), g 0.8 in both, under a sigma 0.35 top. The walk takes each layer's mu_t; the profile takes the lower
+// layer's relative to the upper's.
+TEST(RoughTopProfile, TwoLayerStackInMillimetresMatchesTheWalk) {
+  Material m = test::index_matched_slab(1.6, 0.9, 0.8);
+  m.eta = 1.4;
+  m.sigma = 0.35;
+  m.extinction = 20.0;
+  m.below = {StackedLayer{kInf, 0.99, 0.8, std::nullopt, 40.0}};
+  ProfileLayer layer = as_profile_layer(m);
+  layer.below = {LateralSlab{kInf, 0.99, 0.8, 2.0}};
+  test::expect_profile_matches_the_walk(
+      layer, m, test_options(),
+      {0.0, 0.0025, 0.005, 0.01, 0.02, 0.035, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, 0.8, 1.2, 1.6}, 20.0);
+}
+
 // The annuli's powers through all space add up to R(0), and R(0) plus the top's own multiply scattered reflection
 // (which leaves at the entry point) is the BSDF's subsurface reflectance at normal incidence, on the same ordinates.
 TEST(RoughTopProfile, PowersAddUpToTheDirectionalAlbedo) {
@@ -103,11 +119,16 @@ TEST(RoughTopProfile, PointValuesAverageToTheAnnuli) {
   }
 }
 
-TEST(RoughTopProfile, AFiniteLayerUnderARoughTopIsRefused) {
+TEST(RoughTopProfile, WhatItCannotTakeYetIsRefused) {
   ProfileLayer layer = as_profile_layer(rough_half_space(0.4, 0.95, 0.7));
   layer.tau = 2.0;
   const double radii[] = {1.0};
-  EXPECT_THROW(layer_profile_at(layer, radii, test_options()), ParameterError);
+  EXPECT_THROW(layer_profile_at(layer, radii, test_options()), ParameterError);  // a finite layer
+  layer.below = {LateralSlab{3.0, 0.9, 0.8, 1.0}};
+  EXPECT_THROW(layer_profile_at(layer, radii, test_options()), ParameterError);  // a finite stack
+  layer.below.back().tau = kInf;
+  layer.top.reset();
+  EXPECT_THROW(layer_profile_at(layer, radii, test_options()), ParameterError);  // a stack under an open top
 }
 
 }  // namespace
