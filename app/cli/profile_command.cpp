@@ -69,11 +69,14 @@ std::string profile_usage() {
          "  r_U,reflectance,transmittance\n"
          "in 1/U^2, where U is mm when the layer has its extinction (--mu-t, 1/mm) and mfp, its mean free path,\n"
          "when it has none. An RGB albedo writes reflectance_r, _g, _b and transmittance_r, _g, _b.\n"
-         "So far the material must be one layer with an albedo below 1 and nothing reflecting below it: either\n"
-         "open (--eta 1 --bottom matched) or semi-infinite under its rough top (--T 0). Under a rough top the\n"
-         "reflectance leaves out the interface's own reflection, which leaves at the entry point. Single\n"
-         "scattering, singular at the beam, is exact; the rest comes from the discrete ordinates in the lateral\n"
-         "frequency (docs/model.md section 21), about 2 s per channel.\n"
+         "So far the material must have albedos below 1 and nothing reflecting below it: one layer with no\n"
+         "interfaces (--eta 1 --bottom matched), or layers without interfaces between them that end in a half-space\n"
+         "under a rough top (--T 0, or a last layer's tau=inf), each layer with its mu_t when there are several. A\n"
+         "skin is such a stack: its columns are linear sRGB from 31 wavelengths (400-700 nm), or one wavelength's\n"
+         "with --wavelength NM. Under a rough top the reflectance leaves out the interface's own reflection, which\n"
+         "leaves at the entry point. Single scattering, singular at the beam, is exact; the rest comes from the\n"
+         "discrete ordinates in the lateral frequency (docs/model.md section 21): about 2 s per channel for one\n"
+         "layer, 6 s per wavelength for a skin.\n"
          "\n"
          "  --incidence normal\n"
          "      the incident beam; normal incidence is the one computed so far.\n"
@@ -81,17 +84,19 @@ std::string profile_usage() {
          "      N annuli of width DR (in U) from the entry point; default 0.1 mean free paths, 100 annuli.\n"
          "  --radii LIST\n"
          "      comma-separated radii > 0 (in U) at which to give the profile, instead of annuli.\n" +
-         rgb_albedo_usage() + "\n" + material_flags_usage() +
+         rgb_albedo_usage() + "\n" + skin_flags_usage() + "\n" + material_flags_usage() +
          "\n"
          "Examples:\n"
          "  skinlayer profile --eta 1 --bottom matched --T 0 --albedo 0.99 --g 0.8 --mu-t 10 --annuli 0.05:60\n"
          "  skinlayer profile --eta 1 --bottom matched --tau 2 --albedo 0.9,0.8,0.6 --radii 0.1,0.5,1,2\n"
-         "  skinlayer profile --eta 1.4 --sigma 0.3 --T 0 --albedo 0.95 --g 0.8 --mu-t 20 --annuli 0.02:100\n";
+         "  skinlayer profile --eta 1.4 --sigma 0.3 --T 0 --albedo 0.95 --g 0.8 --mu-t 20 --annuli 0.02:100\n"
+         "  skinlayer profile --skin melanin=0.05 --wavelength 650 --radii 0.1,0.5,1,2\n";
 }
 
 int run_profile_command(std::span<const std::string_view> arguments, std::ostream& out) {
   const ParsedFlags flags = ParsedFlags::parse(
-      arguments, material_flags_and({kIncidenceFlag, kAnnuliFlag, kRadiiFlag, kSkinFlag}), "skinlayer profile");
+      arguments, material_flags_and({kIncidenceFlag, kAnnuliFlag, kRadiiFlag, kSkinFlag, kWavelengthFlag}),
+      "skinlayer profile");
   if (const auto incidence = flags.value(kIncidenceFlag); incidence && *incidence != "normal") {
     throw UsageError("incidence = " + quoted(*incidence) +
                      " is not computed yet; profiles are for normal incidence (--incidence normal)");
@@ -99,7 +104,10 @@ int run_profile_command(std::span<const std::string_view> arguments, std::ostrea
   if (flags.has(kAnnuliFlag) && flags.has(kRadiiFlag)) {
     throw UsageError("flags --annuli and --radii both choose where the profile is given; give only one");
   }
-  const MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  if (const std::optional<double> wavelength = wavelength_from_flags(flags)) {
+    document = document_at_wavelength(document, *wavelength);
+  }
   const bool at_radii = flags.has(kRadiiFlag);
   // The default annuli are 0.1 mean free paths wide, in the output's unit.
   const double mu_t = document.skin ? 1.0 : document.layer.extinction.value_or(1.0);

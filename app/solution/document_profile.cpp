@@ -20,47 +20,61 @@ LayerProfileOptions profile_options() {
   return options;
 }
 
-// One line naming what the profile cannot take yet, or nothing for a layer it can: one layer with an albedo below 1,
-// an index-matched half-space or nothing below, and either no top interface or a rough one over a half-space.
+// One line naming what the profile cannot take yet, or nothing for a material it can: albedos below 1, an
+// index-matched half-space or nothing below, and either one layer without interfaces or, under a rough top, layers
+// without interfaces between them that end in a half-space, each with its extinction when there are several.
 void require_profile_layer(const Material& m) {
   std::string why;
-  if (m.layer_count() > 1) {
-    why = "it is a stack of " + std::to_string(m.layer_count()) + " layers";
-  } else if (m.eta != 1.0 && std::isfinite(m.tau)) {
-    why = "it has a top interface (eta " + cli::format_shortest(m.eta) + ") over a finite layer (tau " +
-          cli::format_shortest(m.tau) + "; --eta 1 has no interface, --T 0 makes the layer semi-infinite)";
-  } else if (m.bottom.kind == BottomKind::Lambert) {
+  const bool stack = m.layer_count() > 1;
+  const bool ends_in_half_space = std::isinf(stack ? m.below.back().tau : m.tau);
+  const bool all_lengths = m.extinction && std::all_of(m.below.begin(), m.below.end(),
+                                                       [](const StackedLayer& l) { return l.extinction.has_value(); });
+  const bool albedo_below_1 = m.albedo < 1.0 && std::all_of(m.below.begin(), m.below.end(),
+                                                            [](const StackedLayer& l) { return l.albedo < 1.0; });
+  if (stack && m.eta == 1.0) {
+    why = "it is a stack of " + std::to_string(m.layer_count()) + " layers with no top interface";
+  } else if (stack && std::any_of(m.below.begin(), m.below.end(),
+                                  [](const StackedLayer& l) { return l.interface.has_value(); })) {
+    why = "it has an interface between its layers";
+  } else if (stack && !all_lengths) {
+    why = "its layers do not all have their extinction (mu_t=, 1/mm), which relates their lengths";
+  } else if (m.eta != 1.0 && !ends_in_half_space) {
+    why = "it has a top interface (eta " + cli::format_shortest(m.eta) + ") over a finite " +
+          (stack ? std::string("stack; its last layer needs tau inf")
+                 : "layer (tau " + cli::format_shortest(m.tau) +
+                       "; --eta 1 has no interface, --T 0 makes the layer "
+                       "semi-infinite)");
+  } else if (m.bottom.kind == BottomKind::Lambert && !ends_in_half_space) {
     why = "it has a Lambertian base (--bottom " + format_bottom(m.bottom) + ")";
-  } else if (m.bottom.kind == BottomKind::Air && m.bottom_eta() != 1.0 && std::isfinite(m.tau)) {
+  } else if (m.bottom.kind == BottomKind::Air && m.bottom_eta() != 1.0 && !ends_in_half_space) {
     why = "it has a bottom interface (bottom-eta " + cli::format_shortest(m.bottom_eta()) +
           "; --bottom matched has none)";
-  } else if (m.albedo >= 1.0) {
-    why = "its albedo is 1 (give --albedo below 1)";
+  } else if (!albedo_below_1) {
+    why = "an albedo is 1 (give albedos below 1)";
   }
   if (why.empty()) return;
   throw ParameterError(
-      "profile: spatial profiles are computed so far for one layer with an albedo below 1 and nothing reflecting "
-      "below it, either with no interfaces (--eta 1 --bottom matched) or semi-infinite under a rough top (--T 0), "
-      "and this material cannot be: " +
+      "profile: spatial profiles are computed so far for albedos below 1 and nothing reflecting below, either one "
+      "layer with no interfaces (--eta 1 --bottom matched) or layers that end in a half-space under a rough top "
+      "(--T 0, or a last layer with tau=inf), and this material cannot be: " +
       why);
 }
 
-// The document's distinct solves and how they make the red, green and blue channels (a grey document: one solve).
+// The document's distinct solves and how they make the red, green and blue channels (a grey document: one solve;
+// a skin: its wavelengths).
 ColorChannels profile_solves(const MaterialDocument& document) {
-  if (document.skin) {
-    throw ParameterError(
-        "profile: a skin is a stack of layers, and spatial profiles are computed so far for one layer (no "
-        "interfaces, or semi-infinite under a rough top)");
-  }
   ColorChannels solves = color_channels(document);
   for (const Material& material : solves.materials) require_profile_layer(material);
   return solves;
 }
 
-// The material as the profile sees it (core/spatial/layer_profile.h).
+// The material as the profile sees it (core/spatial/layer_profile.h): lengths in its first layer's mean free paths.
 ProfileLayer profile_layer(const Material& m) {
   ProfileLayer layer{m.tau, m.albedo, m.g};
   if (m.eta != 1.0) layer.top = top_interface(m);
+  for (const StackedLayer& below : m.below) {
+    layer.below.push_back({below.tau, below.albedo, below.g, *below.extinction / *m.extinction});
+  }
   return layer;
 }
 
@@ -68,21 +82,26 @@ template <class Profile>
 DocumentProfile document_profile(const MaterialDocument& document, std::span<const double> positions,
                                  const Profile& profile) {
   const ColorChannels solves = profile_solves(document);
-  const Material& first = solves.materials.front();
-  const double mu_t = first.extinction.value_or(1.0);  // unit = mm (mu_t in 1/mm) or mfp (mu_t = 1)
-  std::vector<double> in_mfp;
-  for (const double r : positions) in_mfp.push_back(r * mu_t);
+  const bool in_mm = solves.materials.front().extinction.has_value();
+  // Each solve in its own first layer's mean free paths (a skin's extinction changes with the wavelength), then back
+  // to the document's unit: mm with the extinction mu_t (1/mm), or mfp (mu_t = 1).
   std::vector<LayerProfile> per_solve;
-  for (const Material& material : solves.materials) per_solve.push_back(profile(material, in_mfp));
+  std::vector<double> mu_t;
+  for (const Material& material : solves.materials) {
+    mu_t.push_back(material.extinction.value_or(1.0));
+    std::vector<double> in_mfp;
+    for (const double r : positions) in_mfp.push_back(r * mu_t.back());
+    per_solve.push_back(profile(material, in_mfp));
+  }
   DocumentProfile result;
-  result.unit = first.extinction ? "mm" : "mfp";
+  result.unit = in_mm ? "mm" : "mfp";
   // Channel c = sum_k to_rgb(c, k) solve k (an RGB document's channels each pick one of its distinct solves).
   const int channels = document.grey() ? 1 : 3;
   for (int c = 0; c < channels; ++c) {
     std::vector<double> reflectance(per_solve.front().reflectance.size(), 0.0);
     std::vector<double> transmittance(reflectance.size(), 0.0);
     for (std::size_t k = 0; k < per_solve.size(); ++k) {
-      const double weight = mu_t * mu_t * solves.to_rgb(c, static_cast<Eigen::Index>(k));  // 1/mfp^2 -> 1/unit^2
+      const double weight = mu_t[k] * mu_t[k] * solves.to_rgb(c, static_cast<Eigen::Index>(k));  // 1/mfp^2 -> 1/unit^2
       for (std::size_t i = 0; i < reflectance.size(); ++i) {
         reflectance[i] += weight * per_solve[k].reflectance[i];
         transmittance[i] += weight * per_solve[k].transmittance[i];

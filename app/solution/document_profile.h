@@ -1,7 +1,7 @@
 // A material document's spatial profile (core/spatial/layer_profile.h) per colour channel, in the document's
 // length unit: what `skinlayer profile` writes and the Python module's Solution.profile returns, through the same
-// code. So far for one layer with an albedo below 1 and nothing reflecting below it, open (no interfaces) or
-// semi-infinite under a rough top, at normal incidence.
+// code. So far, at normal incidence, for albedos below 1 and nothing reflecting below: one layer without interfaces,
+// or layers that end in a half-space under a rough top (a skin among them, mixed from its wavelengths).
 #pragma once
 
 #include <span>
@@ -13,7 +13,7 @@
 namespace skinlayer {
 
 struct DocumentProfile {
-  // Lengths in mm when the layer has its extinction mu_t (1/mm), else in its mean free paths ("mfp").
+  // Lengths in mm when the layers have their extinction mu_t (1/mm), else in the layer's mean free paths ("mfp").
   std::string unit;
   // [channel][position]: the scattered light leaving the top and the bottom per unit area and unit incident power,
   // in 1/unit^2. One channel for a grey document, three (red, green, blue) for an RGB one.
@@ -21,8 +21,9 @@ struct DocumentProfile {
 };
 
 // The means over the annuli [edges[i], edges[i + 1]) (increasing, from >= 0, in the unit), or the values at radii
-// (> 0, in the unit). Throws ParameterError, naming what it cannot take (a finite layer under a top interface, a
-// bottom interface or base, a stack, a skin, albedo 1), and for bad positions.
+// (> 0, in the unit). Throws ParameterError, naming what it cannot take (a finite layer or stack under a top
+// interface, a bottom interface or base, a stack without a rough top or without every layer's mu_t, albedo 1), and
+// for bad positions.
 DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges);
 DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii);
 

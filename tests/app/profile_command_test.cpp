@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/interfaces/layer_interfaces.h"
+#include "core/skin/skin_optics.h"
 #include "core/spatial/layer_profile.h"
 #include "tests/app/csv_output.h"
 #include "tests/app/error_expectations.h"
@@ -92,6 +93,32 @@ TEST(ProfileCommand, RoughTopHalfSpaceIsTheCoresProfile) {
   }
 }
 
+// A skin at one wavelength is a two-layer stack under its rough top, in mm: the core's profile of that stack, with
+// the dermis's extinction relative to the epidermis's.
+TEST(ProfileCommand, ASkinAtOneWavelengthIsItsStacksProfileInMillimetres) {
+  const ProcessResult result = profile({"--skin", "melanin=0.05", "--wavelength", "650", "--radii", "0.2,1"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const CsvOutput csv = parse_csv_output(result.out);
+  EXPECT_EQ(csv.header, (std::vector<std::string>{"r_mm", "reflectance", "transmittance"}));
+  ASSERT_EQ(csv.rows.size(), 2u);
+  SkinParameters skin;
+  skin.melanin = 0.05;
+  const Material m = skin_material(skin, 650.0);
+  ASSERT_EQ(m.below.size(), 1u);
+  ProfileLayer layer{m.tau, m.albedo, m.g};
+  layer.top = top_interface(m);
+  layer.below = {LateralSlab{kInf, m.below[0].albedo, m.below[0].g, *m.below[0].extinction / *m.extinction}};
+  const double mu_t = *m.extinction;
+  const double radii[] = {0.2 * mu_t, 1.0 * mu_t};
+  const LayerProfile expected = layer_profile_at(layer, radii, command_options());
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double per_mm2 = mu_t * mu_t * expected.reflectance[i];
+    EXPECT_NEAR(csv.rows[i][1], per_mm2, 1e-12 * per_mm2);
+    EXPECT_EQ(csv.rows[i][2], 0.0);
+  }
+  EXPECT_GT(csv.rows[0][1], 10.0 * csv.rows[1][1]);  // red light still falls tenfold from 0.2 to 1 mm
+}
+
 // An RGB albedo with two equal channels is solved once per distinct channel, and still writes three columns.
 TEST(ProfileCommand, EqualChannelsAreSolvedOnceAndWrittenEach) {
   const ProcessResult result =
@@ -118,8 +145,15 @@ TEST(ProfileCommand, WhatItCannotTakeIsOneLine) {
   EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--bottom", "lambert:0.5", "--albedo", "0.9"}), 2,
                                    {"Lambertian base"}));
   EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--bottom", "matched"}), 2, {"albedo is 1"}));
-  EXPECT_TRUE(failed_with_one_line(profile({"--preset", "skin-two-layer"}), 2, {"stack of 2 layers"}));
-  EXPECT_TRUE(failed_with_one_line(profile({"--skin", "melanin=0.05"}), 2, {"skin", "stack"}));
+  EXPECT_TRUE(failed_with_one_line(
+      profile({"--eta", "1", "--layer", "tau=0.5,albedo=0.9,g=0.5", "--layer", "tau=inf,albedo=0.9,g=0.5"}), 2,
+      {"stack of 2 layers", "no top"}));
+  EXPECT_TRUE(
+      failed_with_one_line(profile({"--layer", "tau=0.5,albedo=0.9,g=0.5", "--layer", "tau=inf,albedo=0.9,g=0.5"}), 2,
+                           {"extinction", "mu_t="}));
+  EXPECT_TRUE(failed_with_one_line(
+      profile({"--layer", "tau=0.5,albedo=0.9,g=0.5,mu_t=10", "--layer", "tau=2,albedo=0.9,g=0.5,mu_t=5"}), 2,
+      {"finite stack", "tau inf"}));
   EXPECT_TRUE(failed_with_one_line(with({"--radii", "0,1"}), 2, {"radii", "'0'", "> 0"}));
   EXPECT_TRUE(failed_with_one_line(with({"--radii", "-1"}), 2, {"radii", "> 0"}));
   EXPECT_TRUE(failed_with_one_line(with({"--annuli", "0.1"}), 2, {"annuli", "DR:N"}));
