@@ -104,13 +104,22 @@ struct SolvedLayer {
       throw ParameterError("profile: a stack of layers is computed so far under a rough top only");
     }
   }
+  // The modes that frequency k needs: the k.s term couples mode m to m + 1 with strength k sin(theta) / 2, so at
+  // low k the high modes carry nothing (§21.7).
+  LateralFrequencyResolution resolution_at(double k) const {
+    if (!options.adaptive_modes) return options.resolution;
+    double sparsest = slabs.front().relative_extinction;
+    for (const LateralSlab& slab : slabs) sparsest = std::min(sparsest, slab.relative_extinction);
+    const int needed = 4 + static_cast<int>(std::ceil(8.0 * std::sqrt(k / sparsest)));
+    return {options.resolution.ordinates, std::min(options.resolution.azimuth_modes, needed)};
+  }
   LateralFrequencyResponse response(double k) const {
-    return lateral_stack_response(slabs, top ? &*top : nullptr, k, options.resolution);
+    return lateral_stack_response(slabs, top ? &*top : nullptr, k, resolution_at(k));
   }
   // The discrete ordinates' own single scattering at k: R_1 and T_1.
   LateralFrequencyResponse single_scattering(double k) const {
-    if (!top) return open_stack_single_scattering_response(slabs, k, options.resolution);
-    return {rough_top_single_scattering_reflectance(slabs, *top, k, options.resolution), 0.0};
+    if (!top) return open_stack_single_scattering_response(slabs, k, resolution_at(k));
+    return {rough_top_single_scattering_reflectance(slabs, *top, k, resolution_at(k)), 0.0};
   }
   // Single scattering's power through the annulus [r0, r1) of a face, and its density at r > 0, in closed form.
   double single_scattered_power(LayerFace face, double r0, double r1) const {
@@ -139,20 +148,18 @@ MultipleScatteringTransforms multiple_scattering_transforms(const SolvedLayer& s
   const double step = std::asinh(options.max_frequency / options.frequency_scale) / (options.frequencies - 1);
   std::vector<double> reflected(static_cast<std::size_t>(options.frequencies));
   std::vector<double> transmitted(reflected.size());
-  double total_reflectance = 0.0, total_transmittance = 0.0;
-  for (int i = 0; i < options.frequencies; ++i) {
+  std::vector<LateralFrequencyResponse> all(reflected.size());
+  run_parallel(options.parallel_for, options.frequencies, [&](int i) {
     const double k = options.frequency_scale * std::sinh(step * i);
-    const LateralFrequencyResponse all = solved.response(k);
+    const std::size_t at = static_cast<std::size_t>(i);
+    all[at] = solved.response(k);
     const LateralFrequencyResponse once = solved.single_scattering(k);
-    reflected[static_cast<std::size_t>(i)] = all.reflectance - once.reflectance;
-    transmitted[static_cast<std::size_t>(i)] = all.transmittance - once.transmittance;
-    if (i == 0) {
-      total_reflectance = all.reflectance;
-      total_transmittance = all.transmittance;
-    }
-  }
+    reflected[at] = all[at].reflectance - once.reflectance;
+    transmitted[at] = all[at].transmittance - once.transmittance;
+  });
   return {FrequencySpline(reflected, step, options.frequency_scale),
-          FrequencySpline(transmitted, step, options.frequency_scale), total_reflectance, total_transmittance};
+          FrequencySpline(transmitted, step, options.frequency_scale), all.front().reflectance,
+          all.front().transmittance};
 }
 
 // The totals, then value(solved, face, transform, i) at each of `count` places (annuli or radii), on both faces.

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/interfaces/microfacet.h"
+#include "core/parallel_for.h"
 #include "core/spatial/lateral_frequency_response.h"
 
 namespace skinlayer {
@@ -34,10 +35,15 @@ struct ProfileLayer {
 };
 
 struct LayerProfileOptions {
-  LateralFrequencyResolution resolution{16, 24};
+  LateralFrequencyResolution resolution{16, 24};  // the azimuthal modes at the highest frequencies
   int frequencies = 48;           // samples of R_ms(k)
   double max_frequency = 100.0;   // 1 / mean free path; R_ms is taken as 0 beyond it
   double frequency_scale = 0.01;  // k_s: the grid is uniform in asinh(k / k_s)
+  // true: fewer modes where k is low, min(M, 4 + ceil(8 sqrt(k'))), k' the frequency in the mean free paths of the
+  // slab that sees it highest (§21.7); false: M at every frequency.
+  bool adaptive_modes = true;
+  // The caller's parallel-for (core/parallel_for.h): the frequencies are solved side by side through it.
+  ParallelFor parallel_for = {};
 };
 
 struct LayerProfile {
