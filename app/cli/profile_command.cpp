@@ -59,9 +59,10 @@ std::vector<double> radius_list(std::string_view text) {
 }  // namespace
 
 std::string profile_usage() {
-  return "Usage: skinlayer profile [material flags] [--incidence normal] [--annuli DR:N | --radii LIST]\n"
+  return "Usage: skinlayer profile [material flags] [--incidence normal|diffuse] [--annuli DR:N | --radii LIST]\n"
          "\n"
-         "Where a pencil beam's light leaves the layer: at normal incidence, the scattered light leaving the top\n"
+         "Where light entering at a point leaves the layer: of a pencil beam at normal incidence (or diffuse light,\n"
+         "--incidence diffuse), the scattered light leaving the top\n"
          "(reflectance) and the bottom (transmittance, the direct beam left out) per unit area and unit incident\n"
          "power. Writes, per annulus about the entry point (the mean over it),\n"
          "  r_inner_U,r_outer_U,reflectance,transmittance\n"
@@ -78,8 +79,9 @@ std::string profile_usage() {
          "discrete ordinates in the lateral frequency (docs/model.md section 21): about 2 s per channel for one\n"
          "layer, 6 s per wavelength for a skin.\n"
          "\n"
-         "  --incidence normal\n"
-         "      the incident beam; normal incidence is the one computed so far.\n"
+         "  --incidence normal|diffuse\n"
+         "      a pencil beam along the normal (the default), or light of the same power arriving at the entry\n"
+         "      point diffusely, from every direction of the hemisphere (radiance 1/pi per unit power).\n"
          "  --annuli DR:N\n"
          "      N annuli of width DR (in U) from the entry point; default 0.1 mean free paths, 100 annuli.\n"
          "  --radii LIST\n"
@@ -97,10 +99,11 @@ int run_profile_command(std::span<const std::string_view> arguments, std::ostrea
   const ParsedFlags flags = ParsedFlags::parse(
       arguments, material_flags_and({kIncidenceFlag, kAnnuliFlag, kRadiiFlag, kSkinFlag, kWavelengthFlag}),
       "skinlayer profile");
-  if (const auto incidence = flags.value(kIncidenceFlag); incidence && *incidence != "normal") {
-    throw UsageError("incidence = " + quoted(*incidence) +
-                     " is not computed yet; profiles are for normal incidence (--incidence normal)");
+  const std::string_view incidence_name = flags.value(kIncidenceFlag).value_or("normal");
+  if (incidence_name != "normal" && incidence_name != "diffuse") {
+    throw UsageError("incidence = " + quoted(incidence_name) + " is not one of normal, diffuse");
   }
+  const Incidence incidence = incidence_name == "diffuse" ? Incidence::Diffuse : Incidence::Normal;
   if (flags.has(kAnnuliFlag) && flags.has(kRadiiFlag)) {
     throw UsageError("flags --annuli and --radii both choose where the profile is given; give only one");
   }
@@ -113,8 +116,8 @@ int run_profile_command(std::span<const std::string_view> arguments, std::ostrea
   const double mu_t = document.skin ? 1.0 : document.layer.extinction.value_or(1.0);
   const std::vector<double> positions =
       at_radii ? radius_list(*flags.value(kRadiiFlag)) : annulus_edges(flags.value(kAnnuliFlag), 0.1 / mu_t);
-  const DocumentProfile profile =
-      at_radii ? document_profile_at_radii(document, positions) : document_profile_in_annuli(document, positions);
+  const DocumentProfile profile = at_radii ? document_profile_at_radii(document, positions, incidence)
+                                           : document_profile_in_annuli(document, positions, incidence);
   const std::string& unit = profile.unit;
   const std::size_t channels = profile.reflectance.size();
 

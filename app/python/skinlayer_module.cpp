@@ -106,8 +106,9 @@ py::tuple eval(const Solution& solution, const InputArray& theta_i, const InputA
 
 // The spatial profile at radii in the document's unit: (unit, reflectance per channel, transmittance per channel).
 // Not interruptible: it has no cancellation points yet (about 2 s per channel).
-py::tuple profile(const Solution& solution, const std::vector<double>& radii) {
-  const DocumentProfile p = document_profile_at_radii(solution.document, radii);
+py::tuple profile(const Solution& solution, const std::vector<double>& radii, bool diffuse) {
+  const DocumentProfile p =
+      document_profile_at_radii(solution.document, radii, diffuse ? Incidence::Diffuse : Incidence::Normal);
   return py::make_tuple(p.unit, p.reflectance, p.transmittance);
 }
 
@@ -255,7 +256,7 @@ PYBIND11_MODULE(_skinlayer, module) {
       .def_property_readonly("to_rgb", &to_rgb)
       .def("eval", &eval, py::arg("theta_i"), py::arg("theta_o"), py::arg("phi"), py::arg("unscattered"))
       .def("albedo", &albedo, py::arg("theta_list"))
-      .def("profile", &profile, py::arg("radii"))
+      .def("profile", &profile, py::arg("radii"), py::arg("diffuse"))
       .def("tables", &tables)
       .def("export", &export_file, py::arg("path"), py::arg("arguments"));
   module.def("solve", &solve_material, py::arg("material"), py::arg("arguments"));

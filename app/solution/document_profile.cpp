@@ -23,7 +23,7 @@ LayerProfileOptions profile_options() {
 // One line naming what the profile cannot take yet, or nothing for a material it can: albedos below 1, an
 // index-matched half-space or nothing below, and either one layer without interfaces or, under a rough top, layers
 // without interfaces between them that end in a half-space, each with its extinction when there are several.
-void require_profile_layer(const Material& m) {
+void require_profile_layer(const Material& m, Incidence incidence) {
   std::string why;
   const bool stack = m.layer_count() > 1;
   const bool ends_in_half_space = std::isinf(stack ? m.below.back().tau : m.tau);
@@ -31,19 +31,21 @@ void require_profile_layer(const Material& m) {
                                                        [](const StackedLayer& l) { return l.extinction.has_value(); });
   const bool albedo_below_1 = m.albedo < 1.0 && std::all_of(m.below.begin(), m.below.end(),
                                                             [](const StackedLayer& l) { return l.albedo < 1.0; });
-  if (stack && m.eta == 1.0) {
-    why = "it is a stack of " + std::to_string(m.layer_count()) + " layers with no top interface";
+  const bool enters_as_node_radiance = m.eta != 1.0 || incidence == Incidence::Diffuse;
+  if (stack && !enters_as_node_radiance) {
+    why = "it is a stack of " + std::to_string(m.layer_count()) + " layers with no top interface (at normal incidence)";
   } else if (stack && std::any_of(m.below.begin(), m.below.end(),
                                   [](const StackedLayer& l) { return l.interface.has_value(); })) {
     why = "it has an interface between its layers";
   } else if (stack && !all_lengths) {
     why = "its layers do not all have their extinction (mu_t=, 1/mm), which relates their lengths";
-  } else if (m.eta != 1.0 && !ends_in_half_space) {
-    why = "it has a top interface (eta " + cli::format_shortest(m.eta) + ") over a finite " +
+  } else if (enters_as_node_radiance && !ends_in_half_space) {
+    const std::string what = m.eta != 1.0 ? "it has a top interface (eta " + cli::format_shortest(m.eta) + ")"
+                                          : std::string("the light is diffuse");
+    why = what + " over a finite " +
           (stack ? std::string("stack; its last layer needs tau inf")
                  : "layer (tau " + cli::format_shortest(m.tau) +
-                       "; --eta 1 has no interface, --T 0 makes the layer "
-                       "semi-infinite)");
+                       "; --eta 1 has no interface, --T 0 makes the layer semi-infinite)");
   } else if (m.bottom.kind == BottomKind::Lambert && !ends_in_half_space) {
     why = "it has a Lambertian base (--bottom " + format_bottom(m.bottom) + ")";
   } else if (m.bottom.kind == BottomKind::Air && m.bottom_eta() != 1.0 && !ends_in_half_space) {
@@ -55,22 +57,23 @@ void require_profile_layer(const Material& m) {
   if (why.empty()) return;
   throw ParameterError(
       "profile: spatial profiles are computed so far for albedos below 1 and nothing reflecting below, either one "
-      "layer with no interfaces (--eta 1 --bottom matched) or layers that end in a half-space under a rough top "
-      "(--T 0, or a last layer with tau=inf), and this material cannot be: " +
+      "layer with no interfaces (--eta 1 --bottom matched) at normal incidence or layers that end in a half-space "
+      "under a rough top or in diffuse light (--T 0, or a last layer with tau=inf), and this material cannot be: " +
       why);
 }
 
 // The document's distinct solves and how they make the red, green and blue channels (a grey document: one solve;
 // a skin: its wavelengths).
-ColorChannels profile_solves(const MaterialDocument& document) {
+ColorChannels profile_solves(const MaterialDocument& document, Incidence incidence) {
   ColorChannels solves = color_channels(document);
-  for (const Material& material : solves.materials) require_profile_layer(material);
+  for (const Material& material : solves.materials) require_profile_layer(material, incidence);
   return solves;
 }
 
 // The material as the profile sees it (core/spatial/layer_profile.h): lengths in its first layer's mean free paths.
-ProfileLayer profile_layer(const Material& m) {
+ProfileLayer profile_layer(const Material& m, Incidence incidence) {
   ProfileLayer layer{m.tau, m.albedo, m.g};
+  layer.incidence = incidence;
   if (m.eta != 1.0) layer.top = top_interface(m);
   for (const StackedLayer& below : m.below) {
     layer.below.push_back({below.tau, below.albedo, below.g, *below.extinction / *m.extinction});
@@ -79,9 +82,9 @@ ProfileLayer profile_layer(const Material& m) {
 }
 
 template <class Profile>
-DocumentProfile document_profile(const MaterialDocument& document, std::span<const double> positions,
-                                 const Profile& profile) {
-  const ColorChannels solves = profile_solves(document);
+DocumentProfile document_profile(const MaterialDocument& document, Incidence incidence,
+                                 std::span<const double> positions, const Profile& profile) {
+  const ColorChannels solves = profile_solves(document, incidence);
   const bool in_mm = solves.materials.front().extinction.has_value();
   // Each solve in its own first layer's mean free paths (a skin's extinction changes with the wavelength), then back
   // to the document's unit: mm with the extinction mu_t (1/mm), or mfp (mu_t = 1).
@@ -115,15 +118,17 @@ DocumentProfile document_profile(const MaterialDocument& document, std::span<con
 
 }  // namespace
 
-DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges) {
-  return document_profile(document, edges, [](const Material& m, std::span<const double> edges_mfp) {
-    return layer_profile(profile_layer(m), edges_mfp, profile_options());
+DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges,
+                                           Incidence incidence) {
+  return document_profile(document, incidence, edges, [&](const Material& m, std::span<const double> edges_mfp) {
+    return layer_profile(profile_layer(m, incidence), edges_mfp, profile_options());
   });
 }
 
-DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii) {
-  return document_profile(document, radii, [](const Material& m, std::span<const double> radii_mfp) {
-    return layer_profile_at(profile_layer(m), radii_mfp, profile_options());
+DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii,
+                                          Incidence incidence) {
+  return document_profile(document, incidence, radii, [&](const Material& m, std::span<const double> radii_mfp) {
+    return layer_profile_at(profile_layer(m, incidence), radii_mfp, profile_options());
   });
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "app/material/material_document.h"
+#include "core/spatial/lateral_top_interface.h"
 
 namespace skinlayer {
 
@@ -24,7 +25,9 @@ struct DocumentProfile {
 // (> 0, in the unit). Throws ParameterError, naming what it cannot take (a finite layer or stack under a top
 // interface, a bottom interface or base, a stack without a rough top or without every layer's mu_t, albedo 1), and
 // for bad positions.
-DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges);
-DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii);
+DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges,
+                                           Incidence incidence = Incidence::Normal);
+DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii,
+                                          Incidence incidence = Incidence::Normal);
 
 }  // namespace skinlayer

@@ -1,6 +1,7 @@
 // A rough top interface as the discrete ordinates of a lateral-frequency solve see it, for a pencil beam at normal
-// incidence (docs/model.md §21.9). These are the BSDF solve's own operators (core/interfaces/layer_interfaces.h), on
-// the same nodes and energy-matched the same way, so that the k = 0 response is the BSDF's subsurface reflectance.
+// incidence or a diffusely lit point (docs/model.md §21.9, §21.12). These are the BSDF solve's own operators
+// (core/interfaces/layer_interfaces.h), on the same nodes and energy-matched the same way, so that the k = 0 response
+// is the BSDF's subsurface reflectance.
 //
 // The interface has no thickness: it moves no light sideways, so in k-space it acts on each azimuthal mode as it does
 // in the BSDF, R21^m mapping the upward node radiance of mode m to the downward one, whatever the frequency.
@@ -10,15 +11,20 @@
 #include <vector>
 
 #include "core/interfaces/microfacet.h"
+#include "core/series/quadrature.h"
 
 namespace skinlayer {
+
+// How the light arrives at the entry point: a collimated beam along the normal, or diffuse light (radiance 1/pi from
+// every direction of the upper hemisphere, unit power in all).
+enum class Incidence { Normal, Diffuse };
 
 struct LateralTopInterface {
   // R21^m for m = 0 .. modes - 1 (N x N, dimensionless, quadrature weights included): upward node radiance at the
   // top to downward node radiance.
   std::vector<Eigen::MatrixXd> reflection;
-  // t12: the downward node radiance that a beam of unit power per unit area at normal incidence leaves below the
-  // interface (1/sr). At normal incidence it is uniform in azimuth: mode 0 alone.
+  // t12: the downward node radiance that light of unit power per unit area leaves below the interface (1/sr). At
+  // normal incidence, and averaged over diffuse incidence, it is uniform in azimuth: mode 0 alone.
   Eigen::VectorXd source;
   // T_top,inside(mu_j): the fraction of the flux meeting the interface from inside along node j that leaves it.
   Eigen::VectorXd exit;
@@ -28,8 +34,18 @@ struct LateralTopInterface {
 };
 
 // The top's operators on `ordinates` double-Gauss nodes per hemisphere and `modes` cosine modes, projected on
-// `azimuths` samples of [0, pi] as the BSDF solve projects them. Throws std::invalid_argument for eta = 1 (no
-// interface: the open layer's collimated beam instead).
-LateralTopInterface lateral_top_interface(const RoughDielectric& top, int ordinates, int modes, int azimuths = 97);
+// `azimuths` samples of [0, pi] as the BSDF solve projects them. Diffuse incidence averages the source and the
+// surface's reflection over diffuse_incidence_cosines(). Throws std::invalid_argument for eta = 1 (no interface:
+// the open layer's collimated beam, or open_top_diffuse_interface).
+LateralTopInterface lateral_top_interface(const RoughDielectric& top, int ordinates, int modes,
+                                          Incidence incidence = Incidence::Normal, int azimuths = 97);
+
+// Diffuse light under no interface, held as node radiance: 1/pi on every down node (unit power on the double-Gauss
+// nodes, whose sum of a_j mu_j is 1/2), nothing reflected, everything leaving.
+LateralTopInterface open_top_diffuse_interface(int ordinates, int modes);
+
+// The incident cosines over which diffuse incidence averages, with weights 2 mu w (Gauss-Legendre on (0, 1), 24
+// nodes): the quantity at diffuse incidence is sum_q weight_q X(mu_q), the hemispherical average of X.
+QuadratureRule diffuse_incidence_cosines();
 
 }  // namespace skinlayer

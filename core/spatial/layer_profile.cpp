@@ -89,19 +89,23 @@ void check_options(const LayerProfileOptions& options) {
   }
 }
 
-// The layer as the solves see it: its slabs, and its rough top's operators built once, at the options' resolution.
+// The layer as the solves see it: its slabs, and how the light enters them. A collimated beam under an open top is
+// the beam of §21.4; light that enters as node radiance (through a rough top, or diffuse) has its operators built
+// once, at the options' resolution (§21.9, §21.12).
 struct SolvedLayer {
   SolvedLayer(const ProfileLayer& described, const LayerProfileOptions& chosen)
       : layer(described), slabs(described.slabs()), options(chosen) {
     check_options(options);
-    if (layer.top) {
+    const int N = options.resolution.ordinates, M = options.resolution.azimuth_modes;
+    if (layer.top || layer.incidence == Incidence::Diffuse) {
       if (std::isfinite(slabs.back().tau)) {
         throw ParameterError(
-            "profile: under a rough top, profiles are computed so far for layers that end in a half-space (tau inf)");
+            "profile: under a rough top or diffuse light, profiles are computed so far for layers that end in a "
+            "half-space (tau inf)");
       }
-      top = lateral_top_interface(*layer.top, options.resolution.ordinates, options.resolution.azimuth_modes);
+      entry = layer.top ? lateral_top_interface(*layer.top, N, M, layer.incidence) : open_top_diffuse_interface(N, M);
     } else if (slabs.size() > 1) {
-      throw ParameterError("profile: a stack of layers is computed so far under a rough top only");
+      throw ParameterError("profile: a stack of layers is computed so far under a rough top or in diffuse light");
     }
   }
   // The modes that frequency k needs: the k.s term couples mode m to m + 1 with strength k sin(theta) / 2, so at
@@ -114,27 +118,27 @@ struct SolvedLayer {
     return {options.resolution.ordinates, std::min(options.resolution.azimuth_modes, needed)};
   }
   LateralFrequencyResponse response(double k) const {
-    return lateral_stack_response(slabs, top ? &*top : nullptr, k, resolution_at(k));
+    return lateral_stack_response(slabs, entry ? &*entry : nullptr, k, resolution_at(k));
   }
   // The discrete ordinates' own single scattering at k: R_1 and T_1.
   LateralFrequencyResponse single_scattering(double k) const {
-    if (!top) return open_stack_single_scattering_response(slabs, k, resolution_at(k));
-    return {rough_top_single_scattering_reflectance(slabs, *top, k, resolution_at(k)), 0.0};
+    if (!entry) return open_stack_single_scattering_response(slabs, k, resolution_at(k));
+    return {rough_top_single_scattering_reflectance(slabs, *entry, k, resolution_at(k)), 0.0};
   }
   // Single scattering's power through the annulus [r0, r1) of a face, and its density at r > 0, in closed form.
   double single_scattered_power(LayerFace face, double r0, double r1) const {
-    if (!top) return skinlayer::single_scattered_power(layer.tau, layer.albedo, layer.g, face, r0, r1);
-    return rough_top_single_scattered_power(slabs, *top, options.resolution.ordinates, r0, r1);
+    if (!entry) return skinlayer::single_scattered_power(layer.tau, layer.albedo, layer.g, face, r0, r1);
+    return rough_top_single_scattered_power(slabs, *entry, options.resolution.ordinates, r0, r1);
   }
   double single_scattered_density(LayerFace face, double r) const {
-    if (!top) return skinlayer::single_scattered_density(layer.tau, layer.albedo, layer.g, face, r);
-    return rough_top_single_scattered_density(slabs, *top, options.resolution.ordinates, r);
+    if (!entry) return skinlayer::single_scattered_density(layer.tau, layer.albedo, layer.g, face, r);
+    return rough_top_single_scattered_density(slabs, *entry, options.resolution.ordinates, r);
   }
 
   ProfileLayer layer;
   std::vector<LateralSlab> slabs;
   LayerProfileOptions options;
-  std::optional<LateralTopInterface> top;
+  std::optional<LateralTopInterface> entry;  // none: the collimated beam under an open top
 };
 
 // The multiply scattered light's transforms, sampled and splined (§21.7), with the totals at k = 0.

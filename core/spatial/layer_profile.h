@@ -1,7 +1,8 @@
 // The spatially resolved response of one layer to a pencil beam at normal incidence: where its light leaves the top
 // and the bottom, averaged over annuli about the entry point or at radii (docs/model.md §21.7, §21.10). Lengths are in
 // mean free paths of its first slab. The layer has an index-matched half-space or nothing below it, and above it no
-// interface (the open layer, one slab) or a rough one over a stack of slabs that ends in a half-space, so far.
+// interface (the open layer, one slab) or a rough one over a stack of slabs that ends in a half-space, so far. Diffuse
+// incidence (§21.12) takes stacks that end in a half-space under either top.
 //
 // Single scattering is singular at r -> 0 and is taken in closed form (single_scattering_profile.h under an open top,
 // rough_top_single_scattering.h under a rough one). The rest, the light scattered more than once, is smooth enough
@@ -19,6 +20,7 @@
 #include "core/interfaces/microfacet.h"
 #include "core/parallel_for.h"
 #include "core/spatial/lateral_frequency_response.h"
+#include "core/spatial/lateral_top_interface.h"
 
 namespace skinlayer {
 
@@ -29,7 +31,8 @@ struct ProfileLayer {
   double albedo = 0.0;                                // Omega in [0, 1)
   double g = 0.0;                                     // Henyey-Greenstein asymmetry
   std::optional<RoughDielectric> top = std::nullopt;  // none: no interface (eta = 1)
-  std::vector<LateralSlab> below = {};                // under a rough top only, so far
+  std::vector<LateralSlab> below = {};                // under a rough top or diffuse light only, so far
+  Incidence incidence = Incidence::Normal;
 
   std::vector<LateralSlab> slabs() const;  // all of them, top to bottom
 };
@@ -57,7 +60,8 @@ struct LayerProfile {
 };
 
 // edges: finite, increasing radii from >= 0, in mean free paths. Throws ParameterError (one line for the user) for bad
-// edges or radii and for what it cannot take yet (a finite stack under a rough top, a stack under an open one),
+// edges or radii and for what it cannot take yet (a finite stack under a rough top or diffuse light, a stack under an
+// open top at normal incidence),
 // std::invalid_argument for bad options or layer parameters.
 LayerProfile layer_profile(const ProfileLayer& layer, std::span<const double> edges,
                            const LayerProfileOptions& options = {});

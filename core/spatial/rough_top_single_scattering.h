@@ -1,9 +1,10 @@
-// Light scattered exactly once in a stack of slabs under a rough top, lit by a pencil beam at normal incidence: the
-// singular part of its reflectance profile (docs/model.md §21.10). Lengths are in mean free paths of the first slab.
+// Light scattered exactly once in a stack of slabs under a rough top, lit by a pencil beam at normal incidence, or
+// under any top by diffuse light: the singular part of its reflectance profile (docs/model.md §21.10). Lengths are in
+// mean free paths of the first slab.
 //
-// The top refracts the beam into a lobe, which the ordinates hold as node radiance t_j at cosines mu_j, uniform in
-// azimuth (lateral_top_interface.h). Light entering along d (node j, any azimuth) and scattered at path length s into
-// an upward direction o (node i) leaves the top displaced by s rho, with
+// The top refracts the beam into a lobe (or diffuse light arrives from everywhere), which the ordinates hold as node
+// radiance t_j at cosines mu_j, uniform in azimuth (lateral_top_interface.h). Light entering along d (node j, any
+// azimuth) and scattered at path length s into an upward direction o (node i) leaves the top displaced by s rho, with
 //   rho^2 = sin^2(theta_j) + (mu_j tan(theta_i))^2 + 2 sin(theta_j) mu_j tan(theta_i) cos(dphi),
 // where dphi is the azimuth between d and o, and crosses the top with T_i = T_top,inside(mu_i). Going down and back
 // up it passes the optical depth O(z) twice, at the rates 1/mu_j and 1/mu_i. In slab l (albedo Omega_l, relative

@@ -119,6 +119,21 @@ TEST(ProfileCommand, ASkinAtOneWavelengthIsItsStacksProfileInMillimetres) {
   EXPECT_GT(csv.rows[0][1], 10.0 * csv.rows[1][1]);  // red light still falls tenfold from 0.2 to 1 mm
 }
 
+// Diffuse light on an open half-space: the core's profile with light entering as node radiance.
+TEST(ProfileCommand, DiffuseIncidenceIsTheCoresProfile) {
+  const ProcessResult result = profile({"--eta", "1", "--bottom", "matched", "--T", "0", "--albedo", "0.95", "--g",
+                                        "0.7", "--incidence", "diffuse", "--radii", "0.3,3"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const CsvOutput csv = parse_csv_output(result.out);
+  ASSERT_EQ(csv.rows.size(), 2u);
+  ProfileLayer layer{kInf, 0.95, 0.7};
+  layer.incidence = Incidence::Diffuse;
+  const double radii[] = {0.3, 3.0};
+  const LayerProfile expected = layer_profile_at(layer, radii, command_options());
+  for (std::size_t i = 0; i < 2; ++i)
+    EXPECT_NEAR(csv.rows[i][1], expected.reflectance[i], 1e-12 * expected.reflectance[i]);
+}
+
 // An RGB albedo with two equal channels is solved once per distinct channel, and still writes three columns.
 TEST(ProfileCommand, EqualChannelsAreSolvedOnceAndWrittenEach) {
   const ProcessResult result =
@@ -160,7 +175,9 @@ TEST(ProfileCommand, WhatItCannotTakeIsOneLine) {
   EXPECT_TRUE(failed_with_one_line(with({"--annuli", "0.1:2.5"}), 2, {"annuli", "whole number"}));
   EXPECT_TRUE(failed_with_one_line(with({"--annuli", "-0.1:5"}), 2, {"width", "> 0"}));
   EXPECT_TRUE(failed_with_one_line(with({"--annuli", "0.1:5", "--radii", "1"}), 2, {"--annuli", "--radii"}));
-  EXPECT_TRUE(failed_with_one_line(with({"--incidence", "diffuse"}), 2, {"diffuse", "normal incidence"}));
+  EXPECT_TRUE(failed_with_one_line(with({"--incidence", "oblique"}), 2, {"oblique", "normal, diffuse"}));
+  EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--T", "0.5", "--albedo", "0.9", "--incidence", "diffuse"}),
+                                   2, {"light is diffuse", "finite layer"}));
   EXPECT_TRUE(failed_with_one_line(with({"--mu-t", "-3"}), 2, {"mu-t = -3", "1/mm"}));
 }
 

@@ -40,5 +40,13 @@ def test_what_it_cannot_take_raises_value_error_with_the_command_lines_message()
     open_layer = skinlayer.solve(skinlayer.Material(eta=1, bottom="matched", albedo=0.9))
     with pytest.raises(ValueError, match="radii must be finite and > 0"):
         open_layer.profile([0.0, 1.0])
-    with pytest.raises(ValueError, match="normal incidence"):
-        open_layer.profile([1.0], incidence="diffuse")
+    with pytest.raises(ValueError, match="not one of normal, diffuse"):
+        open_layer.profile([1.0], incidence="oblique")
+
+
+def test_diffuse_incidence_is_the_command_lines():
+    half_space = ["--sigma", "0.4", "--T", "0", "--g", "0.8", "--albedo", "0.95"]
+    result = skinlayer.solve(skinlayer.Material(sigma=0.4, tau=float("inf"), g=0.8, albedo=0.95)).profile(
+        [0.5, 2.0], incidence="diffuse")
+    table = cli_table(["profile"] + half_space + ["--incidence", "diffuse", "--radii", "0.5,2"])
+    assert_close(result["reflectance"], table["reflectance"])

@@ -313,21 +313,23 @@ class Solution:
         return result
 
     def profile(self, r, incidence="normal"):
-        """Where a pencil beam's light leaves the layer, as `skinlayer profile --radii` writes it.
+        """Where light entering at a point leaves the layer, as `skinlayer profile --radii` writes it.
 
-        r: radii > 0 from the entry point, a number or an array of any shape, in mm when the layer has its
-        extinction (mu_t) and in its mean free paths when it has none (the profile is infinite at r = 0).
+        r: radii > 0 from the entry point, a number or an array of any shape, in mm when the layers have their
+        extinction (mu_t) and in the layer's mean free paths when they have none (the profile is infinite at r = 0).
+        incidence: "normal", a pencil beam along the normal, or "diffuse", light of the same power arriving at the
+        point from the whole hemisphere.
 
         Returns a dict: unit ("mm" or "mfp"), and reflectance and transmittance, arrays of r's shape in
         1/unit^2: the scattered light leaving the top and the bottom per unit area and unit incident power (the
-        direct beam is not in transmittance). A colour material adds a trailing axis of 3. So far for an open
-        layer (one layer, eta=1, bottom="matched", albedo below 1) at normal incidence: ValueError, with the
-        command line's message, for anything else. It takes about 2 s per channel and cannot be interrupted.
+        direct beam is not in transmittance). A colour material or a skin adds a trailing axis of 3. So far for
+        the materials `skinlayer profile` takes: ValueError, with the command line's message, for anything else.
+        It takes seconds per channel (a skin: per wavelength) and cannot be interrupted.
         """
-        if incidence != "normal":
-            raise ValueError(f"incidence = {incidence!r} is not computed yet; profiles are for normal incidence")
+        if incidence not in ("normal", "diffuse"):
+            raise ValueError(f"incidence = {incidence!r} is not one of normal, diffuse")
         radii = _np.asarray(r, dtype=_np.float64)
-        unit, reflectance, transmittance = self._native.profile(radii.reshape(-1).tolist())
+        unit, reflectance, transmittance = self._native.profile(radii.reshape(-1).tolist(), incidence == "diffuse")
         shape = radii.shape if len(reflectance) == 1 else radii.shape + (3,)
         stack = (lambda channels: _np.array(channels[0])) if len(reflectance) == 1 else (
             lambda channels: _np.stack([_np.array(c) for c in channels], axis=-1))

@@ -11,6 +11,7 @@
 #include "core/conventions.h"
 #include "core/interfaces/layer_interfaces.h"
 #include "core/material.h"
+#include "core/reference/monte_carlo.h"
 #include "core/series/quadrature.h"
 #include "core/solver.h"
 #include "core/spatial/lateral_top_interface.h"
@@ -119,6 +120,81 @@ TEST(RoughTopProfile, PointValuesAverageToTheAnnuli) {
   }
 }
 
+// Diffuse light is the hemispherical average of the beams: at k = 0, under a rough top, R(0) plus the surface's
+// multiply scattered reflection is the average of the solver's subsurface reflectance over the same incident cosines.
+TEST(RoughTopProfile, DiffuseIncidenceAtZeroFrequencyIsTheHemisphericalAverage) {
+  Material m = rough_half_space(0.5, 0.95, 0.7);
+  m.ordinates = 12;
+  const QuadratureRule cosines = diffuse_incidence_cosines();
+  std::vector<double> theta;
+  for (const double mu : cosines.nodes) theta.push_back(std::acos(mu));
+  const std::vector<DirectionalAlbedo> albedo = directional_albedo(m, theta);
+  double average = 0.0;
+  for (std::size_t q = 0; q < theta.size(); ++q) average += cosines.weights[q] * albedo[q].reflectance_subsurface;
+  const LateralTopInterface top = lateral_top_interface(top_interface(m), 12, 4, Incidence::Diffuse);
+  const LateralSlab half_space[] = {{kInf, 0.95, 0.7}};
+  const double at_zero = lateral_stack_response(half_space, &top, 0.0, {12, 4}).reflectance;
+  EXPECT_NEAR(at_zero + top.surface_multiple_reflectance, average, 1e-6);
+  // Through no interface the light enters as node radiance 1/pi, not as beams: the same average within the
+  // ordinates' discretization of each beam's first scattering.
+  const Material open = test::index_matched_slab(kInf, 0.95, 0.7);
+  const std::vector<DirectionalAlbedo> open_albedo = directional_albedo(open, theta);
+  double open_average = 0.0;
+  for (std::size_t q = 0; q < theta.size(); ++q)
+    open_average += cosines.weights[q] * open_albedo[q].reflectance_subsurface;
+  const LateralTopInterface none = open_top_diffuse_interface(12, 4);
+  EXPECT_NEAR(lateral_stack_response(half_space, &none, 0.0, {12, 4}).reflectance, open_average, 2e-3 * open_average);
+}
+
+// The walk lit at the cosines of an 8-point rule, each run weighted by 2 mu w: diffuse light's profile under a rough
+// top, annulus by annulus, within 2% or 3 standard errors above 1e-3 of the peak.
+TEST(RoughTopProfile, DiffuseIncidenceMatchesTheWalkAveragedOverTheHemisphere) {
+  const Material m = rough_half_space(0.4, 0.98, 0.8);
+  ProfileLayer layer = as_profile_layer(m);
+  layer.incidence = Incidence::Diffuse;
+  const std::vector<double> edges = {0.0, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0};
+  const LayerProfile profile = layer_profile(layer, edges, test_options());
+  std::vector<RadialBin> bins;
+  for (std::size_t i = 0; i + 1 < edges.size(); ++i) bins.push_back({ExitSide::Reflected, edges[i], edges[i + 1]});
+  const QuadratureRule rule = gauss_legendre(8, 0.0, 1.0);
+  std::vector<double> value(bins.size(), 0.0), variance(bins.size(), 0.0);
+  for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+    MonteCarloOptions options;
+    options.paths = 200'000;
+    options.seed = 20 + q;
+    const MonteCarloResult mc = simulate_layer(m, std::acos(rule.nodes[q]), {}, options, bins);
+    const double weight = 2.0 * rule.nodes[q] * rule.weights[q];
+    for (std::size_t i = 0; i < bins.size(); ++i) {
+      value[i] += weight * mc.radial_bins[i].value;
+      variance[i] += weight * weight * mc.radial_bins[i].standard_error * mc.radial_bins[i].standard_error;
+    }
+  }
+  double peak = 0.0;
+  for (const double v : profile.reflectance) peak = std::max(peak, v);
+  for (std::size_t i = 0; i < bins.size(); ++i) {
+    const double se = std::sqrt(variance[i]), diff = profile.reflectance[i] - value[i];
+    std::printf("  R [%5.2f, %5.2f)  profile %.4e  walk %.4e +- %.1e  (%+.2f%%, %+.2f SE)\n", edges[i], edges[i + 1],
+                profile.reflectance[i], value[i], se, 100.0 * diff / value[i], diff / se);
+    if (profile.reflectance[i] < 1e-3 * peak) continue;
+    EXPECT_TRUE(std::abs(diff) <= 0.02 * value[i] || std::abs(diff) <= 3.0 * se) << edges[i];
+  }
+}
+
+// Fewer modes at low frequencies (LayerProfileOptions::adaptive_modes) leave a skin-like stack's profile as it is.
+TEST(RoughTopProfile, AdaptiveModesLeaveTheProfile) {
+  ProfileLayer layer = as_profile_layer(rough_half_space(0.4, 0.95, 0.8));
+  layer.tau = 1.5;
+  layer.below = {LateralSlab{kInf, 0.99, 0.8, 0.6}};
+  const double radii[] = {0.1, 0.5, 2.0, 8.0, 20.0};
+  LayerProfileOptions all_modes = test_options();
+  all_modes.adaptive_modes = false;
+  const LayerProfile fixed = layer_profile_at(layer, radii, all_modes);
+  const LayerProfile adaptive = layer_profile_at(layer, radii, test_options());
+  for (std::size_t i = 0; i < std::size(radii); ++i) {
+    EXPECT_NEAR(adaptive.reflectance[i], fixed.reflectance[i], 1e-5 * fixed.reflectance[i]) << radii[i];
+  }
+}
+
 TEST(RoughTopProfile, WhatItCannotTakeYetIsRefused) {
   ProfileLayer layer = as_profile_layer(rough_half_space(0.4, 0.95, 0.7));
   layer.tau = 2.0;
@@ -129,6 +205,8 @@ TEST(RoughTopProfile, WhatItCannotTakeYetIsRefused) {
   layer.below.back().tau = kInf;
   layer.top.reset();
   EXPECT_THROW(layer_profile_at(layer, radii, test_options()), ParameterError);  // a stack under an open top
+  layer.incidence = Incidence::Diffuse;                                          // which diffuse light can enter
+  EXPECT_GT(layer_profile_at(layer, radii, test_options()).reflectance.front(), 0.0);
 }
 
 }  // namespace
