@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <unsupported/Eigen/SpecialFunctions>
 #include <unsupported/Eigen/Splines>
 
 #include "core/conventions.h"
@@ -74,13 +75,13 @@ double integrate_over_frequency(const FrequencySpline& F, double r, const Kernel
 // int_0^kmax F(k) [r1 J1(k r1) - r0 J1(k r0)] dk: the power through the annulus [r0, r1).
 double annulus_power(const FrequencySpline& F, double r0, double r1) {
   return integrate_over_frequency(F, r1, [&](double k) {
-    return r1 * std::cyl_bessel_j(1.0, k * r1) - (r0 > 0.0 ? r0 * std::cyl_bessel_j(1.0, k * r0) : 0.0);
+    return r1 * Eigen::numext::bessel_j1(k * r1) - (r0 > 0.0 ? r0 * Eigen::numext::bessel_j1(k * r0) : 0.0);
   });
 }
 
 // (1 / 2 pi) int_0^kmax F(k) J0(k r) k dk: the inverse Hankel transform at one radius.
 double point_value(const FrequencySpline& F, double r) {
-  return integrate_over_frequency(F, r, [&](double k) { return std::cyl_bessel_j(0.0, k * r) * k; }) / (2.0 * kPi);
+  return integrate_over_frequency(F, r, [&](double k) { return Eigen::numext::bessel_j0(k * r) * k; }) / (2.0 * kPi);
 }
 
 void check_options(const LayerProfileOptions& options) {

@@ -1,11 +1,15 @@
 // Spatially resolved transport (core/spatial/, docs/model.md §21), one thread.
 //   Run: cmake --build build --target bench && build/tests/bench/bench_spatial
-// No target yet: issue 43 asks for profiles live in the previewer; these are the numbers that work starts from.
+// Issue 43's targets are 50 ms for one channel's profile at 256 radii and 1.5 s for a 31-wavelength skin; these are
+// the numbers that work stands at (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <limits>
 #include <vector>
 
+#include "core/interfaces/layer_interfaces.h"
+#include "core/skin/skin_optics.h"
 #include "core/spatial/lateral_frequency_response.h"
 #include "core/spatial/layer_profile.h"
 
@@ -42,6 +46,22 @@ void BM_LayerProfile(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(layer_profile({kInf, 0.99, 0.8}, edges, options));
 }
 BENCHMARK(BM_LayerProfile)->Args({12, 16})->Args({16, 24})->Unit(benchmark::kMillisecond);
+
+// One wavelength of the default skin (550 nm: a 60 um epidermis over the dermis, sigma 0.5 top) at 256 radii from
+// 0.01 to 5 mm, at 12 nodes and 16 modes (the command's resolution). Arg: the number of spatial frequencies.
+void BM_SkinWavelengthProfile(benchmark::State& state) {
+  const Material m = skin_material(SkinParameters{}, 550.0);
+  ProfileLayer layer{m.tau, m.albedo, m.g};
+  layer.top = top_interface(m);
+  layer.below = {LateralSlab{kInf, m.below[0].albedo, m.below[0].g, *m.below[0].extinction / *m.extinction}};
+  std::vector<double> radii;
+  for (int i = 0; i < 256; ++i) radii.push_back(*m.extinction * 0.01 * std::pow(500.0, i / 255.0));
+  LayerProfileOptions options;
+  options.resolution = {12, 16};
+  options.frequencies = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(layer_profile_at(layer, radii, options));
+}
+BENCHMARK(BM_SkinWavelengthProfile)->Arg(16)->Arg(24)->Arg(40)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace skinlayer::bench
