@@ -25,6 +25,29 @@ vec3 sphere_brdf(vec3 n, vec3 l, vec3 v) {
   return vec3(microfacet_brdf(wi, wo, u_eta, u_sigma, u_microfacet) + unscattered_brdf(wi, wo)) + brdf_subsurface(a.x, a.y, a.z);
 }
 
+// The material's subsurface light spread over the sphere by its spatial profile (docs/model.md §21.13): the
+// subsurface term takes D(theta), the profile pre-integrated over the sphere's curvature (u_spread_table, per channel,
+// theta from 0 to pi across its width), in place of cos(theta), and is read at the incident angle clamped to
+// u_spread_max_theta past the terminator. The surface and unscattered terms stay where the light falls.
+uniform sampler2D u_spread_table;
+uniform float u_spread_max_theta;
+
+vec3 spread_radiance(vec3 n, vec3 l, vec3 v, float irradiance) {
+  vec3 a = local_angles(n, l, v);
+  float cos_i = dot(n, l);
+  vec3 radiance = vec3(0.0);
+  if (cos_i > 0.0) {
+    vec3 wi = vec3(sin(a.x), 0.0, cos(a.x));
+    vec3 wo = vec3(sin(a.y) * cos(a.z), sin(a.y) * sin(a.z), cos(a.y));
+    radiance = vec3(microfacet_brdf(wi, wo, u_eta, u_sigma, u_microfacet) + unscattered_brdf(wi, wo)) * cos_i;
+  }
+  float width = float(textureSize(u_spread_table, 0).x);
+  float u = (a.x / kPi * (width - 1.0) + 0.5) / width;
+  vec3 spread = textureLod(u_spread_table, vec2(u, 0.5), 0.0).rgb;
+  radiance += brdf_subsurface(min(a.x, u_spread_max_theta), a.y, a.z) * spread;
+  return radiance * irradiance;
+}
+
 // The sphere's unit normal at the view's point p (in sphere radii), clamped onto the silhouette outside it, so that
 // a texture of per-normal values continues past the edge.
 vec3 sphere_normal(vec2 p) {

@@ -1,5 +1,6 @@
 // A sphere of the material, seen by an orthographic camera looking along -z, under a directional light
 //   L = f(omega_i, omega_o) E cos(theta_i),  f = surface term (analytic) + subsurface tables,
+// or with the subsurface term spread over the sphere by the material's profile (u_spread, shading.glsl),
 // and/or an environment, whose radiance is the progressive estimate of shaders/env_accumulate.frag (a float texture
 // over the same view, divided by its sample count). The background is the environment seen through a 53-degree
 // perspective (sharp or blurred) or a flat colour.
@@ -16,6 +17,7 @@ uniform vec3 u_background;    // linear radiance of the flat background
 uniform int u_environment;    // 1: add the environment's estimate (u_accumulation) and use its background
 uniform sampler2D u_accumulation;  // RGB sum of estimates, A sample count (env_accumulate.frag)
 uniform int u_env_background;      // 0 flat colour, 1 the environment sharp, 2 blurred
+uniform int u_spread;              // 1: the directional light's subsurface term spread by the profile (shading.glsl)
 
 vec3 encode_srgb(vec3 linear) {
   vec3 c = clamp(linear, 0.0, 1.0);
@@ -40,7 +42,11 @@ void main() {
     vec3 v = vec3(0.0, 0.0, 1.0);
     radiance = vec3(0.0);
     float cos_i = dot(n, u_light);
-    if (u_irradiance > 0.0 && cos_i > 0.0) radiance = sphere_brdf(n, u_light, v) * u_irradiance * cos_i;
+    if (u_irradiance > 0.0 && u_spread == 1) {
+      radiance = spread_radiance(n, u_light, v, u_irradiance);
+    } else if (u_irradiance > 0.0 && cos_i > 0.0) {
+      radiance = sphere_brdf(n, u_light, v) * u_irradiance * cos_i;
+    }
     if (u_environment == 1) {
       vec4 sum = texture(u_accumulation, 0.5 * v_ndc + 0.5);
       if (sum.a > 0.0) radiance += sum.rgb / sum.a;

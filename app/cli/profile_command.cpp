@@ -12,6 +12,7 @@
 #include "app/cli/numeric_table.h"
 #include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
+#include "app/process/parallel_for.h"
 #include "app/solution/document_profile.h"
 
 namespace skinlayer::cli {
@@ -116,8 +117,11 @@ int run_profile_command(std::span<const std::string_view> arguments, std::ostrea
   const double mu_t = document.skin ? 1.0 : document.layer.extinction.value_or(1.0);
   const std::vector<double> positions =
       at_radii ? radius_list(*flags.value(kRadiiFlag)) : annulus_edges(flags.value(kAnnuliFlag), 0.1 / mu_t);
-  const DocumentProfile profile = at_radii ? document_profile_at_radii(document, positions, incidence)
-                                           : document_profile_in_annuli(document, positions, incidence);
+  ProfileRequest request;
+  request.incidence = incidence;
+  request.options.parallel_for = parallel_for_threads;
+  const DocumentProfile profile = at_radii ? document_profile_at_radii(document, positions, request)
+                                           : document_profile_in_annuli(document, positions, request);
   const std::string& unit = profile.unit;
   const std::size_t channels = profile.reflectance.size();
 

@@ -107,8 +107,9 @@ py::tuple eval(const Solution& solution, const InputArray& theta_i, const InputA
 // The spatial profile at radii in the document's unit: (unit, reflectance per channel, transmittance per channel).
 // Not interruptible: it has no cancellation points yet (about 2 s per channel).
 py::tuple profile(const Solution& solution, const std::vector<double>& radii, bool diffuse) {
-  const DocumentProfile p =
-      document_profile_at_radii(solution.document, radii, diffuse ? Incidence::Diffuse : Incidence::Normal);
+  ProfileRequest request;
+  request.incidence = diffuse ? Incidence::Diffuse : Incidence::Normal;
+  const DocumentProfile p = document_profile_at_radii(solution.document, radii, request);
   return py::make_tuple(p.unit, p.reflectance, p.transmittance);
 }
 

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -94,7 +95,9 @@ Renderer::Renderer()
   for (int slot = 0; slot < kTableSlots; ++slot) {
     slots_[slot].reflection = gl::create_texture();
     slots_[slot].transmission = gl::create_texture();
+    slots_[slot].spread = gl::create_texture();
     upload(empty, slot);
+    upload_spread({}, slot);
   }
   upload_environment(*builtin_environment("furnace"), "furnace");
   gl::check_errors("Renderer()");
@@ -158,6 +161,19 @@ void Renderer::upload(TableTextureData tables, int slot) {
   gl::check_errors("Renderer::upload");
 }
 
+void Renderer::upload_spread(const std::vector<float>& rgb, int slot) {
+  TableSlot& target = slots_.at(static_cast<std::size_t>(slot));
+  if (rgb.size() % 3 != 0 || rgb.size() == 3) throw std::invalid_argument("upload_spread: RGB samples, none or >= 2");
+  const std::vector<float> none(6, 0.0f);
+  const std::vector<float>& texels = rgb.empty() ? none : rgb;
+  glBindTexture(GL_TEXTURE_2D, target.spread.get());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, static_cast<int>(texels.size() / 3), 1, 0, GL_RGB, GL_FLOAT, texels.data());
+  set_linear_clamped(GL_TEXTURE_2D);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  target.spread_samples = static_cast<int>(rgb.size() / 3);
+  gl::check_errors("Renderer::upload_spread");
+}
+
 void Renderer::bind_tables(GLuint program, int slot) const {
   const TableSlot& tables = slots_.at(static_cast<std::size_t>(slot));
   glActiveTexture(GL_TEXTURE0);
@@ -208,6 +224,12 @@ void Renderer::draw_sphere(const SphereView& view, const SurfaceParams& surface,
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
   }
   glUniform1i(location(program, "u_accumulation"), 8);
+  const TableSlot& tables = slots_.at(static_cast<std::size_t>(slot));
+  glActiveTexture(GL_TEXTURE9);
+  glBindTexture(GL_TEXTURE_2D, tables.spread.get());
+  glUniform1i(location(program, "u_spread_table"), 9);
+  glUniform1i(location(program, "u_spread"), view.spread && tables.spread_samples > 0 ? 1 : 0);
+  glUniform1f(location(program, "u_spread_max_theta"), static_cast<float>(kSpreadMaxTheta));
   glActiveTexture(GL_TEXTURE0);
   glUniform3fv(location(program, "u_light"), 1, glm::value_ptr(glm::vec3(view.light)));
   glUniform1f(location(program, "u_irradiance"), static_cast<float>(view.irradiance));

@@ -51,7 +51,14 @@ struct SphereView {
   bool linear_output = false;                     // write linear radiance (float targets, .hdr, tests); the flat
                                                   // backdrop is then zero radiance
   std::optional<EnvironmentView> environment;     // set: add the environment's estimate and show its background
+  // The directional light's subsurface term spread over the sphere by the slot's profile (Renderer::upload_spread),
+  // where the slot has one; else where the light falls, as without.
+  bool spread = false;
 };
+
+// The angle past which the spread subsurface term reads the tables at this incident angle (shaders/shading.glsl):
+// just short of grazing, where the light that bleeds past the terminator entered.
+inline constexpr double kSpreadMaxTheta = 1.5620696805349968;  // 89.5 degrees
 
 // The progressive estimate of the sphere's radiance under an environment (shaders/env_accumulate.frag): a float
 // target over the sphere's view holding the sum of estimates (RGB) and their count (A). Its size may be below the
@@ -98,6 +105,10 @@ class Renderer {
 
   // Keeps the data too: the lobe plot sums its in-plane profile from it (app/render/lobe_profile.h).
   void upload(TableTextureData tables, int slot = 0);
+  // The slot's profile pre-integrated over the sphere (core/spatial/curvature_spread.h): D(theta) at theta_k =
+  // pi k / (count - 1), RGB per sample; empty: none (the subsurface term stays where the light falls).
+  void upload_spread(const std::vector<float>& rgb, int slot = 0);
+  bool has_spread(int slot = 0) const { return slots_.at(static_cast<std::size_t>(slot)).spread_samples > 0; }
   const TableTextureData& table_data(int slot) const { return slots_.at(static_cast<std::size_t>(slot)).data; }
 
   // Makes `map` the environment that EnvironmentView lights with: its map (mipmapped, for the blurred background)
@@ -131,6 +142,8 @@ class Renderer {
     gl::Texture reflection;
     gl::Texture transmission;
     TableTextureData data;  // what the textures hold
+    gl::Texture spread;     // D(theta), RGB, one row
+    int spread_samples = 0;
   };
 
   void bind_tables(GLuint program, int slot) const;

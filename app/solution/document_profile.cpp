@@ -11,15 +11,6 @@
 namespace skinlayer {
 namespace {
 
-// The resolution of the profile: tests/core/spatial/layer_profile_test.cpp checks it against the walk and
-// MCML (within 2.6% or 3 standard errors wherever the profile exceeds 1e-3 of its peak).
-LayerProfileOptions profile_options() {
-  LayerProfileOptions options;
-  options.resolution = {12, 16};
-  options.frequencies = 40;
-  return options;
-}
-
 // One line naming what the profile cannot take yet, or nothing for a material it can: albedos below 1, an
 // index-matched half-space or nothing below, and either one layer without interfaces or, under a rough top, layers
 // without interfaces between them that end in a half-space, each with its extinction when there are several.
@@ -64,9 +55,9 @@ void require_profile_layer(const Material& m, Incidence incidence) {
 
 // The document's distinct solves and how they make the red, green and blue channels (a grey document: one solve;
 // a skin: its wavelengths).
-ColorChannels profile_solves(const MaterialDocument& document, Incidence incidence) {
-  ColorChannels solves = color_channels(document);
-  for (const Material& material : solves.materials) require_profile_layer(material, incidence);
+ColorChannels profile_solves(const MaterialDocument& document, const ProfileRequest& request) {
+  ColorChannels solves = color_channels(document, request.preview);
+  for (const Material& material : solves.materials) require_profile_layer(material, request.incidence);
   return solves;
 }
 
@@ -82,9 +73,9 @@ ProfileLayer profile_layer(const Material& m, Incidence incidence) {
 }
 
 template <class Profile>
-DocumentProfile document_profile(const MaterialDocument& document, Incidence incidence,
+DocumentProfile document_profile(const MaterialDocument& document, const ProfileRequest& request,
                                  std::span<const double> positions, const Profile& profile) {
-  const ColorChannels solves = profile_solves(document, incidence);
+  const ColorChannels solves = profile_solves(document, request);
   const bool in_mm = solves.materials.front().extinction.has_value();
   // Each solve in its own first layer's mean free paths (a skin's extinction changes with the wavelength), then back
   // to the document's unit: mm with the extinction mu_t (1/mm), or mfp (mu_t = 1).
@@ -118,17 +109,26 @@ DocumentProfile document_profile(const MaterialDocument& document, Incidence inc
 
 }  // namespace
 
+// The command's resolution: tests/core/spatial/layer_profile_test.cpp checks it against the walk and MCML (within
+// 2.6% or 3 standard errors wherever the profile exceeds 1e-3 of its peak).
+LayerProfileOptions document_profile_options() {
+  LayerProfileOptions options;
+  options.resolution = {12, 16};
+  options.frequencies = 40;
+  return options;
+}
+
 DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges,
-                                           Incidence incidence) {
-  return document_profile(document, incidence, edges, [&](const Material& m, std::span<const double> edges_mfp) {
-    return layer_profile(profile_layer(m, incidence), edges_mfp, profile_options());
+                                           const ProfileRequest& request) {
+  return document_profile(document, request, edges, [&](const Material& m, std::span<const double> edges_mfp) {
+    return layer_profile(profile_layer(m, request.incidence), edges_mfp, request.options);
   });
 }
 
 DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii,
-                                          Incidence incidence) {
-  return document_profile(document, incidence, radii, [&](const Material& m, std::span<const double> radii_mfp) {
-    return layer_profile_at(profile_layer(m, incidence), radii_mfp, profile_options());
+                                          const ProfileRequest& request) {
+  return document_profile(document, request, radii, [&](const Material& m, std::span<const double> radii_mfp) {
+    return layer_profile_at(profile_layer(m, request.incidence), radii_mfp, request.options);
   });
 }
 

@@ -10,6 +10,7 @@
 
 #include "app/material/material_document.h"
 #include "core/spatial/lateral_top_interface.h"
+#include "core/spatial/layer_profile.h"
 
 namespace skinlayer {
 
@@ -25,9 +26,18 @@ struct DocumentProfile {
 // (> 0, in the unit). Throws ParameterError, naming what it cannot take (a finite layer or stack under a top
 // interface, a bottom interface or base, a stack without a rough top or without every layer's mu_t, albedo 1), and
 // for bad positions.
+// The command's resolution: 12 nodes, 16 modes, 40 frequencies.
+LayerProfileOptions document_profile_options();
+
+struct ProfileRequest {
+  Incidence incidence = Incidence::Normal;
+  LayerProfileOptions options = document_profile_options();  // the resolution and the parallel-for
+  bool preview = false;  // a skin on its 7 preview wavelengths (color_channels' preview grid) instead of 31
+};
+
 DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges,
-                                           Incidence incidence = Incidence::Normal);
+                                           const ProfileRequest& request = {});
 DocumentProfile document_profile_at_radii(const MaterialDocument& document, std::span<const double> radii,
-                                          Incidence incidence = Incidence::Normal);
+                                          const ProfileRequest& request = {});
 
 }  // namespace skinlayer
