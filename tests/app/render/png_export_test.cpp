@@ -92,11 +92,50 @@ TEST(PngExport, UnwritablePathIsAClearError) {
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
 }
 
+// --sphere-radius spreads the subsurface light of a side-lit, weakly absorbing half-space with lengths (mu_t 2/mm, so
+// its light spreads over millimetres) over a 5 mm sphere: the night side beyond the terminator, black without it,
+// is lit, and redder than it is blue (the red channel absorbs least).
+TEST(PngExport, ASphereRadiusSpreadsTheLightPastTheTerminator) {
+  const std::filesystem::path plain = std::filesystem::temp_directory_path() / "skinlayer_render_plain.png";
+  const std::filesystem::path spread = std::filesystem::temp_directory_path() / "skinlayer_render_spread.png";
+  const std::string material =
+      "render --view sphere --size 96x96 --light-theta 80 --sigma 0.4 --T 0 --g 0.8 "
+      "--mu-t 2 --albedo 0.995,0.98,0.9 -o ";
+  ASSERT_EQ(run_render(material + plain.string()).exit_code, 0);
+  const ProcessResult result = run_render(material + spread.string() + " --sphere-radius 5");
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  // Mean RGB over a 10 x 20 block right of the centre: the light comes from the left, 80 degrees from the view, so
+  // these normals face 100 degrees and more away from it.
+  const auto night_side = [](const std::filesystem::path& png) {
+    std::array<double, 3> mean{};
+    int width = 0, height = 0, channels = 0;
+    unsigned char* pixels = stbi_load(png.c_str(), &width, &height, &channels, 4);
+    EXPECT_NE(pixels, nullptr) << png;
+    if (pixels == nullptr) return mean;
+    for (int y = 38; y < 58; ++y) {
+      for (int x = 62; x < 72; ++x) {
+        for (int c = 0; c < 3; ++c) mean[c] += pixels[4 * (y * width + x) + c] / 200.0;
+      }
+    }
+    stbi_image_free(pixels);
+    return mean;
+  };
+  const std::array<double, 3> dark = night_side(plain), lit = night_side(spread);
+  EXPECT_LT(dark[0], 1.0);
+  EXPECT_GT(lit[0], 20.0);
+  EXPECT_GT(lit[0], lit[2]);
+}
+
 TEST(PngExport, BadRenderFlagsNameTheFlag) {
   EXPECT_NE(run_render("render --size 10x10 -o /tmp/x.png").err.find("size"), std::string::npos);
   EXPECT_NE(run_render("render --view cube -o /tmp/x.png").err.find("view"), std::string::npos);
   EXPECT_NE(run_render("render --albedo 0.5,2,0.5 -o /tmp/x.png").err.find("albedo"), std::string::npos);
   EXPECT_NE(run_render("render").err.find("-o"), std::string::npos);
+  EXPECT_NE(run_render("render --sphere-radius 0 -o /tmp/x.png").err.find("sphere-radius"), std::string::npos);
+  // A sphere in mm needs the material's lengths, and a material with a profile.
+  EXPECT_NE(run_render("render --T 0 --albedo 0.9 --sphere-radius 10 -o /tmp/x.png").err.find("mu-t"),
+            std::string::npos);
+  EXPECT_NE(run_render("render --mu-t 5 --sphere-radius 10 -o /tmp/x.png").err.find("profile"), std::string::npos);
 }
 
 }  // namespace
