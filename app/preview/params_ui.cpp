@@ -295,6 +295,14 @@ bool view_controls(ViewOptions& view) {
   changed |= slider_row(SliderSpec{"exposure", "tone-map exposure in stops (the radiance is scaled by 2^stops)",
                                    kMinStops, kMaxStops, ViewOptions{}.exposure_stops, "%+.1f EV"},
                         view.exposure_stops);
+  changed |=
+      slider_row(SliderSpec{"radius",
+                            "the sphere's radius in mm: its subsurface light spreads over it by the "
+                            "material's profile, past the terminator (a material with lengths)",
+                            kMinSphereRadiusMm, kMaxSphereRadiusMm, ViewOptions{}.sphere_radius_mm, "%.1f mm", true},
+                 view.sphere_radius_mm);
+  changed |= ImGui::Checkbox("translucency", &view.translucency);
+  ImGui::SameLine();
   changed |= ImGui::Checkbox("log lobe radius (L)", &view.log_lobes);
   ImGui::SameLine();
   constexpr std::array<const char*, 4> kViews = {"sphere", "plots", "both", "compare: Lambert | HK | layer"};

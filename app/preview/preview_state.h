@@ -50,7 +50,14 @@ struct ViewOptions {
   bool log_lobes = false;          // lobe radius: linear in the BSDF, or log over LobeView::decades decades
   double exposure_stops = 0.0;     // the tone map's linear exposure is 2^stops; in [kMinStops, kMaxStops]
   std::optional<SubsurfaceModel> plot_model;  // the lobe plots' model; unset = the sphere's (material.model)
+  // The sphere's size, for the translucency: its subsurface light spreads by the material's profile (issue 43). 40 mm
+  // is a cheek's or a forehead's radius of curvature.
+  double sphere_radius_mm = 40.0;  // in [kMinSphereRadiusMm, kMaxSphereRadiusMm]
+  bool translucency = true;
 };
+
+inline constexpr double kMinSphereRadiusMm = 1.0;
+inline constexpr double kMaxSphereRadiusMm = 1000.0;
 
 struct ExportOptions {
   ExportTarget target = ExportTarget::Window;

@@ -61,6 +61,20 @@ bool apply_scripted_edit(PreviewState& state, std::string_view verb_view, std::s
     } else {
       throw std::runtime_error("test action: unknown lighting key " + key);
     }
+  } else if (verb == "view") {  // view KEY VALUE: the light's sliders, the sphere's radius and translucency
+    const std::size_t gap = argument.find(' ');
+    const std::string key = argument.substr(0, gap), value = gap == std::string::npos ? "" : argument.substr(gap + 1);
+    if (key == "light-theta") {
+      state.light.theta_degrees = number_argument(key, value);
+    } else if (key == "light-phi") {
+      state.light.phi_degrees = number_argument(key, value);
+    } else if (key == "radius") {
+      state.view.sphere_radius_mm = number_argument(key, value);
+    } else if (key == "translucency") {
+      state.view.translucency = value == "on";
+    } else {
+      throw std::runtime_error("test action: unknown view key " + key);
+    }
   } else if (verb == "set") {
     const std::size_t gap = argument.find(' ');
     const std::string name = argument.substr(0, gap);

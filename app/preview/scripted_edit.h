@@ -12,13 +12,14 @@
 
 namespace skinlayer {
 
-// Applies the action `verb argument` to `state` when verb is one of set, layer, skin, lighting and split, and
+// Applies the action `verb argument` to `state` when verb is one of set, layer, skin, lighting, view and split, and
 // returns true; returns false for any other verb. Throws std::runtime_error ("test action: ...") for a malformed
 // argument or number (named, in one line).
 //   set NAME VALUE        a slider: sigma, eta, g, T, albedo (grey); with a skin, a skin slider by its key
 //   layer add | remove I | up I | down I      the layers panel's buttons (I 1-based)
 //   skin on | off         "Make it a skin" / back to a layer
 //   lighting env NAME|none | env-rotate DEG | env-ev EV | light on|off
+//   view light-theta DEG | light-phi DEG | radius MM | translucency on|off
 //   split FRACTION        the A/B comparison's split line
 bool apply_scripted_edit(PreviewState& state, std::string_view verb, std::string_view argument);
 

@@ -184,6 +184,9 @@ PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelSta
   if (ImGui::CollapsingHeader("Light and view", ImGuiTreeNodeFlags_DefaultOpen)) {
     light_controls(state.light, status.unicode);
     view_controls(state.view);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextDisabled("%s", status.spread.c_str());
+    ImGui::PopTextWrapPos();
     ab_controls(state.comparison, status, actions);
   }
   if (ImGui::CollapsingHeader("Lighting", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -24,6 +24,7 @@ struct PanelStatus {
   std::string environment_error;       // why the chosen environment could not be loaded
   bool matching = false;               // a "Match colour..." runs (app/window/match_job.h)
   std::string match_outcome;           // the last match's outcome; empty: none
+  std::string spread;                  // the translucency's state (app/window/spread_job.h)
 };
 
 struct PanelActions {

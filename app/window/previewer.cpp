@@ -22,14 +22,15 @@
 #include "app/render/environment_preview.h"
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
-#include "app/window/control_panel.h"
 #include "app/window/background_jobs.h"
+#include "app/window/control_panel.h"
 #include "app/window/file_panel.h"
 #include "app/window/glfw_window.h"
 #include "app/window/help_overlay.h"
 #include "app/window/material_files.h"
 #include "app/window/screenshot.h"
 #include "app/window/shortcuts.h"
+#include "app/window/spread_job.h"
 #include "app/window/test_action_script.h"
 #include "app/window/ui_context.h"
 #include "app/window/view_overlays.h"
@@ -98,6 +99,7 @@ class Previewer final : private TestActionTarget {
   double frame() {
     bool activity = take_result();
     activity |= jobs_.take_outcomes(state_.material, out_);
+    activity |= update_spread();
     const std::array<int, 2> framebuffer = window_.framebuffer_size();
     if (framebuffer[0] < 1 || framebuffer[1] < 1) return kIdleWaitSeconds;  // minimized: nothing to draw
     update_scene();
@@ -108,7 +110,8 @@ class Previewer final : private TestActionTarget {
     const std::array<float, 2> scale = {static_cast<float>(framebuffer[0]) / static_cast<float>(std::max(size[0], 1)),
                                         static_cast<float>(framebuffer[1]) / static_cast<float>(std::max(size[1], 1))};
     PreviewState edited = state_;
-    ViewOverlayInput overlay{layout, shown_ ? &plot_tables() : nullptr, scene_.lobes, imgui_.unicode_labels()};
+    ViewOverlayInput overlay{layout, shown_ ? &plot_tables() : nullptr, scene_.lobes, imgui_.unicode_labels(),
+                             scene_.sphere.spread && spread_profile_ ? &*spread_profile_ : nullptr};
     activity |= view_overlays(overlay, edited.light, edited.comparison);
     const PanelActions panel = control_panel(layout.panel, edited, panel_status(), file_section_input());
     if (panel.pin) pin_shown(edited);
@@ -148,7 +151,7 @@ class Previewer final : private TestActionTarget {
     activity |= save || requests.reset_material || ImGui::IsAnyItemActive() || io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f ||
                 ImGui::IsAnyMouseDown();
 
-    const bool refining = refine_environment(layout, scale, framebuffer, activity);
+    const bool refining = refine_environment(layout, scale, framebuffer, activity) || spread_job_.running();
     draw_views(layout, scale, framebuffer);
     const ExportTarget target = state_.export_options.target;
     if (save && target != ExportTarget::Window) {
@@ -200,6 +203,55 @@ class Previewer final : private TestActionTarget {
     return true;
   }
 
+  // The same material for the profile: the same solve of it, whatever the light or the views.
+  static bool same_material(const ColorMaterial& a, const ColorMaterial& b) {
+    return same_request(SolveRequest{a, 0.0, false, SubsurfaceModel::Stam},
+                        SolveRequest{b, 0.0, false, SubsurfaceModel::Stam});
+  }
+
+  // The sphere's translucency (app/window/spread_job.h): once the shown material's full solve is on screen, its
+  // profile is computed on the spread's thread; its outcome, if it still answers the shown material, becomes the
+  // texture of the radius shown, redone alone when the radius slider moves. Returns true when something changed.
+  bool update_spread() {
+    bool changed = false;
+    if (std::optional<SpreadOutcome> outcome = spread_job_.take_outcome()) {
+      spread_material_ = spread_requested_;
+      spread_profile_ = std::move(outcome->profile);
+      spread_note_ = outcome->why;
+      spread_radius_ = -1.0;
+      changed = true;
+    }
+    const bool wanted = state_.view.translucency && shown_ && !shown_->preview && error_.empty() &&
+                        shown_->request.material.model == SubsurfaceModel::Stam;
+    if (wanted && !spread_job_.running() &&
+        !(spread_material_ && same_material(*spread_material_, shown_->request.material)) &&
+        !(spread_requested_ && same_material(*spread_requested_, shown_->request.material))) {
+      spread_requested_ = shown_->request.material;
+      spread_job_.start(material_document(*spread_requested_));
+    }
+    const bool current =
+        wanted && spread_profile_ && spread_material_ && same_material(*spread_material_, shown_->request.material);
+    if (current && spread_radius_ != state_.view.sphere_radius_mm) {
+      renderer_.upload_spread(spread_texture(*spread_profile_, state_.view.sphere_radius_mm));
+      spread_radius_ = state_.view.sphere_radius_mm;
+      changed = true;
+    }
+    scene_.sphere.spread = current;
+    return changed;
+  }
+
+  // What the panel says of the translucency.
+  std::string spread_status() const {
+    if (!state_.view.translucency) return "translucency off: the light leaves where it falls";
+    if (spread_job_.running()) return "translucency: computing the material's profile...";
+    if (!shown_ || shown_->preview || !spread_material_ ||
+        !same_material(*spread_material_, shown_->request.material)) {
+      return "translucency: waiting for the full solve";
+    }
+    if (!spread_profile_) return "no translucency: " + spread_note_;
+    return "translucency: the profile spreads the subsurface light";
+  }
+
   // The newest parameters go to the worker once it has finished the previous ones, so that while a slider is
   // dragged every solve is shown (at the solver's pace) and the final parameters always win.
   void submit_if_needed() {
@@ -231,7 +283,8 @@ class Previewer final : private TestActionTarget {
                        environment_.samples(),
                        environment_error_,
                        jobs_.matching(),
-                       jobs_.match_outcome()};
+                       jobs_.match_outcome(),
+                       spread_status()};
   }
 
   // The scene of the shown result under the current light and view; the lobe scale (a CPU pass over the BSDF) is
@@ -429,7 +482,11 @@ class Previewer final : private TestActionTarget {
   // --capture: once the shown result answers the final parameters and a few frames have shown it, save the whole
   // window through the same export path as the S key, and finish.
   void capture_if_ready(std::array<int, 2> framebuffer) {
-    if (!capture_path_ || !script_.finished() || jobs_.running()) return;
+    if (!capture_path_ || !script_.finished() || jobs_.running() || spread_job_.running()) return;
+    if (state_.view.translucency && shown_ && !shown_->preview &&
+        !(spread_material_ && same_material(*spread_material_, shown_->request.material))) {
+      return;  // the translucency of the shown material is still to come
+    }
     const bool final_result = submitted_ && !worker_.settling();
     if (final_result && !error_.empty()) throw std::runtime_error(error_);
     if (!final_result || !shown_ || shown_->preview || !same_request(shown_->request, *submitted_)) return;
@@ -479,6 +536,12 @@ class Previewer final : private TestActionTarget {
   std::string failed_environment_;  // that source, not retried until another is chosen
   int capture_samples_ = 0;         // --capture under an environment waits for this many samples per pixel
   BackgroundJobs jobs_;  // the exports and "Match colour..."
+  SpreadJob spread_job_;                           // the translucency's profile
+  std::optional<ColorMaterial> spread_requested_;  // the material the last started profile is for
+  std::optional<ColorMaterial> spread_material_;   // the material of the last finished one
+  std::optional<SpreadProfile> spread_profile_;    // its profile; unset: it has none (spread_note_ says why)
+  std::string spread_note_;
+  double spread_radius_ = -1.0;  // the sphere radius of the uploaded texture; -1: none uploaded for this profile
   SolveWorker worker_;  // last: destroyed (joined) first, while GLFW, which it wakes, is still initialized
 };
 

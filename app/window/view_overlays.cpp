@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/preview/lobe_probe.h"
+#include "app/window/profile_plot.h"
 #include "core/conventions.h"
 
 namespace skinlayer {
@@ -210,6 +211,7 @@ bool view_overlays(const ViewOverlayInput& input, LightState& light, ComparisonS
       ring_labels(draw, layout.plots, input.lobes);
       captions(draw, layout.plots, input.lobes, input.unicode);
       if (hovered) probe_under_mouse(draw, layout.plots, *input.tables, input.lobes, input.unicode);
+      if (input.profile != nullptr) draw_profile_plot(draw, layout.plots, *input.profile);
     }
   }
   if (input.tables == nullptr) {

@@ -9,6 +9,7 @@
 #include "app/preview/view_layout.h"
 #include "app/render/scene.h"
 #include "app/solution/material_solve.h"
+#include "app/solution/sphere_spread.h"
 
 namespace skinlayer {
 
@@ -17,6 +18,7 @@ struct ViewOverlayInput {
   const ColorTables* tables = nullptr;  // the solved material on screen; null before the first result
   LobeView lobes;                       // as drawn this frame (incident angle, scale, peak)
   bool unicode = false;                 // the font has Greek letters and symbols
+  const SpreadProfile* profile = nullptr;  // the translucency's profile of the material on screen; null: none
 };
 
 // Draws the overlays and handles the mouse; returns true when a drag on the sphere changed the light or, with a

@@ -55,5 +55,20 @@ TEST(ScriptedEdit, AMalformedNumberIsOneLineNamingIt) {
   EXPECT_EQ(error_of(state, "layer", "sideways 1"), "test action: unknown layer action 'sideways'");
 }
 
+// "view": the light's sliders, the sphere's radius and the translucency (issue 43).
+TEST(ScriptedEdit, ViewSetsTheLightTheRadiusAndTheTranslucency) {
+  PreviewState state;
+  EXPECT_TRUE(apply_scripted_edit(state, "view", "light-theta 80"));
+  EXPECT_TRUE(apply_scripted_edit(state, "view", "light-phi -30"));
+  EXPECT_TRUE(apply_scripted_edit(state, "view", "radius 12.5"));
+  EXPECT_TRUE(apply_scripted_edit(state, "view", "translucency off"));
+  EXPECT_EQ(state.light.theta_degrees, 80.0);
+  EXPECT_EQ(state.light.phi_degrees, -30.0);
+  EXPECT_EQ(state.view.sphere_radius_mm, 12.5);
+  EXPECT_FALSE(state.view.translucency);
+  EXPECT_THROW(apply_scripted_edit(state, "view", "zoom 2"), std::runtime_error);
+  EXPECT_THROW(apply_scripted_edit(state, "view", "radius big"), std::runtime_error);
+}
+
 }  // namespace
 }  // namespace skinlayer

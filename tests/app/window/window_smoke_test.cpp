@@ -334,6 +334,46 @@ TEST(WindowSmoke, CaptureUnderAnEnvironmentShowsItBehindTheSphere) {
   std::filesystem::remove(png);
 }
 
+// The translucency (issue 43): a skin lit from the side, 85 degrees from the view, on a 10 mm sphere. Once its BRDF is
+// on screen the window computes its profile, and the capture waits for it: the sphere's middle row then has more lit
+// pixels past the terminator than with the translucency off, and they are red (the light that travels far under skin
+// is the red). The capture's "view" actions set the light and the sphere's radius.
+TEST(WindowSmoke, ASideLitSkinBleedsRedPastTheTerminator) {
+  const std::optional<std::string> xvfb_run = find_in_path("xvfb-run");
+  if (!xvfb_run) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  // Lit pixels (any channel above 8) and their red excess on the sphere view's middle row, right of the picture
+  // area's centre, where the light does not fall.
+  const auto night_side = [&](const std::string& translucency) {
+    const std::filesystem::path png = temporary_png("skinlayer-window-translucency-" + translucency);
+    const ProcessResult result =
+        run_process({*xvfb_run, "-a", "-s", "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE, "--capture", png.string(),
+                     "--view", "sphere", "--skin", "melanin=0.03", "--test-actions",
+                     "view light-theta 85;view radius 10;view translucency " + translucency});
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    int width = 0, height = 0, channels = 0;
+    const std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load(png.c_str(), &width, &height, &channels, 4),
+                                                                 stbi_image_free);
+    std::filesystem::remove(png);
+    std::pair<int, double> lit{0, 0.0};
+    if (pixels == nullptr) return lit;
+    const unsigned char* row = pixels.get() + 4 * (static_cast<std::size_t>(height / 2) * width);
+    const int panel = width * 3 / 10, centre = panel + (width - panel) / 2;
+    for (int x = centre + 4; x < width - 4; ++x) {
+      const unsigned char* p = row + 4 * x;
+      if (std::max({p[0], p[1], p[2]}) > 8) {
+        ++lit.first;
+        lit.second += static_cast<double>(p[0]) - p[2];
+      }
+    }
+    return lit;
+  };
+  const auto off = night_side("off"), on = night_side("on");
+  std::printf("[ translucency ] lit pixels right of the centre: off %d, on %d (red excess %.0f)\n", off.first, on.first,
+              on.second);
+  EXPECT_GT(on.first, off.first + 10);
+  EXPECT_GT(on.second, 0.0);
+}
+
 // The A/B comparison (issue 14): "pin" keeps the shown material as B, and the edits that follow change A only; the
 // sphere shows A left of the split line and B right of it, and the screenshot's metadata carries B as a material
 // file. A is made darker (albedo 0.3) than B (the default, 1), and compared with a capture of A alone.
