@@ -156,7 +156,8 @@ const LayerTables& SolveCache::tables(const LayerParams& params, SubsurfaceModel
 
 FigureSize build_figure(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, SolveCache& cache,
                   int size) {
-  if (spec.kind == FigureKind::SkinSpectra || spec.kind == FigureKind::SkinSpheres) {
+  if (spec.kind == FigureKind::SkinSpectra || spec.kind == FigureKind::SkinSpheres ||
+      spec.kind == FigureKind::SkinProfiles) {
     return build_skin_figure(spec, dir, font, size);
   }
   std::vector<Lobe> lobes;

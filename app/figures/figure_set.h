@@ -35,6 +35,7 @@ enum class FigureKind {
   ModelSpheres,     // lit spheres of Lambert, Hanrahan-Krueger and Stam side by side
   SkinSpectra,      // a spectral skin's directional-hemispherical reflectance against wavelength (skin_figures.h)
   SkinSpheres,      // lit spheres of spectral skins side by side, in linear sRGB under D65
+  SkinProfiles,     // spectral skins' reflectance profiles R(r) per channel, log scale (skin_figures.h)
 };
 
 struct FigureCurve {
@@ -57,6 +58,8 @@ struct FigureSpec {
   bool rescale_to_peak = false;  // each curve divided by its own peak before plotting
   int log_decades = 0;           // 0: linear radial scale; n: log10 over n decades (polar_plot.h)
   bool separate_scales = false;  // reflection and transmission each scaled to their own peak (polar_plot.h)
+  double light_theta_deg = 45.0;  // sphere pictures: the light's angle from the view direction, from the left
+  double sphere_radius_mm = 0.0;  // sphere pictures: > 0 spreads the subsurface light over a sphere of this radius
   std::vector<FigureCurve> curves;
 };
 

@@ -2,11 +2,13 @@
 
 #include "app/figures/canvas.h"
 #include "app/gl/osmesa_context.h"
+#include "app/process/parallel_for.h"
 #include "app/render/render_target.h"
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
 #include "app/render/table_textures.h"
 #include "app/solution/material_solve.h"
+#include "app/solution/sphere_spread.h"
 #include "core/conventions.h"
 
 namespace skinlayer::figures {
@@ -19,7 +21,7 @@ Image draw_model_spheres(const FigureSpec& spec, const Font& font, int sphere_si
   canvas.text(font, spec.title, {width / 2.0, 28 * u}, 21 * u, {30, 30, 30, 255}, Align::Center);
   canvas.text(font, spec.subtitle, {width / 2.0, 52 * u}, 13 * u, {110, 110, 110, 255}, Align::Center);
 
-  const double light_theta = degrees_to_radians(45.0), light_phi = degrees_to_radians(180.0);
+  const double light_theta = degrees_to_radians(spec.light_theta_deg), light_phi = degrees_to_radians(180.0);
   gl::OsmesaContext context(sphere_size, sphere_size);
   Renderer renderer;
   RenderTarget target(sphere_size, sphere_size, PixelFormat::Rgba8);
@@ -28,7 +30,13 @@ Image draw_model_spheres(const FigureSpec& spec, const Font& font, int sphere_si
     const ColorTables tables = solve_color(
         ColorMaterial{curve.params.material(), curve.albedo_rgb, {}, curve.model, curve.skin}, light_theta);
     renderer.upload(make_table_textures(tables));
-    const Scene scene = make_scene(tables, ViewKind::Sphere, light_theta, light_phi, 1.0, false);
+    Scene scene = make_scene(tables, ViewKind::Sphere, light_theta, light_phi, 1.0, false);
+    if (spec.sphere_radius_mm > 0.0) {  // the translucency (app/solution/sphere_spread.h)
+      // A skin's on its 7 preview wavelengths, as the previewer's: a figure of three skins in seconds.
+      const SpreadProfile profile = spread_profile(material_document(tables.material), true, parallel_for_threads);
+      renderer.upload_spread(spread_texture(profile, spec.sphere_radius_mm));
+      scene.sphere.spread = true;
+    }
     target.bind();
     draw_scene(renderer, scene, sphere_size, sphere_size);
     RenderTarget::unbind();

@@ -1,6 +1,9 @@
 #include "app/figures/skin_figures.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
@@ -13,6 +16,7 @@
 #include "app/figures/xy_plot.h"
 #include "app/material/picture_metadata.h"
 #include "app/process/parallel_for.h"
+#include "app/solution/document_profile.h"
 #include "app/solution/material_solve.h"
 #include "core/conventions.h"
 #include "core/skin/skin_spectrum.h"
@@ -109,12 +113,70 @@ FigureSize build_spheres(const FigureSpec& spec, const std::filesystem::path& di
   return {image.width, image.height};
 }
 
+// log10 R(r) + 4 of each skin at 650, 550 and 450 nm (R in 1/mm^2), at the profile command's resolution, so that
+// `skinlayer profile --skin ... --wavelength W --annuli 0.2:20` gives back every CSV value.
+FigureSize build_profiles(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, int size) {
+  XyPlot plot;
+  plot.title = spec.title;
+  plot.x_label = "r, mm";
+  plot.y_label = "log10 R + 4 (R in 1/mm²)";
+  plot.x_min = 0.0;
+  plot.x_max = 4.0;
+  plot.x_tick = 0.5;
+  plot.width = size * 2;
+  plot.height = size;
+  const std::filesystem::path csv_path = dir / (spec.name + ".csv");
+  std::ofstream csv = open_csv(csv_path);
+  csv << "curve,parameter,value,wavelength_nm,r_inner_mm,r_outer_mm,reflectance,skin,sigma,eta\n";
+  struct Band {
+    double wavelength;
+    const char* name;
+    std::array<int, 3> color;
+  };
+  constexpr std::array<Band, 3> kBands = {
+      {{650.0, "650 nm", {200, 40, 40}}, {550.0, "550 nm", {40, 150, 40}}, {450.0, "450 nm", {40, 70, 200}}}};
+  std::vector<double> edges;
+  for (int i = 0; i <= 20; ++i) edges.push_back(0.2 * i);
+  ProfileRequest request;
+  request.options.parallel_for = parallel_for_threads;
+  for (std::size_t k = 0; k < spec.curves.size(); ++k) {
+    const FigureCurve& curve = spec.curves[k];
+    MaterialDocument document;
+    document.layer = curve.params.material();
+    document.skin = curve.skin;
+    const double shade = 1.0 - 0.3 * static_cast<double>(k);  // fair bright, dark deep
+    for (const Band& band : kBands) {
+      const DocumentProfile profile =
+          document_profile_in_annuli(cli::document_at_wavelength(document, band.wavelength), edges, request);
+      const Rgba color{static_cast<std::uint8_t>(band.color[0] * shade),
+                       static_cast<std::uint8_t>(band.color[1] * shade),
+                       static_cast<std::uint8_t>(band.color[2] * shade), 255};
+      XySeries series{curve.label + " " + band.name, color, {}, {}, {}};
+      for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
+        const double value = profile.reflectance.front()[i];
+        series.curve.push_back(
+            {0.5 * (edges[i] + edges[i + 1]), std::max(0.0, std::log10(std::max(value, 1e-300)) + 4.0)});
+        csv << curve.label << ',' << spec.parameter << ',' << curve.value << ','
+            << cli::format_shortest(band.wavelength) << ',' << cli::format_shortest(edges[i]) << ','
+            << cli::format_shortest(edges[i + 1]) << ',' << cli::format_number(value) << ',' << material_fields(curve)
+            << '\n';
+      }
+      plot.series.push_back(std::move(series));
+    }
+  }
+  close_csv(csv, csv_path);
+  const Image image = draw_xy_plot(plot, font);
+  write_png(image, (dir / (spec.name + ".png")).string(), {skin_metadata(spec)});
+  return {image.width, image.height};
+}
+
 }  // namespace
 
 FigureSize build_skin_figure(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, int size) {
   for (const FigureCurve& curve : spec.curves) {
     if (!curve.skin) throw std::invalid_argument("figure " + spec.name + ": curve " + curve.label + " has no skin");
   }
+  if (spec.kind == FigureKind::SkinProfiles) return build_profiles(spec, dir, font, size);
   return spec.kind == FigureKind::SkinSpectra ? build_spectra(spec, dir, font, size)
                                               : build_spheres(spec, dir, font, size);
 }

@@ -22,8 +22,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::size_t kFigureCount = 14;
-constexpr std::size_t kSkinFigureCount = 3;  // the spectral skin's: checked against spectrum and albedo
+constexpr std::size_t kFigureCount = 16;
+constexpr std::size_t kSkinFigureCount = 4;  // the spectral skin's: checked against spectrum and albedo
 constexpr std::size_t kRowsPerFile = 20;
 constexpr double kRelativeTolerance = 1e-9;
 
@@ -221,7 +221,7 @@ TEST_F(FiguresCommand, SkinCsvValuesEqualSpectrumAndAlbedo) {
   std::size_t skin_figures = 0, compared = 0;
   for (const StatedPng& figure : stated_) {
     const Csv csv = read_csv(dir_ / (figure.name + ".csv"));
-    if (!csv.column.contains("skin")) continue;
+    if (!csv.column.contains("skin") || csv.column.contains("r_inner_mm")) continue;  // profiles: below
     ++skin_figures;
     const auto field = [&](const std::vector<std::string>& row, const char* name) {
       return row.at(csv.column.at(name));
@@ -276,6 +276,41 @@ TEST_F(FiguresCommand, SkinCsvValuesEqualSpectrumAndAlbedo) {
   }
   EXPECT_EQ(skin_figures, kSkinFigureCount);
   EXPECT_GE(compared, 2u * 5u * 31u + 5u);
+}
+
+// The skin profiles' CSV: the first skin's rows at each wavelength equal `skinlayer profile --skin ... --wavelength W
+// --annuli 0.2:20` (the other skins' are made the same way).
+TEST_F(FiguresCommand, SkinProfileCsvEqualsTheProfileCommand) {
+  const Csv csv = read_csv(dir_ / "skin-profiles.csv");
+  ASSERT_FALSE(csv.rows.empty());
+  const auto field = [&](const std::vector<std::string>& row, const char* name) { return row.at(csv.column.at(name)); };
+  const std::string first = field(csv.rows.front(), "curve");
+  std::map<std::string, std::vector<const std::vector<std::string>*>> by_wavelength;
+  for (const std::vector<std::string>& row : csv.rows) {
+    if (field(row, "curve") == first) by_wavelength[field(row, "wavelength_nm")].push_back(&row);
+  }
+  ASSERT_EQ(by_wavelength.size(), 3u);
+  for (const auto& [wavelength, rows] : by_wavelength) {
+    std::string skin = field(*rows.front(), "skin");
+    std::replace(skin.begin(), skin.end(), ';', ',');
+    const ProcessResult run =
+        run_skinlayer({"profile", "--skin", skin, "--sigma", field(*rows.front(), "sigma"), "--eta",
+                       field(*rows.front(), "eta"), "--wavelength", wavelength, "--annuli", "0.2:20"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    std::istringstream lines(run.out);
+    std::string line;
+    std::getline(lines, line);
+    std::size_t i = 0;
+    while (std::getline(lines, line) && i < rows.size()) {
+      const std::vector<std::string> values = split(line, ',');
+      EXPECT_EQ(values.at(0), field(*rows[i], "r_inner_mm"));
+      const double expected = std::stod(values.at(2));
+      EXPECT_NEAR(std::stod(field(*rows[i], "reflectance")), expected, kRelativeTolerance * expected)
+          << wavelength << " nm, annulus " << i;
+      ++i;
+    }
+    EXPECT_EQ(i, rows.size());
+  }
 }
 
 // The rescaled figure: plotted is f over the curve's peak, so each curve's largest plotted value is 1.
