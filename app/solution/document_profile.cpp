@@ -23,16 +23,15 @@ void require_profile_layer(const Material& m, Incidence incidence) {
   const bool albedo_below_1 = m.albedo < 1.0 && std::all_of(m.below.begin(), m.below.end(),
                                                             [](const StackedLayer& l) { return l.albedo < 1.0; });
   const bool enters_as_node_radiance = m.eta != 1.0 || incidence == Incidence::Diffuse;
-  if (stack && !enters_as_node_radiance) {
-    why = "it is a stack of " + std::to_string(m.layer_count()) + " layers with no top interface (at normal incidence)";
-  } else if (stack && std::any_of(m.below.begin(), m.below.end(),
-                                  [](const StackedLayer& l) { return l.interface.has_value(); })) {
+  if (stack &&
+      std::any_of(m.below.begin(), m.below.end(), [](const StackedLayer& l) { return l.interface.has_value(); })) {
     why = "it has an interface between its layers";
   } else if (stack && !all_lengths) {
     why = "its layers do not all have their extinction (mu_t=, 1/mm), which relates their lengths";
-  } else if (enters_as_node_radiance && !ends_in_half_space) {
+  } else if ((enters_as_node_radiance || stack) && !ends_in_half_space) {
     const std::string what = m.eta != 1.0 ? "it has a top interface (eta " + cli::format_shortest(m.eta) + ")"
-                                          : std::string("the light is diffuse");
+                             : stack ? std::string("it is a stack of " + std::to_string(m.layer_count()) + " layers")
+                                     : std::string("the light is diffuse");
     why = what + " over a finite " +
           (stack ? std::string("stack; its last layer needs tau inf")
                  : "layer (tau " + cli::format_shortest(m.tau) +
@@ -48,8 +47,8 @@ void require_profile_layer(const Material& m, Incidence incidence) {
   if (why.empty()) return;
   throw ParameterError(
       "profile: spatial profiles are computed so far for albedos below 1 and nothing reflecting below, either one "
-      "layer with no interfaces (--eta 1 --bottom matched) at normal incidence or layers that end in a half-space "
-      "under a rough top or in diffuse light (--T 0, or a last layer with tau=inf), and this material cannot be: " +
+      "layer with no interfaces (--eta 1 --bottom matched), or layers that end in a half-space (--T 0, or a last "
+      "layer with tau=inf), and this material cannot be: " +
       why);
 }
 

@@ -39,9 +39,9 @@ struct SolvedSlab {
 };
 
 // The solve with the albedo in the scattering operator scaled by operator_scale (1, or 0 for the first order in Omega
-// under an open top, whose beam source keeps its albedo).
+// of a collimated beam, whose source keeps its albedo).
 LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, double operator_scale,
-                                        const LateralTopInterface* top, double k,
+                                        const LateralTopInterface* top, const LateralSmoothFace* bottom, double k,
                                         const LateralFrequencyResolution& resolution) {
   check(!slabs.empty(), "needs at least one slab");
   check(k >= 0.0 && std::isfinite(k), "k must be finite and >= 0");
@@ -57,6 +57,9 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
               static_cast<int>(top->reflection.size()) >= resolution.azimuth_modes,
           "the top interface's operators were built for another resolution");
   }
+  check(bottom == nullptr || bottom->reflection.size() == resolution.ordinates,
+        "the bottom face was built for another resolution");
+  const double collimated = top ? top->collimated : 1.0;  // the beam's flux inside, at the top
   const QuadratureRule q = double_gauss_half_range(resolution.ordinates);
   const LateralLayout layout{resolution.ordinates, resolution.azimuth_modes};
   const int N = layout.nodes, M = layout.modes, n = layout.size(), h = n / 2;
@@ -68,12 +71,12 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
     if (slab.tau == 0.0) continue;
     SolvedSlab s;
     // k is per mean free path of the first slab; in this slab's own it is k mu_t,first / mu_t.
-    s.modes = lateral_slab_modes(operator_scale * slab.albedo, top ? 0.0 : slab.albedo, slab.g,
+    s.modes = lateral_slab_modes(operator_scale * slab.albedo, collimated > 0.0 ? slab.albedo : 0.0, slab.g,
                                  k / slab.relative_extinction, q, M);
     s.tau = slab.tau;
     s.offset = unknowns;
     s.count = std::isinf(slab.tau) ? h : n;
-    s.beam = top ? 0.0 : std::exp(-above);
+    s.beam = collimated * std::exp(-above);
     unknowns += s.count;
     above += slab.tau;
     solved.push_back(std::move(s));
@@ -82,7 +85,9 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
 
   // Boundary conditions (one row each). At the top, u-(0) = t12 + R21 u+(0) under a rough top, mode by mode (the i^m
   // factor is the same on both sides, and t12 is mode 0 alone), and nothing enters going down under an open one.
-  // Between slabs every node radiance is continuous. Under a finite last slab nothing enters the bottom going up.
+  // Between slabs every node radiance is continuous. Under a finite last slab, u+(tau) = F_b u-(tau) at a smooth
+  // bottom, and nothing enters going up over an index-matched half-space. (The collimated beam's own reflection at a
+  // smooth bottom, e^{-tau} F_b(1) of it, is left out: §21.14.)
   Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(unknowns, unknowns);
   Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(unknowns);
   int equation = 0;
@@ -118,9 +123,12 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
   if (!semi_infinite) {
     for (int m = 0; m < M; ++m) {
       for (int i = 0; i < N; ++i) {
-        const int row = layout.at(m, 1, i);
-        for (int c = 0; c < last.count; ++c) B(equation, last.offset + c) = last.column(c, row, last.tau);
-        rhs(equation++) = -last.particular(row, last.tau);
+        const int row = layout.at(m, 1, i), down = layout.at(m, 0, i);
+        const double reflect = bottom ? bottom->reflection(i) : 0.0;
+        for (int c = 0; c < last.count; ++c) {
+          B(equation, last.offset + c) = last.column(c, row, last.tau) - reflect * last.column(c, down, last.tau);
+        }
+        rhs(equation++) = -last.particular(row, last.tau) + reflect * last.particular(down, last.tau);
       }
     }
   }
@@ -133,7 +141,7 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
       const int row = layout.at(0, up, i);
       std::complex<double> value = slab.particular(row, depth);
       for (int c = 0; c < slab.count; ++c) value += coefficients(slab.offset + c) * slab.column(c, row, depth);
-      const double crossing = up == 1 && top != nullptr ? top->exit(i) : 1.0;
+      const double crossing = up == 1 ? (top ? top->exit(i) : 1.0) : (bottom ? bottom->exit(i) : 1.0);
       flux += q.weights[i] * q.nodes[i] * crossing * value;
     }
     return 2.0 * kPi * flux.real();
@@ -147,31 +155,33 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
 }  // namespace
 
 LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> slabs, const LateralTopInterface* top,
-                                                double k, const LateralFrequencyResolution& resolution) {
-  return stack_response(slabs, 1.0, top, k, resolution);
+                                                double k, const LateralFrequencyResolution& resolution,
+                                                const LateralSmoothFace* bottom) {
+  return stack_response(slabs, 1.0, top, bottom, k, resolution);
 }
 
-LateralFrequencyResponse open_stack_single_scattering_response(std::span<const LateralSlab> slabs, double k,
+LateralFrequencyResponse collimated_single_scattering_response(std::span<const LateralSlab> slabs,
+                                                               const LateralTopInterface* top, double k,
                                                                const LateralFrequencyResolution& resolution) {
-  return stack_response(slabs, 0.0, nullptr, k, resolution);
+  return stack_response(slabs, 0.0, top, nullptr, k, resolution);
 }
 
 LateralFrequencyResponse rough_top_lateral_response(double tau, double albedo, double g, const LateralTopInterface& top,
                                                     double k, const LateralFrequencyResolution& resolution) {
   const LateralSlab slab{tau, albedo, g};
-  return stack_response({&slab, 1}, 1.0, &top, k, resolution);
+  return stack_response({&slab, 1}, 1.0, &top, nullptr, k, resolution);
 }
 
 LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
                                                      const LateralFrequencyResolution& resolution) {
   const LateralSlab slab{tau, albedo, g};
-  return stack_response({&slab, 1}, 1.0, nullptr, k, resolution);
+  return stack_response({&slab, 1}, 1.0, nullptr, nullptr, k, resolution);
 }
 
 LateralFrequencyResponse open_layer_single_scattering_response(double tau, double albedo, double g, double k,
                                                                const LateralFrequencyResolution& resolution) {
   const LateralSlab slab{tau, albedo, g};
-  return stack_response({&slab, 1}, 0.0, nullptr, k, resolution);
+  return stack_response({&slab, 1}, 0.0, nullptr, nullptr, k, resolution);
 }
 
 }  // namespace skinlayer

@@ -19,6 +19,7 @@
 namespace skinlayer {
 
 struct LateralTopInterface;
+struct LateralSmoothFace;
 
 struct LateralFrequencyResolution {
   int ordinates = 16;      // double-Gauss nodes per hemisphere
@@ -41,13 +42,17 @@ struct LateralSlab {
 };
 
 // The stack's response at k (1 / the first slab's mean free path) under an open top (top null: a collimated beam
-// scattered in each slab with its own albedo) or a rough one built for `resolution`. Throws std::invalid_argument
-// for values outside the ranges above.
+// scattered in each slab with its own albedo), a rough one, diffuse light, or a smooth top (lateral_top_interface.h,
+// built for `resolution`), over an index-matched half-space or a smooth bottom face (bottom, for a finite stack).
+// Throws std::invalid_argument for values outside the ranges above.
 LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> slabs, const LateralTopInterface* top,
-                                                double k, const LateralFrequencyResolution& resolution = {});
+                                                double k, const LateralFrequencyResolution& resolution = {},
+                                                const LateralSmoothFace* bottom = nullptr);
 
-// Under an open top, the stack's first order in the albedos: the beam scattered once, then only streaming.
-LateralFrequencyResponse open_stack_single_scattering_response(std::span<const LateralSlab> slabs, double k,
+// The first order in the albedos of a collimated beam (under an open top, or a smooth one): the beam scattered once,
+// then only streaming and leaving, with no bottom face to send it back.
+LateralFrequencyResponse collimated_single_scattering_response(std::span<const LateralSlab> slabs,
+                                                               const LateralTopInterface* top, double k,
                                                                const LateralFrequencyResolution& resolution = {});
 
 // One slab: tau the optical depth (+infinity: semi-infinite); albedo Omega in [0, 1); g the Henyey-Greenstein

@@ -31,7 +31,24 @@ struct LateralTopInterface {
   // The interface's own multiply scattered reflection of the beam (under MicrofacetModel::Multiple, else 0): it leaves
   // at the entry point, so it is in the BSDF's subsurface reflectance but not in the spatial profile.
   double surface_multiple_reflectance = 0.0;
+  // Under a smooth top the normal beam stays collimated inside: its flux there, 1 - F(1). 0 where the light enters as
+  // node radiance (`source`).
+  double collimated = 0.0;
 };
+
+// A smooth (Fresnel) face of the stack, as the ordinates see it (§21.14): specular reflection keeps the direction of
+// travel's azimuth, so every mode reflects alike, node radiance times F(mu_j); the rest, 1 - F(mu_j), crosses.
+// eta: the index across the face over the layer's (n_above / n_layer for the top seen from inside, n_below / n_layer
+// for the bottom).
+struct LateralSmoothFace {
+  Eigen::VectorXd reflection;  // F(mu_j) for light meeting the face from inside along node j
+  Eigen::VectorXd exit;        // 1 - F(mu_j)
+};
+LateralSmoothFace lateral_smooth_face(double eta, int ordinates);
+
+// A smooth top of relative index eta = n_layer / n_above > 0, at normal incidence: reflection F(mu_j) inside, no node
+// source, the beam collimated with flux 1 - F(1). The specular reflection outside is no part of a profile.
+LateralTopInterface smooth_top_interface(double eta, int ordinates, int modes);
 
 // The top's operators on `ordinates` double-Gauss nodes per hemisphere and `modes` cosine modes, projected on
 // `azimuths` samples of [0, pi] as the BSDF solve projects them. Diffuse incidence averages the source and the

@@ -90,23 +90,35 @@ void check_options(const LayerProfileOptions& options) {
   }
 }
 
-// The layer as the solves see it: its slabs, and how the light enters them. A collimated beam under an open top is
-// the beam of §21.4; light that enters as node radiance (through a rough top, or diffuse) has its operators built
-// once, at the options' resolution (§21.9, §21.12).
+// The layer as the solves see it: its slabs, and how the light enters them. A collimated beam into one open slab over
+// a matched half-space is the beam of §21.4 with its exact single scattering (§21.6); light that enters as node
+// radiance (through a rough top, or diffuse), and a collimated beam into a stack or through smooth faces, have their
+// operators built once, at the options' resolution (§21.9, §21.12, §21.14).
 struct SolvedLayer {
   SolvedLayer(const ProfileLayer& described, const LayerProfileOptions& chosen)
       : layer(described), slabs(described.slabs()), options(chosen) {
     check_options(options);
     const int N = options.resolution.ordinates, M = options.resolution.azimuth_modes;
-    if (layer.top || layer.incidence == Incidence::Diffuse) {
-      if (std::isfinite(slabs.back().tau)) {
-        throw ParameterError(
-            "profile: under a rough top or diffuse light, profiles are computed so far for layers that end in a "
-            "half-space (tau inf)");
-      }
+    const bool node_entry = layer.top || layer.incidence == Incidence::Diffuse;
+    const bool finite = std::isfinite(slabs.back().tau);
+    if (layer.top && layer.smooth_top) throw std::invalid_argument("layer_profile: a top is rough or smooth, not both");
+    if (layer.smooth_bottom && !finite) throw std::invalid_argument("layer_profile: a half-space has no bottom face");
+    if (node_entry) {
       entry = layer.top ? lateral_top_interface(*layer.top, N, M, layer.incidence) : open_top_diffuse_interface(N, M);
-    } else if (slabs.size() > 1) {
-      throw ParameterError("profile: a stack of layers is computed so far under a rough top or in diffuse light");
+    } else if (layer.smooth_top) {
+      entry = smooth_top_interface(*layer.smooth_top, N, M);
+    } else if (slabs.size() > 1 || layer.smooth_bottom) {  // the open top's beam, through the rough top's path
+      entry =
+          LateralTopInterface{std::vector<Eigen::MatrixXd>(static_cast<std::size_t>(M), Eigen::MatrixXd::Zero(N, N)),
+                              Eigen::VectorXd::Zero(N), Eigen::VectorXd::Ones(N), 0.0, 1.0};
+    }
+    if (layer.smooth_bottom) bottom = lateral_smooth_face(*layer.smooth_bottom, N);
+    // Only the classic open slab has its transmitted single scattering in closed form: elsewhere a finite stack
+    // leaves light through its bottom, unscattered lobes and rings included, that is not taken apart yet.
+    if (entry && finite && !options.reflectance_only) {
+      throw ParameterError(
+          "profile: under a rough or smooth top, diffuse light, or in a stack, profiles are computed so far for "
+          "layers that end in a half-space (tau inf)");
     }
   }
   // The modes that frequency k needs: the k.s term couples mode m to m + 1 with strength k sin(theta) / 2, so at
@@ -119,12 +131,19 @@ struct SolvedLayer {
     return {options.resolution.ordinates, std::min(options.resolution.azimuth_modes, needed)};
   }
   LateralFrequencyResponse response(double k) const {
-    return lateral_stack_response(slabs, entry ? &*entry : nullptr, k, resolution_at(k));
+    return lateral_stack_response(slabs, entry ? &*entry : nullptr, k, resolution_at(k), bottom ? &*bottom : nullptr);
   }
   // The discrete ordinates' own single scattering at k: R_1 and T_1.
   LateralFrequencyResponse single_scattering(double k) const {
-    if (!entry) return open_stack_single_scattering_response(slabs, k, resolution_at(k));
-    return {rough_top_single_scattering_reflectance(slabs, *entry, k, resolution_at(k)), 0.0};
+    if (!entry) return collimated_single_scattering_response(slabs, nullptr, k, resolution_at(k));
+    // Light entering as node radiance, in closed form per pair of eigenvalues; a collimated beam through the solve
+    // without scattering. Neither sends light back from a bottom face: that is multiple scattering's part.
+    double reflectance =
+        entry->source.isZero() ? 0.0 : rough_top_single_scattering_reflectance(slabs, *entry, k, resolution_at(k));
+    if (entry->collimated > 0.0) {
+      reflectance += collimated_single_scattering_response(slabs, &*entry, k, resolution_at(k)).reflectance;
+    }
+    return {reflectance, 0.0};
   }
   // Single scattering's power through the annulus [r0, r1) of a face, and its density at r > 0, in closed form.
   double single_scattered_power(LayerFace face, double r0, double r1) const {
@@ -139,7 +158,8 @@ struct SolvedLayer {
   ProfileLayer layer;
   std::vector<LateralSlab> slabs;
   LayerProfileOptions options;
-  std::optional<LateralTopInterface> entry;  // none: the collimated beam under an open top
+  std::optional<LateralTopInterface> entry;  // none: the collimated beam into one open slab (§21.4)
+  std::optional<LateralSmoothFace> bottom;   // a smooth bottom face
 };
 
 // The multiply scattered light's transforms, sampled and splined (§21.7), with the totals at k = 0.
@@ -178,8 +198,10 @@ LayerProfile assemble_profile(const ProfileLayer& layer, const LayerProfileOptio
   profile.total_transmittance = ms.total_transmittance;
   for (std::size_t i = 0; i < count; ++i) {
     profile.reflectance.push_back(value(solved, LayerFace::Top, ms.reflected, i));
-    profile.transmittance.push_back(
-        std::isfinite(solved.slabs.back().tau) ? value(solved, LayerFace::Bottom, ms.transmitted, i) : 0.0);
+    if (!options.reflectance_only) {
+      profile.transmittance.push_back(
+          std::isfinite(solved.slabs.back().tau) ? value(solved, LayerFace::Bottom, ms.transmitted, i) : 0.0);
+    }
   }
   return profile;
 }

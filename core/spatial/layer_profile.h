@@ -33,6 +33,9 @@ struct ProfileLayer {
   std::optional<RoughDielectric> top = std::nullopt;  // none: no interface (eta = 1)
   std::vector<LateralSlab> below = {};                // under a rough top or diffuse light only, so far
   Incidence incidence = Incidence::Normal;
+  // Smooth (Fresnel) faces instead (§21.14): the top's relative index n_layer / n_above, and under a finite stack the
+  // bottom's n_below / n_layer. Unset: none (or the rough `top`).
+  std::optional<double> smooth_top = std::nullopt, smooth_bottom = std::nullopt;
 
   std::vector<LateralSlab> slabs() const;  // all of them, top to bottom
 };
@@ -47,6 +50,9 @@ struct LayerProfileOptions {
   bool adaptive_modes = true;
   // The caller's parallel-for (core/parallel_for.h): the frequencies are solved side by side through it.
   ParallelFor parallel_for = {};
+  // true: the transmittance is not computed (left empty), which lets through the finite stacks whose transmitted
+  // light is not taken apart yet: under a rough or smooth top, in diffuse light, several slabs.
+  bool reflectance_only = false;
 };
 
 struct LayerProfile {

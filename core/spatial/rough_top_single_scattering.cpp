@@ -68,6 +68,29 @@ double over_node_pairs(std::span<const LateralSlab> slabs, const LateralTopInter
     azimuth.weights.insert(azimuth.weights.end(), panel.weights.begin(), panel.weights.end());
   }
   double total = 0.0;
+  // A collimated beam under a smooth or open top (LateralTopInterface::collimated) scatters on its vertical path:
+  // the pair (i, beam) has rho = tan(theta_i) whatever the azimuth, and p is the ordinates' renormalized one, as the
+  // beam's source in lateral_slab_modes.
+  if (top.collimated > 0.0) {
+    for (int i = 0; i < ordinates; ++i) {
+      const double mu_i = q.nodes[i], sin_i = std::sqrt(std::max(0.0, 1.0 - mu_i * mu_i));
+      const double a = 1.0 + 1.0 / mu_i, rho = sin_i / mu_i;
+      for (std::size_t l = 0; l < slabs.size(); ++l) {
+        const LateralSlab& slab = slabs[l];
+        if (slab.tau == 0.0 || slab.albedo == 0.0) continue;
+        // sum_j a_j [p(mu_j) + p(-mu_j)]: the beam's scattering on the nodes, over 2 pi. The phase function is
+        // divided by 2 pi times it (§6.2), and the azimuth's integral of a p that does not depend on it is 2 pi p.
+        double scattered = 0.0;
+        for (int j = 0; j < ordinates; ++j) {
+          scattered += q.weights[j] * (henyey_greenstein(q.nodes[j], slab.g) + henyey_greenstein(-q.nodes[j], slab.g));
+        }
+        const double s0 = depths.geometric[l], s1 = s0 + slab.tau / slab.relative_extinction;
+        total += q.weights[i] * top.exit(i) * top.collimated * slab.albedo * slab.relative_extinction *
+                 std::exp(-depths.optical[l] * a) * henyey_greenstein(-mu_i, slab.g) / scattered *
+                 along(slab.relative_extinction * a, s0, s1, rho);
+      }
+    }
+  }
   for (int j = 0; j < ordinates; ++j) {
     const double mu_j = q.nodes[j], sin_j = std::sqrt(std::max(0.0, 1.0 - mu_j * mu_j));
     if (top.source(j) == 0.0) continue;

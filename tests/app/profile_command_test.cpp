@@ -160,9 +160,9 @@ TEST(ProfileCommand, WhatItCannotTakeIsOneLine) {
   EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--bottom", "lambert:0.5", "--albedo", "0.9"}), 2,
                                    {"Lambertian base"}));
   EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--bottom", "matched"}), 2, {"albedo is 1"}));
-  EXPECT_TRUE(failed_with_one_line(
-      profile({"--eta", "1", "--layer", "tau=0.5,albedo=0.9,g=0.5", "--layer", "tau=inf,albedo=0.9,g=0.5"}), 2,
-      {"stack of 2 layers", "no top"}));
+  EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--layer", "tau=0.5,albedo=0.9,g=0.5,mu_t=10", "--layer",
+                                            "tau=3,albedo=0.9,g=0.5,mu_t=5"}),
+                                   2, {"stack of 2 layers", "finite"}));
   EXPECT_TRUE(
       failed_with_one_line(profile({"--layer", "tau=0.5,albedo=0.9,g=0.5", "--layer", "tau=inf,albedo=0.9,g=0.5"}), 2,
                            {"extinction", "mu_t="}));

@@ -202,10 +202,14 @@ TEST(RoughTopProfile, WhatItCannotTakeYetIsRefused) {
   EXPECT_THROW(layer_profile_at(layer, radii, test_options()), ParameterError);  // a finite layer
   layer.below = {LateralSlab{3.0, 0.9, 0.8, 1.0}};
   EXPECT_THROW(layer_profile_at(layer, radii, test_options()), ParameterError);  // a finite stack
-  layer.below.back().tau = kInf;
   layer.top.reset();
-  EXPECT_THROW(layer_profile_at(layer, radii, test_options()), ParameterError);  // a stack under an open top
-  layer.incidence = Incidence::Diffuse;                                          // which diffuse light can enter
+  EXPECT_THROW(layer_profile_at(layer, radii, test_options()), ParameterError);  // a finite stack, open top too
+  LayerProfileOptions reflected = test_options();
+  reflected.reflectance_only = true;  // unless only its reflectance is asked for
+  EXPECT_TRUE(layer_profile_at(layer, radii, reflected).transmittance.empty());
+  layer.below.back().tau = kInf;  // a stack ending in a half-space, under an open top or in diffuse light
+  EXPECT_GT(layer_profile_at(layer, radii, test_options()).reflectance.front(), 0.0);
+  layer.incidence = Incidence::Diffuse;
   EXPECT_GT(layer_profile_at(layer, radii, test_options()).reflectance.front(), 0.0);
 }
 
