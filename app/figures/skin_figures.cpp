@@ -57,17 +57,25 @@ void close_csv(std::ofstream& out, const std::filesystem::path& path) {
   if (!out.flush()) throw std::runtime_error("cannot write " + path.string());
 }
 
-FigureSize build_spectra(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, int size) {
-  const std::vector<double> wavelengths = wavelength_grid(400.0, 700.0, 5.0);
+// A skin figure's plot frame, twice as wide as high; the subtitle's fixed parameters are in the CSV and the index's
+// caption.
+XyPlot skin_plot(const FigureSpec& spec, const char* x_label, const char* y_label, double x_min, double x_max,
+                 double x_tick, int size) {
   XyPlot plot;
-  plot.title = spec.title;  // the subtitle's fixed parameters are in the CSV and the index's caption
-  plot.x_label = "wavelength, nm";
-  plot.y_label = "reflectance";
-  plot.x_min = 400.0;
-  plot.x_max = 700.0;
-  plot.x_tick = 50.0;
+  plot.title = spec.title;
+  plot.x_label = x_label;
+  plot.y_label = y_label;
+  plot.x_min = x_min;
+  plot.x_max = x_max;
+  plot.x_tick = x_tick;
   plot.width = size * 2;
   plot.height = size;
+  return plot;
+}
+
+FigureSize build_spectra(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, int size) {
+  const std::vector<double> wavelengths = wavelength_grid(400.0, 700.0, 5.0);
+  XyPlot plot = skin_plot(spec, "wavelength, nm", "reflectance", 400.0, 700.0, 50.0, size);
   const std::filesystem::path csv_path = dir / (spec.name + ".csv");
   std::ofstream csv = open_csv(csv_path);
   csv << "curve,parameter,value,theta_i,wavelength_nm,reflectance,skin,sigma,eta\n";
@@ -116,15 +124,7 @@ FigureSize build_spheres(const FigureSpec& spec, const std::filesystem::path& di
 // log10 R(r) + 4 of each skin at 650, 550 and 450 nm (R in 1/mm^2), at the profile command's resolution, so that
 // `skinlayer profile --skin ... --wavelength W --annuli 0.2:20` gives back every CSV value.
 FigureSize build_profiles(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, int size) {
-  XyPlot plot;
-  plot.title = spec.title;
-  plot.x_label = "r, mm";
-  plot.y_label = "log10 R + 4 (R in 1/mm²)";
-  plot.x_min = 0.0;
-  plot.x_max = 4.0;
-  plot.x_tick = 0.5;
-  plot.width = size * 2;
-  plot.height = size;
+  XyPlot plot = skin_plot(spec, "r, mm", "log10 R + 4 (R in 1/mm²)", 0.0, 4.0, 0.5, size);
   const std::filesystem::path csv_path = dir / (spec.name + ".csv");
   std::ofstream csv = open_csv(csv_path);
   csv << "curve,parameter,value,wavelength_nm,r_inner_mm,r_outer_mm,reflectance,skin,sigma,eta\n";

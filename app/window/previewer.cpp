@@ -99,10 +99,10 @@ class Previewer final : private TestActionTarget {
   double frame() {
     bool activity = take_result();
     activity |= jobs_.take_outcomes(state_.material, out_);
-    activity |= update_spread();
     const std::array<int, 2> framebuffer = window_.framebuffer_size();
     if (framebuffer[0] < 1 || framebuffer[1] < 1) return kIdleWaitSeconds;  // minimized: nothing to draw
     update_scene();
+    activity |= update_spread();  // after the scene, which a new result remakes
     imgui_.new_frame();
     const std::array<int, 2> size = window_.window_size();
     const PreviewLayout layout = layout_preview(static_cast<float>(size[0]), static_cast<float>(size[1]),
@@ -221,8 +221,7 @@ class Previewer final : private TestActionTarget {
       spread_radius_ = -1.0;
       changed = true;
     }
-    const bool wanted = state_.view.translucency && shown_ && !shown_->preview && error_.empty() &&
-                        shown_->request.material.model == SubsurfaceModel::Stam;
+    const bool wanted = spread_wanted();
     if (wanted && !spread_job_.running() &&
         !(spread_material_ && same_material(*spread_material_, shown_->request.material)) &&
         !(spread_requested_ && same_material(*spread_requested_, shown_->request.material))) {
@@ -232,17 +231,31 @@ class Previewer final : private TestActionTarget {
     const bool current =
         wanted && spread_profile_ && spread_material_ && same_material(*spread_material_, shown_->request.material);
     if (current && spread_radius_ != state_.view.sphere_radius_mm) {
-      renderer_.upload_spread(spread_texture(*spread_profile_, state_.view.sphere_radius_mm));
+      try {
+        renderer_.upload_spread(spread_texture(*spread_profile_, state_.view.sphere_radius_mm));
+      } catch (const std::invalid_argument& error) {  // a profile with no light to spread (albedo 0)
+        spread_profile_.reset();
+        spread_note_ = error.what();
+      }
       spread_radius_ = state_.view.sphere_radius_mm;
       changed = true;
     }
-    scene_.sphere.spread = current;
+    scene_.sphere.spread = current && spread_profile_.has_value();
     return changed;
+  }
+
+  // The translucency applies to the shown material: the layer model's, fully solved.
+  bool spread_wanted() const {
+    return state_.view.translucency && shown_ && !shown_->preview && error_.empty() &&
+           shown_->request.material.model == SubsurfaceModel::Stam;
   }
 
   // What the panel says of the translucency.
   std::string spread_status() const {
     if (!state_.view.translucency) return "translucency off: the light leaves where it falls";
+    if (shown_ && shown_->request.material.model != SubsurfaceModel::Stam) {
+      return "translucency: for the layer model only (the sphere shows a comparison model)";
+    }
     if (spread_job_.running()) return "translucency: computing the material's profile...";
     if (!shown_ || shown_->preview || !spread_material_ ||
         !same_material(*spread_material_, shown_->request.material)) {
@@ -483,8 +496,7 @@ class Previewer final : private TestActionTarget {
   // window through the same export path as the S key, and finish.
   void capture_if_ready(std::array<int, 2> framebuffer) {
     if (!capture_path_ || !script_.finished() || jobs_.running() || spread_job_.running()) return;
-    if (state_.view.translucency && shown_ && !shown_->preview &&
-        !(spread_material_ && same_material(*spread_material_, shown_->request.material))) {
+    if (spread_wanted() && !(spread_material_ && same_material(*spread_material_, shown_->request.material))) {
       return;  // the translucency of the shown material is still to come
     }
     const bool final_result = submitted_ && !worker_.settling();

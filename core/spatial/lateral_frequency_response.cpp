@@ -1,5 +1,5 @@
-// docs/model.md §21.4, §21.9 and §21.11: slabs at one lateral frequency joined through their faces, under an open or
-// a rough top, and the fluxes out of the stack.
+// docs/model.md §21.4, §21.9, §21.11 and §21.14: slabs at one lateral frequency joined through their faces, under an
+// open, rough or smooth top and over a matched or smooth bottom, and the fluxes out of the stack.
 #include "core/spatial/lateral_frequency_response.h"
 
 #include <Eigen/Dense>
@@ -27,7 +27,7 @@ struct SolvedSlab {
   double tau = 0.0;
   int offset = 0;  // the first unknown: decaying modes (weights referred to the top), then growing ones (to the bottom)
   int count = 0;   // n, or n / 2 for a semi-infinite slab (decaying only)
-  double beam = 0;  // e^{-(optical depth above)} under an open top, else 0
+  double beam = 0;  // the collimated beam's flux at the slab's top (open or smooth top), else 0
 
   // Column c's solution at node row `row` and depth t in the slab.
   std::complex<double> column(int c, int row, double t) const {

@@ -1,4 +1,4 @@
-// docs/model.md §21.7 and §21.10: single scattering in closed form, the rest through k-space.
+// docs/model.md §21.7, §21.10 and §21.14: single scattering in closed form, the rest through k-space.
 #include "core/spatial/layer_profile.h"
 
 #include <Eigen/Core>
@@ -103,6 +103,9 @@ struct SolvedLayer {
     const bool finite = std::isfinite(slabs.back().tau);
     if (layer.top && layer.smooth_top) throw std::invalid_argument("layer_profile: a top is rough or smooth, not both");
     if (layer.smooth_bottom && !finite) throw std::invalid_argument("layer_profile: a half-space has no bottom face");
+    if (layer.smooth_top && layer.incidence == Incidence::Diffuse) {
+      throw std::invalid_argument("layer_profile: diffuse light through a smooth top is not computed yet");
+    }
     if (node_entry) {
       entry = layer.top ? lateral_top_interface(*layer.top, N, M, layer.incidence) : open_top_diffuse_interface(N, M);
     } else if (layer.smooth_top) {
