@@ -65,19 +65,22 @@ struct StatedPng {
   int height = 0;
 };
 
+// `skinlayer figures` as the ctest fixture figures.generate ran it (tests/app/figures/CMakeLists.txt): its folder,
+// and its output, error stream and exit code beside it.
 class FiguresCommand : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("skinlayer_figures_test_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    result_ = run_skinlayer({"figures", "-o", dir_.string()});
+    dir_ = SKINLAYER_FIGURES_DIR;
+    const std::string code = read_text(fs::path(dir_.string() + ".code"));
+    result_.exit_code = code.empty() ? -1 : std::stoi(code);
+    result_.out = read_text(fs::path(dir_.string() + ".out"));
+    result_.err = read_text(fs::path(dir_.string() + ".err"));
     const std::string index = read_text(dir_ / "index.html");
     const std::regex img(R"re(<img src="([^"]+)\.png" width="(\d+)" height="(\d+)")re");
     for (auto it = std::sregex_iterator(index.begin(), index.end(), img); it != std::sregex_iterator(); ++it) {
       stated_.push_back({(*it)[1].str(), std::stoi((*it)[2].str()), std::stoi((*it)[3].str())});
     }
   }
-  static void TearDownTestSuite() { fs::remove_all(dir_); }
 
   static inline fs::path dir_;
   static inline ProcessResult result_;
