@@ -26,7 +26,7 @@ const std::array kCommands{
     Command{"albedo", albedo_usage,
             [](Arguments arguments, const CommandStreams& s) { return run_albedo_command(arguments, s.out); }},
     Command{"profile", profile_usage,
-            [](Arguments arguments, const CommandStreams& s) { return run_profile_command(arguments, s.out); }},
+            [](Arguments arguments, const CommandStreams& s) { return run_profile_command(arguments, s.out, s.err); }},
     Command{"spectrum", spectrum_usage,
             [](Arguments arguments, const CommandStreams& s) { return run_spectrum_command(arguments, s.out); }},
     Command{"match", match_usage,

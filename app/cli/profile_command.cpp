@@ -96,7 +96,7 @@ std::string profile_usage() {
          "  skinlayer profile --skin melanin=0.05 --wavelength 650 --radii 0.1,0.5,1,2\n";
 }
 
-int run_profile_command(std::span<const std::string_view> arguments, std::ostream& out) {
+int run_profile_command(std::span<const std::string_view> arguments, std::ostream& out, std::ostream& progress) {
   const ParsedFlags flags = ParsedFlags::parse(
       arguments, material_flags_and({kIncidenceFlag, kAnnuliFlag, kRadiiFlag, kSkinFlag, kWavelengthFlag}),
       "skinlayer profile");
@@ -120,6 +120,13 @@ int run_profile_command(std::span<const std::string_view> arguments, std::ostrea
   ProfileRequest request;
   request.incidence = incidence;
   request.options.parallel_for = parallel_for_threads;
+  if (document.skin) {  // a skin's 31 wavelengths take about a minute: a line every tenth of them
+    request.progress = [&](int done, int total) {
+      if (done * 10 / total != (done - 1) * 10 / total) {
+        progress << "profile: " << done << " of " << total << " wavelengths\n" << std::flush;
+      }
+    };
+  }
   const DocumentProfile profile = at_radii ? document_profile_at_radii(document, positions, request)
                                            : document_profile_in_annuli(document, positions, request);
   const std::string& unit = profile.unit;

@@ -19,6 +19,7 @@ namespace skinlayer::cli {
 std::string profile_usage();
 
 // Runs the command on arguments (after "profile") and returns the exit status. Errors are thrown (see errors.h).
-int run_profile_command(std::span<const std::string_view> arguments, std::ostream& out);
+// Progress lines (a skin's wavelengths done) go to `progress`.
+int run_profile_command(std::span<const std::string_view> arguments, std::ostream& out, std::ostream& progress);
 
 }  // namespace skinlayer::cli

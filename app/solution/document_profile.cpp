@@ -85,6 +85,9 @@ DocumentProfile document_profile(const MaterialDocument& document, const Profile
     std::vector<double> in_mfp;
     for (const double r : positions) in_mfp.push_back(r * mu_t.back());
     per_solve.push_back(profile(material, in_mfp));
+    if (request.progress) {
+      request.progress(static_cast<int>(per_solve.size()), static_cast<int>(solves.materials.size()));
+    }
   }
   DocumentProfile result;
   result.unit = in_mm ? "mm" : "mfp";

@@ -4,6 +4,7 @@
 // or layers that end in a half-space under a rough top (a skin among them, mixed from its wavelengths).
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -33,6 +34,9 @@ struct ProfileRequest {
   Incidence incidence = Incidence::Normal;
   LayerProfileOptions options = document_profile_options();  // the resolution and the parallel-for
   bool preview = false;  // a skin on its 7 preview wavelengths (color_channels' preview grid) instead of 31
+  // Called after each of the document's solves (a skin's wavelengths), with how many are done of how many; empty:
+  // none. The command prints it: a skin's profile takes about a minute.
+  std::function<void(int done, int total)> progress = {};
 };
 
 DocumentProfile document_profile_in_annuli(const MaterialDocument& document, std::span<const double> edges,
