@@ -38,6 +38,14 @@ Eigen::MatrixXd lateral_mode_coupling(int modes) {
   return coupling;
 }
 
+double beam_scattering_on_nodes(double g, const QuadratureRule& q) {
+  double scattered = 0.0;
+  for (std::size_t j = 0; j < q.nodes.size(); ++j) {
+    scattered += q.weights[j] * (henyey_greenstein(q.nodes[j], g) + henyey_greenstein(-q.nodes[j], g));
+  }
+  return scattered;
+}
+
 LateralSlabModes lateral_slab_modes(double operator_albedo, double source_albedo, double g, double k,
                                     const QuadratureRule& q, int modes) {
   check(operator_albedo >= 0.0 && operator_albedo < 1.0, "albedo must be in [0, 1)");
@@ -72,11 +80,7 @@ LateralSlabModes lateral_slab_modes(double operator_albedo, double source_albedo
     }
   }
   Eigen::VectorXd source = Eigen::VectorXd::Zero(n);  // D^-1 s: the beam's first scattering, mode 0
-  double scattered = 0.0;
-  for (int j = 0; j < N; ++j) {
-    scattered += q.weights[j] * (henyey_greenstein(q.nodes[j], g) + henyey_greenstein(-q.nodes[j], g));
-  }
-  const double norm = 1.0 / (2.0 * kPi * scattered);  // the quadrature scatters exactly what the beam loses
+  const double norm = 1.0 / (2.0 * kPi * beam_scattering_on_nodes(g, q));
   for (int up = 0; up < 2; ++up) {
     for (int i = 0; i < N; ++i) {
       const double mu = up ? -q.nodes[i] : q.nodes[i];

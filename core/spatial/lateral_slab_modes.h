@@ -27,6 +27,10 @@ PhaseMatrices lateral_phase_matrices(double g, const QuadratureRule& quadrature,
 // (1 + k sin(theta) C) / mu on the coefficients a_m, C(m, m - 1) = 1 for m = 1 and 1/2 above, C(m, m + 1) = -1/2.
 Eigen::MatrixXd lateral_mode_coupling(int modes);
 
+// sum_j a_j [p(mu_j) + p(-mu_j)]: how much of a collimated beam's first scattering the nodes hold, per 2 pi. The
+// beam's source is p / (2 pi times it), so that the quadrature scatters exactly what the beam loses (§6.2).
+double beam_scattering_on_nodes(double g, const QuadratureRule& quadrature);
+
 // The slab's solutions in its own optical depth t (0 at its top): v e^{-lambda t} for the first size/2 columns
 // (Re lambda > 0, decaying downward) and, swapped, v e^{-lambda t} with lambda = -root for the rest (growing; the
 // caller refers them to the slab's bottom). `beam`: X with (A - 1) X = D^-1 s, the particular solution X e^{-t} of a

@@ -88,11 +88,13 @@ LateralTopInterface smooth_top_interface(double eta, int ordinates, int modes) {
   return interface;
 }
 
-LateralTopInterface open_top_diffuse_interface(int ordinates, int modes) {
+LateralTopInterface open_top_interface(int ordinates, int modes, Incidence incidence) {
+  const bool diffuse = incidence == Incidence::Diffuse;
   LateralTopInterface interface;
   interface.reflection.assign(static_cast<std::size_t>(modes), Eigen::MatrixXd::Zero(ordinates, ordinates));
-  interface.source = Eigen::VectorXd::Constant(ordinates, kInvPi);
+  interface.source = Eigen::VectorXd::Constant(ordinates, diffuse ? kInvPi : 0.0);
   interface.exit = Eigen::VectorXd::Ones(ordinates);
+  interface.collimated = diffuse ? 0.0 : 1.0;
   return interface;
 }
 

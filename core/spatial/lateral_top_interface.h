@@ -57,9 +57,10 @@ LateralTopInterface smooth_top_interface(double eta, int ordinates, int modes);
 LateralTopInterface lateral_top_interface(const RoughDielectric& top, int ordinates, int modes,
                                           Incidence incidence = Incidence::Normal, int azimuths = 97);
 
-// Diffuse light under no interface, held as node radiance: 1/pi on every down node (unit power on the double-Gauss
-// nodes, whose sum of a_j mu_j is 1/2), nothing reflected, everything leaving.
-LateralTopInterface open_top_diffuse_interface(int ordinates, int modes);
+// No interface, as the ordinates see it: nothing reflected, everything leaving. The normal beam stays collimated
+// (collimated = 1); diffuse light is held as node radiance, 1/pi on every down node (unit power on the double-Gauss
+// nodes, whose sum of a_j mu_j is 1/2).
+LateralTopInterface open_top_interface(int ordinates, int modes, Incidence incidence);
 
 // The incident cosines over which diffuse incidence averages, with weights 2 mu w (Gauss-Legendre on (0, 1), 24
 // nodes): the quantity at diffuse incidence is sum_q weight_q X(mu_q), the hemispherical average of X.

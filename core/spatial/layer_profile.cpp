@@ -99,21 +99,19 @@ struct SolvedLayer {
       : layer(described), slabs(described.slabs()), options(chosen) {
     check_options(options);
     const int N = options.resolution.ordinates, M = options.resolution.azimuth_modes;
-    const bool node_entry = layer.top || layer.incidence == Incidence::Diffuse;
     const bool finite = std::isfinite(slabs.back().tau);
     if (layer.top && layer.smooth_top) throw std::invalid_argument("layer_profile: a top is rough or smooth, not both");
     if (layer.smooth_bottom && !finite) throw std::invalid_argument("layer_profile: a half-space has no bottom face");
     if (layer.smooth_top && layer.incidence == Incidence::Diffuse) {
       throw std::invalid_argument("layer_profile: diffuse light through a smooth top is not computed yet");
     }
-    if (node_entry) {
-      entry = layer.top ? lateral_top_interface(*layer.top, N, M, layer.incidence) : open_top_diffuse_interface(N, M);
+    if (layer.top) {
+      entry = lateral_top_interface(*layer.top, N, M, layer.incidence);
     } else if (layer.smooth_top) {
       entry = smooth_top_interface(*layer.smooth_top, N, M);
-    } else if (slabs.size() > 1 || layer.smooth_bottom) {  // the open top's beam, through the rough top's path
-      entry =
-          LateralTopInterface{std::vector<Eigen::MatrixXd>(static_cast<std::size_t>(M), Eigen::MatrixXd::Zero(N, N)),
-                              Eigen::VectorXd::Zero(N), Eigen::VectorXd::Ones(N), 0.0, 1.0};
+    } else if (layer.incidence == Incidence::Diffuse || slabs.size() > 1 || layer.smooth_bottom) {
+      // No top, through the rough top's path: all but the classic open slab's beam.
+      entry = open_top_interface(N, M, layer.incidence);
     }
     if (layer.smooth_bottom) bottom = lateral_smooth_face(*layer.smooth_bottom, N);
     // Only the classic open slab has its transmitted single scattering in closed form: elsewhere a finite stack

@@ -1,14 +1,16 @@
-// The spatially resolved response of one layer to a pencil beam at normal incidence: where its light leaves the top
-// and the bottom, averaged over annuli about the entry point or at radii (docs/model.md §21.7, §21.10). Lengths are in
-// mean free paths of its first slab. The layer has an index-matched half-space or nothing below it, and above it no
-// interface (the open layer, one slab) or a rough one over a stack of slabs that ends in a half-space, so far. Diffuse
-// incidence (§21.12) takes stacks that end in a half-space under either top.
+// The spatially resolved response of a layer or a stack of slabs to light entering at a point: where it leaves the
+// top and the bottom, averaged over annuli about the entry point or at radii (docs/model.md §21.7, §21.10–21.14).
+// Lengths are in mean free paths of the first slab. The light is a pencil beam at normal incidence or diffuse. Above
+// the slabs: no interface, a rough one, or a smooth one; below them an index-matched half-space or, under a finite
+// stack, nothing or a smooth face. Only one open slab has its transmittance computed so far: elsewhere a stack must
+// end in a half-space, or give its reflectance alone (LayerProfileOptions::reflectance_only).
 //
-// Single scattering is singular at r -> 0 and is taken in closed form (single_scattering_profile.h under an open top,
-// rough_top_single_scattering.h under a rough one). The rest, the light scattered more than once, is smooth enough
-// for k-space: R_ms(k) = R(k) - R_1(k), where R(k) is the discrete-ordinate response at one frequency
-// (lateral_frequency_response.h) and R_1 its first order in the albedo, the discrete ordinates' own single
-// scattering. Through an annulus, since int_0^a J0(k r) 2 pi r dr = 2 pi a J1(k a) / k, its power is
+// Single scattering is singular at r -> 0 and is taken in closed form (single_scattering_profile.h for one open slab
+// lit by the beam, rough_top_single_scattering.h wherever the light enters through the top's operators). The rest,
+// the light scattered more than once, is smooth enough for k-space: R_ms(k) = R(k) - R_1(k), where R(k) is the
+// discrete-ordinate response at one frequency (lateral_frequency_response.h) and R_1 its first order in the albedo,
+// the discrete ordinates' own single scattering. Through an annulus, since int_0^a J0(k r) 2 pi r dr =
+// 2 pi a J1(k a) / k, its power is
 //   P_ms = int_0^inf R_ms(k) [r1 J1(k r1) - r0 J1(k r0)] dk,
 // integrated over a spline of R_ms on a grid uniform in asinh(k / k_s).
 #pragma once
@@ -31,7 +33,7 @@ struct ProfileLayer {
   double albedo = 0.0;                                // Omega in [0, 1)
   double g = 0.0;                                     // Henyey-Greenstein asymmetry
   std::optional<RoughDielectric> top = std::nullopt;  // none: no interface (eta = 1)
-  std::vector<LateralSlab> below = {};                // under a rough top or diffuse light only, so far
+  std::vector<LateralSlab> below = {};                // the slabs under the first, top to bottom
   Incidence incidence = Incidence::Normal;
   // Smooth (Fresnel) faces instead (§21.14): the top's relative index n_layer / n_above, and under a finite stack the
   // bottom's n_below / n_layer. Unset: none (or the rough `top`).
@@ -66,8 +68,7 @@ struct LayerProfile {
 };
 
 // edges: finite, increasing radii from >= 0, in mean free paths. Throws ParameterError (one line for the user) for bad
-// edges or radii and for what it cannot take yet (a finite stack under a rough top or diffuse light, a stack under an
-// open top at normal incidence),
+// edges or radii and for what it cannot take yet (the transmittance of anything but one open slab), and
 // std::invalid_argument for bad options or layer parameters.
 LayerProfile layer_profile(const ProfileLayer& layer, std::span<const double> edges,
                            const LayerProfileOptions& options = {});

@@ -78,12 +78,9 @@ double over_node_pairs(std::span<const LateralSlab> slabs, const LateralTopInter
       for (std::size_t l = 0; l < slabs.size(); ++l) {
         const LateralSlab& slab = slabs[l];
         if (slab.tau == 0.0 || slab.albedo == 0.0) continue;
-        // sum_j a_j [p(mu_j) + p(-mu_j)]: the beam's scattering on the nodes, over 2 pi. The phase function is
-        // divided by 2 pi times it (§6.2), and the azimuth's integral of a p that does not depend on it is 2 pi p.
-        double scattered = 0.0;
-        for (int j = 0; j < ordinates; ++j) {
-          scattered += q.weights[j] * (henyey_greenstein(q.nodes[j], slab.g) + henyey_greenstein(-q.nodes[j], slab.g));
-        }
+        // The phase function is divided by 2 pi times the nodes' share of the beam's scattering, and the azimuth's
+        // integral of a p that does not depend on it is 2 pi p.
+        const double scattered = beam_scattering_on_nodes(slab.g, q);
         const double s0 = depths.geometric[l], s1 = s0 + slab.tau / slab.relative_extinction;
         total += q.weights[i] * top.exit(i) * top.collimated * slab.albedo * slab.relative_extinction *
                  std::exp(-depths.optical[l] * a) * henyey_greenstein(-mu_i, slab.g) / scattered *

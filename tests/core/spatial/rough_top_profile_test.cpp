@@ -142,7 +142,7 @@ TEST(RoughTopProfile, DiffuseIncidenceAtZeroFrequencyIsTheHemisphericalAverage) 
   double open_average = 0.0;
   for (std::size_t q = 0; q < theta.size(); ++q)
     open_average += cosines.weights[q] * open_albedo[q].reflectance_subsurface;
-  const LateralTopInterface none = open_top_diffuse_interface(12, 4);
+  const LateralTopInterface none = open_top_interface(12, 4, Incidence::Diffuse);
   EXPECT_NEAR(lateral_stack_response(half_space, &none, 0.0, {12, 4}).reflectance, open_average, 2e-3 * open_average);
 }
 
