@@ -3,7 +3,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "app/material/color_channels.h"
 #include "app/solution/document_profile.h"
 #include "core/conventions.h"
 #include "core/material.h"
@@ -21,8 +20,7 @@ std::vector<double> spread_edges() {
 }  // namespace
 
 SpreadProfile spread_profile(const MaterialDocument& document, bool preview, const ParallelFor& parallel_for) {
-  const ColorChannels solves = color_channels(document, preview);
-  if (!solves.materials.front().extinction) {
+  if (!document.skin && !document.layer.extinction) {  // a skin's layers have theirs; a stack's are checked below
     throw ParameterError(
         "sphere radius: the material has no length, so its light cannot spread over a sphere in mm (give --mu-t, "
         "1/mm)");

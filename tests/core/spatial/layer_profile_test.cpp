@@ -25,23 +25,17 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kMcmlPhotons = 2e6;  // per case, tests/reference/README.md
 
-LayerProfileOptions test_options() {
-  LayerProfileOptions options;
-  options.resolution = {12, 16};
-  options.frequencies = 40;
-  return options;
-}
-
 // A weakly absorbing, forward-scattering half-space: light spreads to ~20 mean free paths.
 TEST(LayerProfile, HalfSpaceMatchesTheWalkInEveryAnnulus) {
   test::expect_profile_matches_the_walk(
-      {kInf, 0.99, 0.8}, test::index_matched_slab(kInf, 0.99, 0.8), test_options(),
+      {kInf, 0.99, 0.8}, test::index_matched_slab(kInf, 0.99, 0.8), test::profile_test_options(),
       {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0, 24.0});
 }
 
 // A slab: reflection and transmission, both peaked at the beam.
 TEST(LayerProfile, SlabReflectionAndTransmissionMatchTheWalk) {
-  test::expect_profile_matches_the_walk({2.0, 0.9, 0.5}, test::index_matched_slab(2.0, 0.9, 0.5), test_options(),
+  test::expect_profile_matches_the_walk({2.0, 0.9, 0.5}, test::index_matched_slab(2.0, 0.9, 0.5),
+                                        test::profile_test_options(),
                                         {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0});
 }
 
@@ -65,7 +59,7 @@ TEST(LayerProfile, AgreesWithMcmlsAnnuli) {
         expected.push_back(mcml.number(row, "per_mfp2"));
       }
       if (expected.empty()) continue;
-      const LayerProfile profile = layer_profile({c.tau, c.albedo, c.g}, edges, test_options());
+      const LayerProfile profile = layer_profile({c.tau, c.albedo, c.g}, edges, test::profile_test_options());
       const std::vector<double>& got = side == "reflectance" ? profile.reflectance : profile.transmittance;
       double peak = 0.0, worst = 0.0;
       for (const double v : got) peak = std::max(peak, v);
@@ -96,8 +90,8 @@ TEST(LayerProfile, PointValuesAverageToTheAnnuli) {
     for (const double t : rule.nodes) radii.push_back(edges[a] + (edges[a + 1] - edges[a]) * t);
   }
   for (const double tau : {kInf, 1.5}) {
-    const LayerProfile points = layer_profile_at({tau, 0.95, 0.7}, radii, test_options());
-    const LayerProfile annuli = layer_profile({tau, 0.95, 0.7}, edges, test_options());
+    const LayerProfile points = layer_profile_at({tau, 0.95, 0.7}, radii, test::profile_test_options());
+    const LayerProfile annuli = layer_profile({tau, 0.95, 0.7}, edges, test::profile_test_options());
     for (std::size_t a = 0; a + 1 < edges.size(); ++a) {
       const double r0 = edges[a], r1 = edges[a + 1];
       double reflected = 0.0, transmitted = 0.0;
@@ -115,7 +109,7 @@ TEST(LayerProfile, PointValuesAverageToTheAnnuli) {
     }
   }
   const double zero[] = {0.0};
-  EXPECT_THROW(layer_profile_at({kInf, 0.95, 0.7}, zero, test_options()), std::invalid_argument);
+  EXPECT_THROW(layer_profile_at({kInf, 0.95, 0.7}, zero, test::profile_test_options()), std::invalid_argument);
 }
 
 // Far from the source, where diffusion holds, the exact profile takes the diffusion dipole's shape; near it the dipole
@@ -133,7 +127,7 @@ TEST(LayerProfile, FarFromTheSourceTheShapeIsTheDiffusionDipoles) {
   EXPECT_NEAR(dipole_total, diffusion_dipole_total_reflectance(0.99, 0.8), 1e-4 * dipole_total);
 
   const std::vector<double> radii = {0.5, 1.0, 16.0, 24.0, 32.0, 48.0};
-  LayerProfileOptions options = test_options();
+  LayerProfileOptions options = test::profile_test_options();
   options.frequencies = 48;
   const LayerProfile exact = layer_profile_at({kInf, 0.99, 0.8}, radii, options);
   for (std::size_t i = 0; i < radii.size(); ++i) {
@@ -152,7 +146,7 @@ TEST(LayerProfile, FarFromTheSourceTheShapeIsTheDiffusionDipoles) {
 TEST(LayerProfile, PowersAddUpToTheDirectionalAlbedo) {
   std::vector<double> edges = {0.0};
   for (double r = 0.05; r < 120.0; r *= 1.25) edges.push_back(r);
-  const LayerProfile profile = layer_profile({kInf, 0.95, 0.6}, edges, test_options());
+  const LayerProfile profile = layer_profile({kInf, 0.95, 0.6}, edges, test::profile_test_options());
   double power = 0.0;
   for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
     power += profile.reflectance[i] * kPi * (edges[i + 1] * edges[i + 1] - edges[i] * edges[i]);
@@ -166,7 +160,8 @@ TEST(LayerProfile, PowersAddUpToTheDirectionalAlbedo) {
   // The closed-form transform of the half-space against the panels' one, at k > 0.
   EXPECT_NEAR(single_scattered_transform(kInf, 0.8, 0.3, LayerFace::Top, 2.0),
               single_scattered_transform(60.0, 0.8, 0.3, LayerFace::Top, 2.0), 1e-7);
-  EXPECT_THROW(layer_profile({kInf, 0.95, 0.6}, std::vector<double>{1.0, 0.5}, test_options()), std::invalid_argument);
+  EXPECT_THROW(layer_profile({kInf, 0.95, 0.6}, std::vector<double>{1.0, 0.5}, test::profile_test_options()),
+               std::invalid_argument);
   EXPECT_THROW(single_scattered_power(kInf, 0.5, 0.0, LayerFace::Bottom, 0.0, 1.0), std::invalid_argument);
 }
 

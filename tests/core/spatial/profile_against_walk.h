@@ -16,6 +16,14 @@
 
 namespace skinlayer::test {
 
+// The resolution the profile tests check: 12 nodes, 16 modes, 40 frequencies (the command's).
+inline LayerProfileOptions profile_test_options() {
+  LayerProfileOptions options;
+  options.resolution = {12, 16};
+  options.frequencies = 40;
+  return options;
+}
+
 // `material` is `layer` as the walk takes it. With mu_t (the first layer's extinction, 1/mm) the edges are in mm,
 // as the walk tallies a stack whose layers all have their lengths, and the profile's values become 1/mm^2.
 inline void expect_profile_matches_the_walk(const ProfileLayer& layer, const Material& material,

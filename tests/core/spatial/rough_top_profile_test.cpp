@@ -24,13 +24,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-LayerProfileOptions test_options() {
-  LayerProfileOptions options;
-  options.resolution = {12, 16};
-  options.frequencies = 40;
-  return options;
-}
-
 Material rough_half_space(double sigma, double albedo, double g) {
   Material m = test::index_matched_slab(kInf, albedo, g);
   m.eta = 1.4;
@@ -50,13 +43,13 @@ const std::vector<double> kEdges = {0.0, 0.05, 0.1, 0.2, 0.35, 0.5,  0.75, 1.0, 
 // Skin-like: a weakly absorbing, forward-scattering half-space under a fairly smooth top.
 TEST(RoughTopProfile, ForwardScatteringHalfSpaceMatchesTheWalk) {
   const Material m = rough_half_space(0.3, 0.99, 0.8);
-  test::expect_profile_matches_the_walk(as_profile_layer(m), m, test_options(), kEdges);
+  test::expect_profile_matches_the_walk(as_profile_layer(m), m, test::profile_test_options(), kEdges);
 }
 
 // A rougher top over a more absorbing, less forward medium: the light stays near the beam.
 TEST(RoughTopProfile, RoughTopOverAnAbsorbingHalfSpaceMatchesTheWalk) {
   const Material m = rough_half_space(0.8, 0.9, 0.5);
-  test::expect_profile_matches_the_walk(as_profile_layer(m), m, test_options(), kEdges);
+  test::expect_profile_matches_the_walk(as_profile_layer(m), m, test::profile_test_options(), kEdges);
 }
 
 // A skin-like stack in millimetres: a 0.08 mm layer (mu_t 20/mm, Omega 0.9) over a half-space of twice its extinction
@@ -71,7 +64,7 @@ TEST(RoughTopProfile, TwoLayerStackInMillimetresMatchesTheWalk) {
   ProfileLayer layer = as_profile_layer(m);
   layer.below = {LateralSlab{kInf, 0.99, 0.8, 2.0}};
   test::expect_profile_matches_the_walk(
-      layer, m, test_options(),
+      layer, m, test::profile_test_options(),
       {0.0, 0.0025, 0.005, 0.01, 0.02, 0.035, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, 0.8, 1.2, 1.6}, 20.0);
 }
 
@@ -82,7 +75,7 @@ TEST(RoughTopProfile, PowersAddUpToTheDirectionalAlbedo) {
   m.ordinates = 12;
   std::vector<double> edges = {0.0};
   for (double r = 0.05; r < 120.0; r *= 1.25) edges.push_back(r);
-  const LayerProfile profile = layer_profile(as_profile_layer(m), edges, test_options());
+  const LayerProfile profile = layer_profile(as_profile_layer(m), edges, test::profile_test_options());
   double power = 0.0;
   for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
     power += profile.reflectance[i] * kPi * (edges[i + 1] * edges[i + 1] - edges[i] * edges[i]);
@@ -105,8 +98,8 @@ TEST(RoughTopProfile, PointValuesAverageToTheAnnuli) {
   for (std::size_t a = 0; a + 1 < edges.size(); ++a) {
     for (const double t : rule.nodes) radii.push_back(edges[a] + (edges[a + 1] - edges[a]) * t);
   }
-  const LayerProfile points = layer_profile_at(layer, radii, test_options());
-  const LayerProfile annuli = layer_profile(layer, edges, test_options());
+  const LayerProfile points = layer_profile_at(layer, radii, test::profile_test_options());
+  const LayerProfile annuli = layer_profile(layer, edges, test::profile_test_options());
   for (std::size_t a = 0; a + 1 < edges.size(); ++a) {
     const double r0 = edges[a], r1 = edges[a + 1];
     double reflected = 0.0;
@@ -153,7 +146,7 @@ TEST(RoughTopProfile, DiffuseIncidenceMatchesTheWalkAveragedOverTheHemisphere) {
   ProfileLayer layer = as_profile_layer(m);
   layer.incidence = Incidence::Diffuse;
   const std::vector<double> edges = {0.0, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0};
-  const LayerProfile profile = layer_profile(layer, edges, test_options());
+  const LayerProfile profile = layer_profile(layer, edges, test::profile_test_options());
   std::vector<RadialBin> bins;
   for (std::size_t i = 0; i + 1 < edges.size(); ++i) bins.push_back({ExitSide::Reflected, edges[i], edges[i + 1]});
   const QuadratureRule rule = gauss_legendre(8, 0.0, 1.0);
@@ -186,10 +179,10 @@ TEST(RoughTopProfile, AdaptiveModesLeaveTheProfile) {
   layer.tau = 1.5;
   layer.below = {LateralSlab{kInf, 0.99, 0.8, 0.6}};
   const double radii[] = {0.1, 0.5, 2.0, 8.0, 20.0};
-  LayerProfileOptions all_modes = test_options();
+  LayerProfileOptions all_modes = test::profile_test_options();
   all_modes.adaptive_modes = false;
   const LayerProfile fixed = layer_profile_at(layer, radii, all_modes);
-  const LayerProfile adaptive = layer_profile_at(layer, radii, test_options());
+  const LayerProfile adaptive = layer_profile_at(layer, radii, test::profile_test_options());
   for (std::size_t i = 0; i < std::size(radii); ++i) {
     EXPECT_NEAR(adaptive.reflectance[i], fixed.reflectance[i], 1e-5 * fixed.reflectance[i]) << radii[i];
   }
