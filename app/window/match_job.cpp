@@ -19,15 +19,8 @@ std::string srgb_text(const Eigen::Vector3d& srgb) {
 
 }  // namespace
 
-MatchJob::~MatchJob() {
-  if (thread_.joinable()) thread_.join();
-}
-
 bool MatchJob::start(MaterialDocument document, const Eigen::Vector3d& srgb) {
-  if (running_.load()) return false;
-  if (thread_.joinable()) thread_.join();
-  running_ = true;
-  thread_ = std::thread([this, document = std::move(document), srgb] {
+  return job_.start([document = std::move(document), srgb] {
     MatchOutcome outcome;
     try {
       const Eigen::Vector3d target(srgb_decode(srgb(0)), srgb_decode(srgb(1)), srgb_decode(srgb(2)));
@@ -43,18 +36,8 @@ bool MatchJob::start(MaterialDocument document, const Eigen::Vector3d& srgb) {
     } catch (const std::exception& error) {
       outcome.line = std::string("not matched: ") + error.what();
     }
-    {
-      const std::lock_guard lock(mutex_);
-      outcome_ = std::move(outcome);
-    }
-    running_ = false;
+    return outcome;
   });
-  return true;
-}
-
-std::optional<MatchOutcome> MatchJob::take_outcome() {
-  const std::lock_guard lock(mutex_);
-  return std::exchange(outcome_, std::nullopt);
 }
 
 }  // namespace skinlayer

@@ -1,16 +1,13 @@
 // The previewer's "Match colour..." (app/material/color_match.h: 0.2-1.4 s on 2 cores), on a thread of its own so
-// that the window keeps drawing: one at a time, its outcome taken once when it ends. The thread is joined by the
-// destructor (RAII); a match cannot be cancelled (it changes nothing until its outcome is taken).
+// that the window keeps drawing (one_shot_job.h: one at a time, its outcome taken once when it ends).
 #pragma once
 
 #include <Eigen/Core>
-#include <atomic>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include "app/material/material_document.h"
+#include "app/window/one_shot_job.h"
 
 namespace skinlayer {
 
@@ -21,24 +18,16 @@ struct MatchOutcome {
 
 class MatchJob {
  public:
-  MatchJob() = default;
-  MatchJob(const MatchJob&) = delete;
-  MatchJob& operator=(const MatchJob&) = delete;
-  ~MatchJob();
-
   // Starts matching `document` to the sRGB-encoded colour `srgb`. Returns false, and starts nothing, while another
   // match runs.
   bool start(MaterialDocument document, const Eigen::Vector3d& srgb);
 
-  bool running() const { return running_.load(); }
+  bool running() const { return job_.running(); }
   // The outcome of a match that has ended since the last call, once.
-  std::optional<MatchOutcome> take_outcome();
+  std::optional<MatchOutcome> take_outcome() { return job_.take_outcome(); }
 
  private:
-  std::thread thread_;
-  std::atomic<bool> running_{false};
-  std::mutex mutex_;  // guards outcome_
-  std::optional<MatchOutcome> outcome_;
+  OneShotJob<MatchOutcome> job_;
 };
 
 }  // namespace skinlayer
