@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <complex>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -162,8 +163,18 @@ LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> sla
 
 LateralFrequencyResponse collimated_single_scattering_response(std::span<const LateralSlab> slabs,
                                                                const LateralTopInterface* top, double k,
-                                                               const LateralFrequencyResolution& resolution) {
-  return stack_response(slabs, 0.0, top, nullptr, k, resolution);
+                                                               const LateralFrequencyResolution& resolution,
+                                                               const LateralSmoothFace* bottom) {
+  // The faces let the light out as they do, and send none of it back.
+  std::optional<LateralTopInterface> letting_out;
+  if (top != nullptr) {
+    letting_out = *top;
+    for (Eigen::MatrixXd& mode : letting_out->reflection) mode.setZero();
+  }
+  std::optional<LateralSmoothFace> leaving;
+  if (bottom != nullptr) leaving = LateralSmoothFace{Eigen::VectorXd::Zero(bottom->exit.size()), bottom->exit};
+  return stack_response(slabs, 0.0, letting_out ? &*letting_out : nullptr, leaving ? &*leaving : nullptr, k,
+                        resolution);
 }
 
 LateralFrequencyResponse rough_top_lateral_response(double tau, double albedo, double g, const LateralTopInterface& top,

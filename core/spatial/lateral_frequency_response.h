@@ -50,10 +50,11 @@ LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> sla
                                                 const LateralSmoothFace* bottom = nullptr);
 
 // The first order in the albedos of a collimated beam (under an open top, or a smooth one): the beam scattered once,
-// then only streaming and leaving, with no bottom face to send it back.
+// then only streaming and leaving through the top's and the bottom's exits, neither face sending any of it back.
 LateralFrequencyResponse collimated_single_scattering_response(std::span<const LateralSlab> slabs,
                                                                const LateralTopInterface* top, double k,
-                                                               const LateralFrequencyResolution& resolution = {});
+                                                               const LateralFrequencyResolution& resolution = {},
+                                                               const LateralSmoothFace* bottom = nullptr);
 
 // One slab: tau the optical depth (+infinity: semi-infinite); albedo Omega in [0, 1); g the Henyey-Greenstein
 // asymmetry; k >= 0 in 1 / mean free path. Throws std::invalid_argument for values outside those ranges (Omega = 1 with

@@ -34,6 +34,7 @@ LateralTopInterface lateral_top_interface(const RoughDielectric& top, int ordina
   interface.source =
       kernels.t_source.kernel[0] *
       Eigen::Map<const Eigen::VectorXd>(incident.weights.data(), static_cast<Eigen::Index>(incident.size()));
+  if (incidence == Incidence::Normal) interface.source_single = kernels.t_source.single_scattering(0).col(0);
   const Eigen::Index n = kernels.quadrature.size();
   interface.exit.resize(n);
   for (Eigen::Index j = 0; j < n; ++j) {

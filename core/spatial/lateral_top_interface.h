@@ -26,6 +26,9 @@ struct LateralTopInterface {
   // t12: the downward node radiance that light of unit power per unit area leaves below the interface (1/sr). At
   // normal incidence, and averaged over diffuse incidence, it is uniform in azimuth: mode 0 alone.
   Eigen::VectorXd source;
+  // The part of `source` that the top's microfacet single scattering puts there, at normal incidence under a rough
+  // top (its lobe is known in closed form: microfacet_btdf); empty elsewhere.
+  Eigen::VectorXd source_single;
   // T_top,inside(mu_j): the fraction of the flux meeting the interface from inside along node j that leaves it.
   Eigen::VectorXd exit;
   // The interface's own multiply scattered reflection of the beam (under MicrofacetModel::Multiple, else 0): it leaves

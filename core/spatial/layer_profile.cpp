@@ -11,9 +11,11 @@
 #include "core/conventions.h"
 #include "core/material.h"
 #include "core/series/quadrature.h"
+#include "core/spatial/entering_radiance.h"
 #include "core/spatial/lateral_top_interface.h"
 #include "core/spatial/rough_top_single_scattering.h"
 #include "core/spatial/single_scattering_profile.h"
+#include "core/spatial/transmitted_low_orders.h"
 
 namespace skinlayer {
 namespace {
@@ -114,13 +116,14 @@ struct SolvedLayer {
       entry = open_top_interface(N, M, layer.incidence);
     }
     if (layer.smooth_bottom) bottom = lateral_smooth_face(*layer.smooth_bottom, N);
-    // Only the classic open slab has its transmitted single scattering in closed form: elsewhere a finite stack
-    // leaves light through its bottom, unscattered lobes and rings included, that is not taken apart yet.
-    if (entry && finite && !options.reflectance_only) {
+    // Light that enters as node radiance crosses a finite stack unscattered at every angle; a smooth bottom would send
+    // it back up as rings that the profile does not take apart yet.
+    if (entry && !entry->source.isZero() && layer.smooth_bottom) {
       throw ParameterError(
-          "profile: under a rough or smooth top, diffuse light, or in a stack, profiles are computed so far for "
-          "layers that end in a half-space (tau inf)");
+          "profile: a smooth bottom face is taken so far under an open or smooth top at normal incidence, not under a "
+          "rough top or in diffuse light");
     }
+    if (entry && finite) entering = EnteringRadiance(*entry, layer.top, N);
   }
   // The modes that frequency k needs: the k.s term couples mode m to m + 1 with strength k sin(theta) / 2, so at
   // low k the high modes carry nothing (§21.7).
@@ -134,26 +137,41 @@ struct SolvedLayer {
   LateralFrequencyResponse response(double k) const {
     return lateral_stack_response(slabs, entry ? &*entry : nullptr, k, resolution_at(k), bottom ? &*bottom : nullptr);
   }
-  // The discrete ordinates' own single scattering at k: R_1 and T_1.
+  // The discrete ordinates' own low orders at k: R_1, and T_1 plus the unscattered node radiance T_0 (§21.15).
   LateralFrequencyResponse single_scattering(double k) const {
     if (!entry) return collimated_single_scattering_response(slabs, nullptr, k, resolution_at(k));
     // Light entering as node radiance, in closed form per pair of eigenvalues; a collimated beam through the solve
-    // without scattering. Neither sends light back from a bottom face: that is multiple scattering's part.
-    double reflectance =
-        entry->source.isZero() ? 0.0 : rough_top_single_scattering_reflectance(slabs, *entry, k, resolution_at(k));
-    if (entry->collimated > 0.0) {
-      reflectance += collimated_single_scattering_response(slabs, &*entry, k, resolution_at(k)).reflectance;
+    // without scattering. Neither face sends light back: what it does is multiple scattering's part.
+    LateralFrequencyResponse orders;
+    if (!entry->source.isZero()) {
+      const RoughTopLowOrders node = rough_top_low_orders(slabs, *entry, k, resolution_at(k));
+      orders.reflectance = node.reflected_once;
+      orders.transmittance = node.transmitted_once + node.transmitted_unscattered;
     }
-    return {reflectance, 0.0};
+    if (entry->collimated > 0.0) {
+      const LateralFrequencyResponse beam =
+          collimated_single_scattering_response(slabs, &*entry, k, resolution_at(k), bottom ? &*bottom : nullptr);
+      orders.reflectance += beam.reflectance;
+      orders.transmittance += beam.transmittance;
+    }
+    return orders;
   }
-  // Single scattering's power through the annulus [r0, r1) of a face, and its density at r > 0, in closed form.
+  // The low orders' power through the annulus [r0, r1) of a face, and their density at r > 0, in closed form: single
+  // scattering on the top; on a finite stack's bottom the unscattered light too, continuous in angle (§21.15).
   double single_scattered_power(LayerFace face, double r0, double r1) const {
     if (!entry) return skinlayer::single_scattered_power(layer.tau, layer.albedo, layer.g, face, r0, r1);
-    return rough_top_single_scattered_power(slabs, *entry, options.resolution.ordinates, r0, r1);
+    if (face == LayerFace::Top) {
+      return rough_top_single_scattered_power(slabs, *entry, options.resolution.ordinates, r0, r1);
+    }
+    return unscattered_transmitted_power(slabs, *entering, layer.smooth_bottom, r0, r1) +
+           single_scattered_transmitted_power(slabs, *entering, layer.smooth_bottom, r0, r1);
   }
   double single_scattered_density(LayerFace face, double r) const {
     if (!entry) return skinlayer::single_scattered_density(layer.tau, layer.albedo, layer.g, face, r);
-    return rough_top_single_scattered_density(slabs, *entry, options.resolution.ordinates, r);
+    if (face == LayerFace::Top)
+      return rough_top_single_scattered_density(slabs, *entry, options.resolution.ordinates, r);
+    return unscattered_transmitted_density(slabs, *entering, layer.smooth_bottom, r) +
+           single_scattered_transmitted_density(slabs, *entering, layer.smooth_bottom, r);
   }
 
   ProfileLayer layer;
@@ -161,6 +179,7 @@ struct SolvedLayer {
   LayerProfileOptions options;
   std::optional<LateralTopInterface> entry;  // none: the collimated beam into one open slab (§21.4)
   std::optional<LateralSmoothFace> bottom;   // a smooth bottom face
+  std::optional<EnteringRadiance> entering;  // the entry's light, continuous in angle, under a finite stack
 };
 
 // The multiply scattered light's transforms, sampled and splined (§21.7), with the totals at k = 0.

@@ -126,8 +126,8 @@ std::complex<double> depth_integral(std::complex<double> rate, double tau) {
 
 }  // namespace
 
-double rough_top_single_scattering_reflectance(std::span<const LateralSlab> slabs, const LateralTopInterface& top,
-                                               double k, const LateralFrequencyResolution& resolution) {
+RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const LateralTopInterface& top, double k,
+                                       const LateralFrequencyResolution& resolution) {
   const int N = resolution.ordinates, M = resolution.azimuth_modes;
   check(slabs, top, N);
   if (!(k >= 0.0 && std::isfinite(k)) || static_cast<int>(top.reflection.size()) < M) {
@@ -135,6 +135,9 @@ double rough_top_single_scattering_reflectance(std::span<const LateralSlab> slab
   }
   const QuadratureRule q = double_gauss_half_range(N);
   const SlabDepths depths = slab_depths(slabs);
+  const double total_optical = depths.optical.back() + slabs.back().tau;
+  const double total_geometric = depths.geometric.back() + slabs.back().tau / slabs.back().relative_extinction;
+  const bool transmits = std::isfinite(total_optical);
   const Eigen::EigenSolver<Eigen::MatrixXd> eigen(lateral_mode_coupling(M));
   if (eigen.info() != Eigen::Success) throw std::runtime_error("rough-top single scattering: eigen-solve failed");
   const Eigen::MatrixXcd W = eigen.eigenvectors(), inverse = W.inverse();
@@ -151,40 +154,77 @@ double rough_top_single_scattering_reflectance(std::span<const LateralSlab> slab
     for (int a = 0; a < M; ++a) lateral(a, node) = k * sine * lambda(a) / mu;
   }
 
-  double reflectance = 0.0;
+  RoughTopLowOrders orders;
+  // Unscattered: node j's radiance streamed through the whole stack, mode 0 in and out.
+  if (transmits) {
+    for (int j = 0; j < N; ++j) {
+      std::complex<double> streamed = 0.0;
+      for (int b = 0; b < M; ++b) streamed += in(0, b) * std::exp(-total_geometric * lateral(b, j));
+      orders.transmitted_unscattered += 2.0 * kPi * q.weights[j] * q.nodes[j] * top.source(j) *
+                                        std::exp(-total_optical / q.nodes[j]) * streamed.real();
+    }
+  }
   Eigen::MatrixXcd depth(M, M), mixed(M, M);
   for (std::size_t l = 0; l < slabs.size(); ++l) {
     const LateralSlab& slab = slabs[l];
     if (slab.tau == 0.0 || slab.albedo == 0.0) continue;
     const PhaseMatrices phase = lateral_phase_matrices(slab.g, q, M);
     const double e = slab.relative_extinction, above = depths.optical[l], above_geometric = depths.geometric[l];
-    for (int i = 0; i < N; ++i) {
-      std::complex<double> up = 0.0;  // mode 0 of the once-scattered radiance leaving node i upward at the top
-      for (int j = 0; j < N; ++j) {
-        if (top.source(j) == 0.0) continue;
-        const double base = 1.0 / q.nodes[i] + 1.0 / q.nodes[j];
-        // Down to the slab and back (e^{-(T_l base + G_l lateral)}), then int_0^tau_l e^{-t (base + lateral / e_l)} dt.
-        for (int a = 0; a < M; ++a) {
-          for (int b = 0; b < M; ++b) {
-            const std::complex<double> sideways = lateral(a, i) + lateral(b, j);
-            depth(a, b) =
-                std::exp(-(above * base + above_geometric * sideways)) * depth_integral(base + sideways / e, slab.tau);
+    // Below the slab, for the light scattered down (finite stacks only).
+    const double below = transmits ? total_optical - above - slab.tau : 0.0;
+    const double below_geometric = transmits ? total_geometric - above_geometric - slab.tau / e : 0.0;
+    for (const bool up : {true, false}) {
+      if (!up && !transmits) continue;
+      const FourierKernel& scattering = up ? phase.opposite : phase.same;
+      for (int i = 0; i < N; ++i) {
+        std::complex<double> leaving = 0.0;  // mode 0 of the once-scattered radiance leaving along node i
+        for (int j = 0; j < N; ++j) {
+          if (top.source(j) == 0.0) continue;
+          const double mu_i = q.nodes[i], mu_j = q.nodes[j];
+          for (int a = 0; a < M; ++a) {
+            for (int b = 0; b < M; ++b) {
+              if (up) {
+                // Down to the slab and back (e^{-(T_l base + G_l lateral)}), then int_0^tau_l e^{-t (base + lateral /
+                // e_l)} dt, base = 1/mu_i + 1/mu_j.
+                const double base = 1.0 / mu_i + 1.0 / mu_j;
+                const std::complex<double> sideways = lateral(a, i) + lateral(b, j);
+                depth(a, b) = std::exp(-(above * base + above_geometric * sideways)) *
+                              depth_integral(base + sideways / e, slab.tau);
+              } else {
+                // Down along j to depth t in the slab, then down along i through the rest of the stack:
+                //   e^{-(T_l / mu_j + G_l lat_j)} e^{-(B_l / mu_i + G'_l lat_i)} int_0^tau_l e^{-t d_j - (tau_l - t)
+                //   d_i} dt,
+                // d the decay per optical depth in the slab; the integral is referred to the end where it is largest.
+                const std::complex<double> d_j = 1.0 / mu_j + lateral(b, j) / e, d_i = 1.0 / mu_i + lateral(a, i) / e;
+                const std::complex<double> outside = -(above / mu_j + above_geometric * lateral(b, j)) -
+                                                     (below / mu_i + below_geometric * lateral(a, i));
+                depth(a, b) = (d_j - d_i).real() >= 0.0
+                                  ? std::exp(outside - slab.tau * d_i) * depth_integral(d_j - d_i, slab.tau)
+                                  : std::exp(outside - slab.tau * d_j) * depth_integral(d_i - d_j, slab.tau);
+              }
+            }
           }
+          // sum_m pi_m out(a, m) in(m, b), pi_m = c_m a_j P^m(i, j): the scattering, diagonal in m.
+          mixed.setZero();
+          for (int m = 0; m < M; ++m) {
+            const double scatter =
+                fourier_azimuth_weight(m) * q.weights[j] * scattering[static_cast<std::size_t>(m)](i, j);
+            mixed.noalias() += scatter * out.col(m) * in.row(m);
+          }
+          leaving += top.source(j) * (depth.array() * mixed.array()).sum();
         }
-        // sum_m pi_m out(a, m) in(m, b), pi_m = c_m a_j P_opp^m(i, j): the scattering, diagonal in m.
-        mixed.setZero();
-        for (int m = 0; m < M; ++m) {
-          const double scatter =
-              fourier_azimuth_weight(m) * q.weights[j] * phase.opposite[static_cast<std::size_t>(m)](i, j);
-          mixed.noalias() += scatter * out.col(m) * in.row(m);
-        }
-        up += top.source(j) * (depth.array() * mixed.array()).sum();
+        // mu_i cancels the 1/mu_i of the source; nothing reflects below the stack, and everything leaves it there.
+        const double flux = 2.0 * kPi * q.weights[i] * slab.albedo * leaving.real();
+        (up ? orders.reflected_once : orders.transmitted_once) += (up ? top.exit(i) : 1.0) * flux;
       }
-      // mu_i cancels the 1/mu_i of the source.
-      reflectance += 2.0 * kPi * q.weights[i] * top.exit(i) * slab.albedo * up.real();
     }
   }
-  return reflectance;
+  return orders;
+}
+
+double rough_top_single_scattering_reflectance(std::span<const LateralSlab> slabs, const LateralTopInterface& top,
+                                               double k, const LateralFrequencyResolution& resolution) {
+  return rough_top_low_orders(slabs, top, k, resolution).reflected_once;
 }
 
 double rough_top_single_scattered_power(std::span<const LateralSlab> slabs, const LateralTopInterface& top,

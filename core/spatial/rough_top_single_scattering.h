@@ -31,6 +31,15 @@ namespace skinlayer {
 double rough_top_single_scattering_reflectance(std::span<const LateralSlab> slabs, const LateralTopInterface& top,
                                                double k, const LateralFrequencyResolution& resolution);
 
+// The same light's first order on the bottom of a finite stack, and its zeroth: the node radiance streamed down through
+// every slab without being scattered (§21.15), leaving an index-matched bottom. Reflected: as above. For a
+// semi-infinite stack both transmitted parts are 0.
+struct RoughTopLowOrders {
+  double reflected_once = 0.0, transmitted_once = 0.0, transmitted_unscattered = 0.0;
+};
+RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const LateralTopInterface& top, double k,
+                                       const LateralFrequencyResolution& resolution);
+
 // With the top's operators on `ordinates` nodes: the singly scattered power leaving the top through the annulus
 // r0 <= r < r1 (per unit incident power; r1 may be +infinity), and its density at r > 0 (1/mfp^2, growing like 1/r
 // as r -> 0). Over slab l the path integral is closed-form:

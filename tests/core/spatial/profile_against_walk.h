@@ -34,7 +34,7 @@ inline void expect_profile_matches_the_walk(const ProfileLayer& layer, const Mat
   LayerProfile profile = layer_profile(layer, in_mfp, profile_options);
   for (double& v : profile.reflectance) v *= mu_t * mu_t;
   for (double& v : profile.transmittance) v *= mu_t * mu_t;
-  const double tau = layer.tau;
+  const double tau = layer.slabs().back().tau;  // the last slab: a stack ending in a half-space transmits nothing
   std::vector<RadialBin> bins;
   for (const ExitSide side : {ExitSide::Reflected, ExitSide::Transmitted}) {
     for (std::size_t i = 0; i + 1 < edges.size(); ++i) bins.push_back({side, edges[i], edges[i + 1]});

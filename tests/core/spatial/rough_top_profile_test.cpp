@@ -195,18 +195,25 @@ TEST(RoughTopProfile, WhatItCannotTakeYetIsRefused) {
   LayerProfileOptions coarse;  // what is taken need not be accurate here
   coarse.resolution = {6, 4};
   coarse.frequencies = 8;
-  EXPECT_THROW(layer_profile_at(layer, radii, coarse), ParameterError);  // a finite layer
+  // A finite layer and a finite stack under a rough top, open or in diffuse light, transmit (§21.15).
+  EXPECT_GT(layer_profile_at(layer, radii, coarse).transmittance.front(), 0.0);
   layer.below = {LateralSlab{3.0, 0.9, 0.8, 1.0}};
-  EXPECT_THROW(layer_profile_at(layer, radii, coarse), ParameterError);  // a finite stack
-  layer.top.reset();
-  EXPECT_THROW(layer_profile_at(layer, radii, coarse), ParameterError);  // a finite stack, open top too
-  LayerProfileOptions reflected = coarse;
-  reflected.reflectance_only = true;  // unless only its reflectance is asked for
-  EXPECT_TRUE(layer_profile_at(layer, radii, reflected).transmittance.empty());
-  layer.below.back().tau = kInf;  // a stack ending in a half-space, under an open top or in diffuse light
-  EXPECT_GT(layer_profile_at(layer, radii, coarse).reflectance.front(), 0.0);
+  EXPECT_GT(layer_profile_at(layer, radii, coarse).transmittance.front(), 0.0);
   layer.incidence = Incidence::Diffuse;
-  EXPECT_GT(layer_profile_at(layer, radii, coarse).reflectance.front(), 0.0);
+  EXPECT_GT(layer_profile_at(layer, radii, coarse).transmittance.front(), 0.0);
+  LayerProfileOptions reflected = coarse;
+  reflected.reflectance_only = true;  // the transmittance left out when only the reflectance is asked for
+  EXPECT_TRUE(layer_profile_at(layer, radii, reflected).transmittance.empty());
+  // A smooth bottom under light that enters as radiance would send its unscattered rings back up: not yet.
+  layer.smooth_bottom = 1.0 / 1.4;
+  EXPECT_THROW(layer_profile_at(layer, radii, coarse), ParameterError);
+  layer.incidence = Incidence::Normal;
+  EXPECT_THROW(layer_profile_at(layer, radii, coarse), ParameterError);
+  layer.top.reset();  // under an open top the beam stays collimated: taken
+  EXPECT_GT(layer_profile_at(layer, radii, coarse).transmittance.front(), 0.0);
+  layer.smooth_bottom.reset();
+  layer.below.back().tau = kInf;
+  layer.incidence = Incidence::Diffuse;
   layer.smooth_top = 1.4;  // diffuse light through a smooth top: not yet
   EXPECT_THROW(layer_profile_at(layer, radii, coarse), std::invalid_argument);
 }

@@ -1,0 +1,74 @@
+// docs/model.md §21.15: the entering radiance, continuous in the polar angle.
+#include "core/spatial/entering_radiance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/conventions.h"
+
+namespace skinlayer {
+
+std::vector<std::pair<double, double>> angle_panels(double from, double to, double fine, double widest) {
+  std::vector<double> breaks = {from, to};
+  if (fine > 0.0) {
+    for (const double f : {0.5, 1.0, 2.0, 4.0}) breaks.push_back(from + f * fine);
+  }
+  std::sort(breaks.begin(), breaks.end());
+  std::vector<std::pair<double, double>> panels;
+  for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
+    const double a = breaks[b], c = std::min(breaks[b + 1], to);
+    if (!(c > a) || a >= to) continue;
+    const int pieces = std::max(1, static_cast<int>(std::ceil((c - a) / widest)));
+    for (int p = 0; p < pieces; ++p) panels.emplace_back(a + (c - a) * p / pieces, a + (c - a) * (p + 1) / pieces);
+  }
+  return panels;
+}
+
+EnteringRadiance::EnteringRadiance(const LateralTopInterface& top, const std::optional<RoughDielectric>& rough,
+                                   int ordinates)
+    : collimated_(top.collimated) {
+  if (top.source.size() != ordinates) throw std::invalid_argument("EnteringRadiance: the top has another resolution");
+  const QuadratureRule q = double_gauss_half_range(ordinates);
+  const bool lobe = rough && top.source_single.size() == ordinates;
+  if (lobe) {
+    lobe_ = *rough;
+    lobe_width_ = refracted_lobe_width(*rough);
+  }
+  // The nodes ascending in mu (double_gauss_half_range's order is not assumed).
+  std::vector<int> order(static_cast<std::size_t>(ordinates));
+  for (int j = 0; j < ordinates; ++j) order[static_cast<std::size_t>(j)] = j;
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return q.nodes[a] < q.nodes[b]; });
+  for (const int j : order) {
+    nodes_.push_back(q.nodes[static_cast<std::size_t>(j)]);
+    broad_.push_back(top.source(j) - (lobe ? top.source_single(j) : 0.0));
+  }
+  if (top.source.isZero()) return;
+  const double fine = lobe ? lobe_width_ : 0.0;
+  const QuadratureRule unit = gauss_legendre(8, 0.0, 1.0);
+  for (const auto& [a, b] : angle_panels(0.0, 0.5 * kPi, fine, 0.25)) {
+    for (std::size_t p = 0; p < unit.nodes.size(); ++p) {
+      const double theta = a + (b - a) * unit.nodes[p], mu = std::cos(theta);
+      const double power = 2.0 * kPi * mu * (*this)(mu)*std::sin(theta) * (b - a) * unit.weights[p];
+      if (power <= 0.0) continue;
+      directions_.nodes.push_back(mu);
+      directions_.weights.push_back(power);
+    }
+  }
+}
+
+double EnteringRadiance::operator()(double mu) const {
+  double value = 0.0;
+  if (lobe_) {
+    const double sine = std::sqrt(std::max(0.0, 1.0 - mu * mu));
+    value += microfacet_btdf(*lobe_, Vec3(0.0, 0.0, 1.0), Vec3(sine, 0.0, -mu));
+  }
+  // The broad part, linear between the nodes, held beyond the end ones.
+  if (mu <= nodes_.front()) return value + broad_.front();
+  if (mu >= nodes_.back()) return value + broad_.back();
+  const std::size_t hi = static_cast<std::size_t>(std::upper_bound(nodes_.begin(), nodes_.end(), mu) - nodes_.begin());
+  const double t = (mu - nodes_[hi - 1]) / (nodes_[hi] - nodes_[hi - 1]);
+  return value + (1.0 - t) * broad_[hi - 1] + t * broad_[hi];
+}
+
+}  // namespace skinlayer
