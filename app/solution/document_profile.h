@@ -1,7 +1,8 @@
 // A material document's spatial profile (core/spatial/layer_profile.h) per colour channel, in the document's
 // length unit: what `skinlayer profile` writes and the Python module's Solution.profile returns, through the same
-// code. So far, at normal incidence, for albedos below 1 and nothing reflecting below: one layer without interfaces,
-// or layers that end in a half-space under a rough top (a skin among them, mixed from its wavelengths).
+// code. So far for albedos below 1 and nothing reflecting below: layers without interfaces between them under an open
+// or rough top, finite or ending in a half-space (a skin among them, mixed from its wavelengths), lit by a pencil beam
+// at normal incidence or diffusely.
 #pragma once
 
 #include <functional>
@@ -24,9 +25,10 @@ struct DocumentProfile {
 };
 
 // The means over the annuli [edges[i], edges[i + 1]) (increasing, from >= 0, in the unit), or the values at radii
-// (> 0, in the unit). Throws ParameterError, naming what it cannot take (a finite layer or stack under a top
-// interface, a bottom interface or base, a stack without a rough top or without every layer's mu_t, albedo 1), and
-// for bad positions.
+// (> 0, in the unit). Throws ParameterError, naming what it cannot take (a rough bottom interface or a base under a
+// finite stack, interfaces between layers, a stack without every layer's mu_t, albedo 1), and for bad positions.
+// Where the light enters as radiance spread over directions and leaves a finite stack's bottom, the transmittance is
+// computed on 24 nodes at least. With options.reflectance_only the transmittance is left empty.
 // The command's resolution: 12 nodes, 16 modes, 40 frequencies.
 LayerProfileOptions document_profile_options();
 

@@ -29,6 +29,7 @@ SpreadProfile spread_profile(const MaterialDocument& document, bool preview, con
   request.options.resolution = {8, 12};
   request.options.frequencies = 32;
   request.options.parallel_for = parallel_for;
+  request.options.reflectance_only = true;  // the sphere shows the light leaving its surface
   request.preview = preview;
   SpreadProfile profile;
   profile.edges_mm = spread_edges();
