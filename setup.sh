@@ -101,6 +101,7 @@ sanitize_skipped_tests=(
   'FiniteStackTransmittance\.RoughTopOverAFiniteSlabMatchesTheWalk'        # its closed forms and k-space checks
   'FiniteStackTransmittance\.RougherTopOverAnAbsorbingSlabMatchesTheWalk'
   'FiniteStackTransmittance\.TwoLayerStackInMillimetresMatchesTheWalk'
+  'InternalFacesProfile\.StackWithAnInterfaceMatchesTheWalk'                # its identity and refusals
   'ProfileCommand\.FiniteLayerUnderARoughTopTransmitsOnFinerOrdinates'     # the other ProfileCommand ones
 )
 sanitize_skipped="^($(IFS='|'; echo "${sanitize_skipped_tests[*]}"))$"

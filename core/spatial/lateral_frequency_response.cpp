@@ -12,6 +12,7 @@
 
 #include "core/conventions.h"
 #include "core/series/quadrature.h"
+#include "core/spatial/lateral_internal_face.h"
 #include "core/spatial/lateral_slab_modes.h"
 #include "core/spatial/lateral_top_interface.h"
 
@@ -29,6 +30,7 @@ struct SolvedSlab {
   int offset = 0;  // the first unknown: decaying modes (weights referred to the top), then growing ones (to the bottom)
   int count = 0;   // n, or n / 2 for a semi-infinite slab (decaying only)
   double beam = 0;  // the collimated beam's flux at the slab's top (open or smooth top), else 0
+  const LateralInternalFace* face = nullptr;  // a rough interface above the slab (not the first's), else none
 
   // Column c's solution at node row `row` and depth t in the slab.
   std::complex<double> column(int c, int row, double t) const {
@@ -43,7 +45,8 @@ struct SolvedSlab {
 // of a collimated beam, whose source keeps its albedo).
 LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, double operator_scale,
                                         const LateralTopInterface* top, const LateralSmoothFace* bottom, double k,
-                                        const LateralFrequencyResolution& resolution) {
+                                        const LateralFrequencyResolution& resolution,
+                                        std::span<const std::optional<LateralInternalFace>> faces = {}) {
   check(!slabs.empty(), "needs at least one slab");
   check(k >= 0.0 && std::isfinite(k), "k must be finite and >= 0");
   check(resolution.ordinates >= 2 && resolution.azimuth_modes >= 1, "resolution needs >= 2 ordinates and >= 1 mode");
@@ -60,6 +63,17 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
   }
   check(bottom == nullptr || bottom->reflection.size() == resolution.ordinates,
         "the bottom face was built for another resolution");
+  check(faces.empty() || faces.size() == slabs.size(), "needs one entry of faces per slab");
+  for (std::size_t l = 0; l < faces.size(); ++l) {
+    if (!faces[l]) continue;
+    check(l > 0, "the first slab's face is the top");
+    check(slabs[l].tau > 0.0, "a slab under an interface needs tau > 0");
+    check(static_cast<int>(faces[l]->reflect_above.size()) >= resolution.azimuth_modes &&
+              faces[l]->reflect_above.front().rows() == resolution.ordinates,
+          "an interface between slabs was built for another resolution");
+    check(top != nullptr && top->collimated == 0.0,
+          "interfaces between slabs take light that enters as node radiance (a rough top, or diffuse light)");
+  }
   const double collimated = top ? top->collimated : 1.0;  // the beam's flux inside, at the top
   const QuadratureRule q = double_gauss_half_range(resolution.ordinates);
   const LateralLayout layout{resolution.ordinates, resolution.azimuth_modes};
@@ -68,9 +82,11 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
   std::vector<SolvedSlab> solved;
   int unknowns = 0;
   double above = 0.0;  // optical depth above the slab
-  for (const LateralSlab& slab : slabs) {
+  for (std::size_t l = 0; l < slabs.size(); ++l) {
+    const LateralSlab& slab = slabs[l];
     if (slab.tau == 0.0) continue;
     SolvedSlab s;
+    s.face = faces.empty() || !faces[l] ? nullptr : &*faces[l];
     // k is per mean free path of the first slab; in this slab's own it is k mu_t,first / mu_t.
     s.modes = lateral_slab_modes(operator_scale * slab.albedo, collimated > 0.0 ? slab.albedo : 0.0, slab.g,
                                  k / slab.relative_extinction, q, M);
@@ -113,10 +129,39 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
   }
   for (std::size_t l = 0; l + 1 < solved.size(); ++l) {
     const SolvedSlab &upper = solved[l], &lower = solved[l + 1];
-    for (int row = 0; row < n; ++row) {
-      for (int c = 0; c < upper.count; ++c) B(equation, upper.offset + c) = upper.column(c, row, upper.tau);
-      for (int c = 0; c < lower.count; ++c) B(equation, lower.offset + c) = -lower.column(c, row, 0.0);
-      rhs(equation++) = lower.particular(row, 0.0) - upper.particular(row, upper.tau);
+    if (lower.face == nullptr) {
+      for (int row = 0; row < n; ++row) {
+        for (int c = 0; c < upper.count; ++c) B(equation, upper.offset + c) = upper.column(c, row, upper.tau);
+        for (int c = 0; c < lower.count; ++c) B(equation, lower.offset + c) = -lower.column(c, row, 0.0);
+        rhs(equation++) = lower.particular(row, 0.0) - upper.particular(row, upper.tau);
+      }
+      continue;
+    }
+    // A rough interface between them, mode by mode (lateral_internal_face.h): up-going above is R_a (down above) +
+    // T_up (up below), down-going below is R_b (up below) + T_down (down above). No collimated beam reaches it.
+    const LateralInternalFace& face = *lower.face;
+    for (int m = 0; m < M; ++m) {
+      const std::size_t mode = static_cast<std::size_t>(m);
+      for (const bool up : {true, false}) {
+        const SolvedSlab& own = up ? upper : lower;  // the side whose outgoing radiance the row sets
+        const SolvedSlab& other = up ? lower : upper;
+        const double own_depth = up ? upper.tau : 0.0, other_depth = up ? 0.0 : upper.tau;
+        const Eigen::MatrixXd& reflect = up ? face.reflect_above[mode] : face.reflect_below[mode];
+        const Eigen::MatrixXd& transmit = up ? face.transmit_up[mode] : face.transmit_down[mode];
+        for (int i = 0; i < N; ++i) {
+          const int row = layout.at(m, up ? 1 : 0, i);
+          for (int c = 0; c < own.count; ++c) B(equation, own.offset + c) = own.column(c, row, own_depth);
+          for (int j = 0; j < N; ++j) {
+            const int towards = layout.at(m, up ? 0 : 1, j);  // the face: down above it, up below it
+            const int from = layout.at(m, up ? 1 : 0, j);     // through it: up from below, down from above
+            for (int c = 0; c < own.count; ++c)
+              B(equation, own.offset + c) -= reflect(i, j) * own.column(c, towards, own_depth);
+            for (int c = 0; c < other.count; ++c)
+              B(equation, other.offset + c) -= transmit(i, j) * other.column(c, from, other_depth);
+          }
+          ++equation;
+        }
+      }
     }
   }
   const SolvedSlab& last = solved.back();
@@ -157,8 +202,9 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
 
 LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> slabs, const LateralTopInterface* top,
                                                 double k, const LateralFrequencyResolution& resolution,
-                                                const LateralSmoothFace* bottom) {
-  return stack_response(slabs, 1.0, top, bottom, k, resolution);
+                                                const LateralSmoothFace* bottom,
+                                                std::span<const std::optional<LateralInternalFace>> faces) {
+  return stack_response(slabs, 1.0, top, bottom, k, resolution, faces);
 }
 
 LateralFrequencyResponse collimated_single_scattering_response(std::span<const LateralSlab> slabs,

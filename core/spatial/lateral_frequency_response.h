@@ -9,12 +9,16 @@
 // R(k) and T(k), the scattered light leaving the top and the bottom per unit incident power, are the Hankel
 // transforms of the profiles: R(k) = int_0^inf R(r) J0(k r) 2 pi r dr, so R(0) is the subsurface reflectance.
 //
-// A stack of homogeneous slabs (lateral_slab_modes.h) with no interfaces between them, and below it an
-// index-matched half-space or none. Above it: no interface (eta = 1, the open layer) or a rough one
-// (lateral_top_interface.h), through the BSDF's own operators. Normal incidence.
+// A stack of homogeneous slabs (lateral_slab_modes.h), index-matched or with rough interfaces between them
+// (lateral_internal_face.h), and below it an index-matched half-space, nothing or a smooth face. Above it: no
+// interface (eta = 1, the open layer), a rough one or a smooth one (lateral_top_interface.h), through the BSDF's own
+// operators. Light at normal incidence or diffuse.
 #pragma once
 
+#include <optional>
 #include <span>
+
+#include "core/spatial/lateral_internal_face.h"
 
 namespace skinlayer {
 
@@ -44,10 +48,12 @@ struct LateralSlab {
 // The stack's response at k (1 / the first slab's mean free path) under an open top (top null: a collimated beam
 // scattered in each slab with its own albedo), a rough one, diffuse light, or a smooth top (lateral_top_interface.h,
 // built for `resolution`), over an index-matched half-space or a smooth bottom face (bottom, for a finite stack).
-// Throws std::invalid_argument for values outside the ranges above.
+// faces: empty, or per slab the rough interface above it (lateral_internal_face.h; none above the first), where the
+// light enters as node radiance. Throws std::invalid_argument for values outside the ranges above.
 LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> slabs, const LateralTopInterface* top,
                                                 double k, const LateralFrequencyResolution& resolution = {},
-                                                const LateralSmoothFace* bottom = nullptr);
+                                                const LateralSmoothFace* bottom = nullptr,
+                                                std::span<const std::optional<LateralInternalFace>> faces = {});
 
 // The first order in the albedos of a collimated beam (under an open top, or a smooth one): the beam scattered once,
 // then only streaming and leaving through the top's and the bottom's exits, neither face sending any of it back.

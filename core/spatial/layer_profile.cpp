@@ -12,6 +12,7 @@
 #include "core/material.h"
 #include "core/series/quadrature.h"
 #include "core/spatial/entering_radiance.h"
+#include "core/spatial/lateral_internal_face.h"
 #include "core/spatial/lateral_top_interface.h"
 #include "core/spatial/rough_top_single_scattering.h"
 #include "core/spatial/single_scattering_profile.h"
@@ -108,7 +109,7 @@ struct SolvedLayer {
       throw std::invalid_argument("layer_profile: diffuse light through a smooth top is not computed yet");
     }
     if (layer.top) {
-      entry = lateral_top_interface(*layer.top, N, M, layer.incidence);
+      entry = lateral_top_interface(*layer.top, N, M, layer.incidence, options.interface_azimuths);
     } else if (layer.smooth_top) {
       entry = smooth_top_interface(*layer.smooth_top, N, M);
     } else if (layer.incidence == Incidence::Diffuse || slabs.size() > 1 || layer.smooth_bottom) {
@@ -124,6 +125,33 @@ struct SolvedLayer {
           "rough top or in diffuse light");
     }
     if (entry && finite) entering = EnteringRadiance(*entry, layer.top, N);
+    take_faces(finite);
+  }
+  // The interfaces between slabs (§21.16), their operators built once; `upper` ends at the first of them.
+  void take_faces(bool finite) {
+    if (!layer.faces.empty() && layer.faces.size() != layer.below.size()) {
+      throw std::invalid_argument("layer_profile: faces needs one entry per slab below the first");
+    }
+    upper = slabs;
+    for (std::size_t l = 0; l < layer.faces.size(); ++l) {
+      if (!layer.faces[l]) continue;
+      if (!entry || entry->collimated > 0.0) {
+        throw ParameterError(
+            "profile: interfaces between layers are taken so far where the light enters spread over directions: "
+            "under a rough top, or in diffuse light");
+      }
+      if (finite && !options.reflectance_only) {
+        throw ParameterError(
+            "profile: the light through an interface between layers and out of the bottom is not computed yet; the "
+            "stack must end in a half-space (tau inf)");
+      }
+      if (faces.empty()) {
+        faces.resize(slabs.size());
+        upper.assign(slabs.begin(), slabs.begin() + static_cast<std::ptrdiff_t>(l) + 1);
+      }
+      faces[l + 1] = lateral_internal_face(*layer.faces[l], options.resolution.ordinates,
+                                           options.resolution.azimuth_modes, options.interface_azimuths);
+    }
   }
   // The modes that frequency k needs: the k.s term couples mode m to m + 1 with strength k sin(theta) / 2, so at
   // low k the high modes carry nothing (§21.7).
@@ -135,7 +163,8 @@ struct SolvedLayer {
     return {options.resolution.ordinates, std::min(options.resolution.azimuth_modes, needed)};
   }
   LateralFrequencyResponse response(double k) const {
-    return lateral_stack_response(slabs, entry ? &*entry : nullptr, k, resolution_at(k), bottom ? &*bottom : nullptr);
+    return lateral_stack_response(slabs, entry ? &*entry : nullptr, k, resolution_at(k), bottom ? &*bottom : nullptr,
+                                  faces);
   }
   // The discrete ordinates' own low orders at k: R_1, and T_1 plus the unscattered node radiance T_0 (§21.15).
   LateralFrequencyResponse single_scattering(double k) const {
@@ -144,7 +173,9 @@ struct SolvedLayer {
     // without scattering. Neither face sends light back: what it does is multiple scattering's part.
     LateralFrequencyResponse orders;
     if (!entry->source.isZero()) {
-      const RoughTopLowOrders node = rough_top_low_orders(slabs, *entry, k, resolution_at(k));
+      // Above the first interface between slabs: what is scattered once below it crossed that interface, is no longer
+      // singular at the beam (it leaves from at least the interface's depth), and stays in the k-space part.
+      const RoughTopLowOrders node = rough_top_low_orders(upper, *entry, k, resolution_at(k));
       orders.reflectance = node.reflected_once;
       orders.transmittance = node.transmitted_once + node.transmitted_unscattered;
     }
@@ -161,7 +192,7 @@ struct SolvedLayer {
   double single_scattered_power(LayerFace face, double r0, double r1) const {
     if (!entry) return skinlayer::single_scattered_power(layer.tau, layer.albedo, layer.g, face, r0, r1);
     if (face == LayerFace::Top) {
-      return rough_top_single_scattered_power(slabs, *entry, options.resolution.ordinates, r0, r1);
+      return rough_top_single_scattered_power(upper, *entry, options.resolution.ordinates, r0, r1);
     }
     return unscattered_transmitted_power(slabs, *entering, layer.smooth_bottom, r0, r1) +
            single_scattered_transmitted_power(slabs, *entering, layer.smooth_bottom, r0, r1);
@@ -169,7 +200,7 @@ struct SolvedLayer {
   double single_scattered_density(LayerFace face, double r) const {
     if (!entry) return skinlayer::single_scattered_density(layer.tau, layer.albedo, layer.g, face, r);
     if (face == LayerFace::Top)
-      return rough_top_single_scattered_density(slabs, *entry, options.resolution.ordinates, r);
+      return rough_top_single_scattered_density(upper, *entry, options.resolution.ordinates, r);
     return unscattered_transmitted_density(slabs, *entering, layer.smooth_bottom, r) +
            single_scattered_transmitted_density(slabs, *entering, layer.smooth_bottom, r);
   }
@@ -180,6 +211,8 @@ struct SolvedLayer {
   std::optional<LateralTopInterface> entry;  // none: the collimated beam into one open slab (§21.4)
   std::optional<LateralSmoothFace> bottom;   // a smooth bottom face
   std::optional<EnteringRadiance> entering;  // the entry's light, continuous in angle, under a finite stack
+  std::vector<std::optional<LateralInternalFace>> faces;  // per slab, the interface above it; empty: none
+  std::vector<LateralSlab> upper;  // the slabs above the first interface between slabs (all of them without one)
 };
 
 // The multiply scattered light's transforms, sampled and splined (§21.7), with the totals at k = 0.

@@ -26,8 +26,8 @@
 
 namespace skinlayer {
 
-// The first slab, its top, and the slabs below it (without interfaces between them; lengths in the first slab's mean
-// free paths, each slab's relative extinction saying how its own compare).
+// The first slab, its top, and the slabs below it (lengths in the first slab's mean free paths, each slab's relative
+// extinction saying how its own compare), with the interfaces between them.
 struct ProfileLayer {
   double tau = 0.0;                                   // optical depth; +infinity: semi-infinite
   double albedo = 0.0;                                // Omega in [0, 1)
@@ -38,6 +38,10 @@ struct ProfileLayer {
   // Smooth (Fresnel) faces instead (§21.14): the top's relative index n_layer / n_above, and under a finite stack the
   // bottom's n_below / n_layer. Unset: none (or the rough `top`).
   std::optional<double> smooth_top = std::nullopt, smooth_bottom = std::nullopt;
+  // Rough interfaces between slabs (§21.16): empty, or one per slab of `below`, the interface above it (eta = n_slab /
+  // n_above, != 1), unset where the two are index-matched. They take light that enters as node radiance (a rough top,
+  // or diffuse light) and a stack that ends in a half-space, or its reflectance alone.
+  std::vector<std::optional<RoughDielectric>> faces = {};
 
   std::vector<LateralSlab> slabs() const;  // all of them, top to bottom
 };
@@ -52,6 +56,10 @@ struct LayerProfileOptions {
   bool adaptive_modes = true;
   // The caller's parallel-for (core/parallel_for.h): the frequencies are solved side by side through it.
   ParallelFor parallel_for = {};
+  // The azimuth samples the interfaces' operators are projected on (lateral_top_interface, lateral_internal_face). The
+  // BSDF solve picks its own per material (choose_resolution's interface_azimuths, 49 and up); with its number the
+  // profile's R(0) is the solve's to round-off, and 97 is converged within 10^-8 for sigma >= 0.3.
+  int interface_azimuths = 97;
   // true: the transmittance is not computed (left empty). Light that enters spread over directions (a rough top,
   // diffuse light) needs finer ordinates for its transmittance than for its reflectance: 24 nodes keep it within 2%
   // of the walk where 12 leave 4.7% (docs/model.md §21.15).
