@@ -12,9 +12,9 @@ namespace skinlayer {
 namespace {
 
 // One line naming what the profile cannot take yet, or nothing for a material it can: albedos below 1, an
-// index-matched half-space or nothing below, and layers without interfaces between them, each with its extinction when
-// there are several.
-void require_profile_layer(const Material& m) {
+// index-matched half-space or nothing below, layers each with its extinction when there are several, and interfaces
+// between them only under a rough top or in diffuse light, in a stack that ends in a half-space.
+void require_profile_layer(const Material& m, Incidence incidence) {
   std::string why;
   const bool stack = m.layer_count() > 1;
   const bool ends_in_half_space = std::isinf(stack ? m.below.back().tau : m.tau);
@@ -22,9 +22,15 @@ void require_profile_layer(const Material& m) {
                                                        [](const StackedLayer& l) { return l.extinction.has_value(); });
   const bool albedo_below_1 = m.albedo < 1.0 && std::all_of(m.below.begin(), m.below.end(),
                                                             [](const StackedLayer& l) { return l.albedo < 1.0; });
-  if (stack &&
-      std::any_of(m.below.begin(), m.below.end(), [](const StackedLayer& l) { return l.interface.has_value(); })) {
-    why = "it has an interface between its layers";
+  const bool faces = std::any_of(m.below.begin(), m.below.end(), [](const StackedLayer& l) {
+    return l.interface.has_value() && l.interface->eta != 1.0;
+  });
+  if (faces && m.eta == 1.0 && incidence == Incidence::Normal) {
+    why =
+        "it has an interface between its layers under no top interface (--eta 1), which the beam reaches "
+        "unscattered";
+  } else if (faces && !ends_in_half_space) {
+    why = "it has an interface between its layers over a finite stack (its last layer needs tau=inf)";
   } else if (stack && !all_lengths) {
     why = "its layers do not all have their extinction (mu_t=, 1/mm), which relates their lengths";
   } else if (m.bottom.kind == BottomKind::Lambert && !ends_in_half_space) {
@@ -38,8 +44,8 @@ void require_profile_layer(const Material& m) {
   if (why.empty()) return;
   throw ParameterError(
       "profile: spatial profiles are computed so far for albedos below 1 over an index-matched bottom (--bottom "
-      "matched) or a half-space (--T 0, or a last layer with tau=inf), with no interfaces between layers, and this "
-      "material cannot be: " +
+      "matched) or a half-space (--T 0, or a last layer with tau=inf), with interfaces between layers only under a "
+      "rough top over a half-space, and this material cannot be: " +
       why);
 }
 
@@ -62,7 +68,7 @@ LayerProfileOptions options_for(const Material& m, const ProfileRequest& request
 // a skin: its wavelengths).
 ColorChannels profile_solves(const MaterialDocument& document, const ProfileRequest& request) {
   ColorChannels solves = color_channels(document, request.preview);
-  for (const Material& material : solves.materials) require_profile_layer(material);
+  for (const Material& material : solves.materials) require_profile_layer(material, request.incidence);
   return solves;
 }
 
@@ -73,6 +79,10 @@ ProfileLayer profile_layer(const Material& m, Incidence incidence) {
   if (m.eta != 1.0) layer.top = top_interface(m);
   for (const StackedLayer& below : m.below) {
     layer.below.push_back({below.tau, below.albedo, below.g, *below.extinction / *m.extinction});
+    const bool face = below.interface && below.interface->eta != 1.0;
+    layer.faces.push_back(
+        face ? std::optional(RoughDielectric{below.interface->eta, below.interface->sigma, m.microfacet})
+             : std::nullopt);
   }
   return layer;
 }

@@ -173,6 +173,27 @@ TEST(ProfileCommand, FiniteLayerUnderARoughTopTransmitsOnFinerOrdinates) {
   }
 }
 
+// A rough interface between two layers, under a rough top: the core's profile with the interface's operators.
+TEST(ProfileCommand, InterfaceBetweenLayersIsTheCoresProfile) {
+  const ProcessResult result = profile({"--sigma", "0.35", "--layer", "tau=1,albedo=0.9,g=0.8,mu_t=20", "--layer",
+                                        "tau=inf,albedo=0.99,g=0.8,mu_t=40,sigma=0.3,eta=1.1", "--radii", "0.05,0.2"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const CsvOutput csv = parse_csv_output(result.out);
+  ASSERT_EQ(csv.rows.size(), 2u);
+  Material m;
+  m.sigma = 0.35;
+  ProfileLayer layer{1.0, 0.9, 0.8};
+  layer.top = top_interface(m);
+  layer.below = {LateralSlab{kInf, 0.99, 0.8, 2.0}};
+  layer.faces = {RoughDielectric{1.1, 0.3, m.microfacet}};
+  const double radii[] = {0.05 * 20.0, 0.2 * 20.0};  // mm in the first layer's mean free paths
+  const LayerProfile expected = layer_profile_at(layer, radii, command_options());
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double per_mm2 = expected.reflectance[i] * 400.0;
+    EXPECT_NEAR(csv.rows[i][1], per_mm2, 1e-12 * per_mm2);
+  }
+}
+
 TEST(ProfileCommand, WhatItCannotTakeIsOneLine) {
   const std::vector<std::string> open = {"--eta", "1", "--bottom", "matched", "--albedo", "0.9"};
   const auto with = [&](std::vector<std::string> more) {
@@ -188,6 +209,13 @@ TEST(ProfileCommand, WhatItCannotTakeIsOneLine) {
   EXPECT_TRUE(
       failed_with_one_line(profile({"--layer", "tau=0.5,albedo=0.9,g=0.5", "--layer", "tau=inf,albedo=0.9,g=0.5"}), 2,
                            {"extinction", "mu_t="}));
+  EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--layer", "tau=1,albedo=0.9,g=0.8,mu_t=20", "--layer",
+                                            "tau=inf,albedo=0.99,g=0.8,mu_t=40,sigma=0.3,eta=1.1"}),
+                                   2, {"interface between its layers", "--eta 1"}));
+  EXPECT_TRUE(
+      failed_with_one_line(profile({"--layer", "tau=1,albedo=0.9,g=0.8,mu_t=20", "--layer",
+                                    "tau=2,albedo=0.99,g=0.8,mu_t=40,sigma=0.3,eta=1.1", "--bottom", "matched"}),
+                           2, {"interface between its layers", "finite stack", "tau=inf"}));
   EXPECT_TRUE(failed_with_one_line(with({"--radii", "0,1"}), 2, {"radii", "'0'", "> 0"}));
   EXPECT_TRUE(failed_with_one_line(with({"--radii", "-1"}), 2, {"radii", "> 0"}));
   EXPECT_TRUE(failed_with_one_line(with({"--annuli", "0.1"}), 2, {"annuli", "DR:N"}));
