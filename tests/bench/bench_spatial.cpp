@@ -1,5 +1,5 @@
-// Spatially resolved transport (core/spatial/, docs/model.md §21), one thread.
-//   Run: cmake --build build --target bench && build/tests/bench/bench_spatial
+// Spatially resolved transport (core/spatial/, docs/model.md §21), one thread; part of bench_core.
+//   Run: cmake --build build --target bench && build/tests/bench/bench_core --benchmark_filter=Lateral\|Profile
 // Issue 43's targets are 50 ms for one channel's profile at 256 radii and 1.5 s for a 31-wavelength skin; these are
 // the numbers that work stands at (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
@@ -65,5 +65,3 @@ BENCHMARK(BM_SkinWavelengthProfile)->Arg(16)->Arg(24)->Arg(40)->Iterations(1)->U
 
 }  // namespace
 }  // namespace skinlayer::bench
-
-BENCHMARK_MAIN();
