@@ -8,6 +8,9 @@
 #include <limits>
 #include <vector>
 
+#include "app/material/material_document.h"
+#include "app/process/parallel_for.h"
+#include "app/solution/document_profile.h"
 #include "core/interfaces/layer_interfaces.h"
 #include "core/skin/skin_optics.h"
 #include "core/spatial/lateral_frequency_response.h"
@@ -62,6 +65,32 @@ void BM_SkinWavelengthProfile(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(layer_profile_at(layer, radii, options));
 }
 BENCHMARK(BM_SkinWavelengthProfile)->Arg(16)->Arg(24)->Arg(40)->Iterations(1)->Unit(benchmark::kMillisecond);
+
+// The whole default skin as `skinlayer profile --skin` computes it: 31 wavelengths at 256 radii from 0.01 to 5 mm,
+// on both cores through the executables' parallel-for (issue 43's target: 1.5 s).
+void BM_SkinProfile(benchmark::State& state) {
+  MaterialDocument document;
+  document.skin = SkinParameters{};
+  std::vector<double> radii;
+  for (int i = 0; i < 256; ++i) radii.push_back(0.01 * std::pow(500.0, i / 255.0));
+  ProfileRequest request;
+  request.options.parallel_for = parallel_for_threads;
+  for (auto _ : state) benchmark::DoNotOptimize(document_profile_at_radii(document, radii, request));
+}
+BENCHMARK(BM_SkinProfile)->Iterations(1)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+// A finite slab (tau 1, Omega 0.9, g 0.8) under a sigma 0.3 top, both faces in 15 annuli, on the 24 nodes its
+// transmittance takes (docs/model.md §21.15), one thread.
+void BM_FiniteSlabProfile(benchmark::State& state) {
+  ProfileLayer layer{1.0, 0.9, 0.8};
+  layer.top = RoughDielectric{1.4, 0.3};
+  const std::vector<double> edges = {0.0, 0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, 0.8, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0};
+  LayerProfileOptions options;
+  options.resolution = {24, 16};
+  options.frequencies = 40;
+  for (auto _ : state) benchmark::DoNotOptimize(layer_profile(layer, edges, options));
+}
+BENCHMARK(BM_FiniteSlabProfile)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace skinlayer::bench

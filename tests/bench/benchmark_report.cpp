@@ -344,6 +344,28 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
                     seconds / solve_seconds);
   }
 
+  md << "\n## Where light travels under the surface: the spatial profile\n\n"
+     << "The spatial profile (docs/model.md §21, tests/bench/bench_spatial.cpp), one thread unless said. Issue 43's "
+        "targets, on 2 cores: one channel's normal-incidence profile at 256 radii in 50 ms, a 31-wavelength skin "
+        "in 1.5 s.\n\n| what | ms |\n|---|---|\n";
+  for (const auto& [nodes, modes] : {std::pair{12, 16}, std::pair{16, 24}, std::pair{24, 40}}) {
+    md << formatted("| one spatial frequency of a half-space, %d nodes, %d modes | %.1f |\n", nodes, modes,
+                    r.ms(formatted("BM_LateralFrequencyResponse/%d/%d", nodes, modes)));
+  }
+  md << formatted("| a half-space's profile, 15 annuli, 40 frequencies, 12 nodes, 16 modes | %.0f |\n",
+                  r.ms("BM_LayerProfile/12/16"));
+  for (const int frequencies : {16, 24, 40}) {
+    md << formatted("| one wavelength of the default skin at 256 radii, %d frequencies | %.0f |\n", frequencies,
+                    r.ms(formatted("BM_SkinWavelengthProfile/%d/iterations:1", frequencies)));
+  }
+  md << formatted(
+            "| the default skin, 31 wavelengths at 256 radii, both cores (`skinlayer profile --skin`) | **%.0f** |\n",
+            r.ms("BM_SkinProfile/iterations:1/real_time"))
+     << formatted("| a finite slab under a rough top, both faces, 15 annuli, 24 nodes | %.0f |\n",
+                  r.ms("BM_FiniteSlabProfile/iterations:1"))
+     << "\nThe cost grows about linearly with the number of spatial frequencies: each is one solve of the coupled "
+        "modes, an eigen-decomposition per slab and a dense boundary system.\n";
+
   const int gpu_size = SKINLAYER_TABLE_UPSAMPLE * (tables.grid_size() - 1) + 1;
   const double cpu_bytes =
       8.0 * static_cast<double>(tables.reflection_coefficients().size() + tables.transmission_coefficients().size());
