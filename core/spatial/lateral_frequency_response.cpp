@@ -39,6 +39,17 @@ struct SolvedSlab {
     return modes.vectors(row, c) * std::exp(-rate * (c < h ? t : t - tau));
   }
   double particular(int row, double t) const { return beam == 0.0 ? 0.0 : beam * modes.beam(row) * std::exp(-t); }
+  // Every column at every node row at depth t (n x count), and the particular solution there.
+  Eigen::MatrixXcd values(double t) const {
+    const int h = static_cast<int>(modes.lambda.size()) / 2;
+    Eigen::VectorXcd factor(count);
+    for (int c = 0; c < count; ++c) factor(c) = std::exp(-modes.lambda(c) * (c < h ? t : t - tau));
+    return modes.vectors.leftCols(count) * factor.asDiagonal();
+  }
+  Eigen::VectorXd particulars(double t) const {
+    return beam == 0.0 ? Eigen::VectorXd::Zero(modes.vectors.rows())
+                       : Eigen::VectorXd(beam * std::exp(-t) * modes.beam);
+  }
 };
 
 // The solve with the albedo in the scattering operator scaled by operator_scale (1, or 0 for the first order in Omega
@@ -100,41 +111,71 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
   }
   if (solved.empty()) return {};
 
-  // Boundary conditions (one row each). At the top, u-(0) = t12 + R21 u+(0) under a rough top, mode by mode (the i^m
-  // factor is the same on both sides, and t12 is mode 0 alone), and nothing enters going down under an open one.
-  // Between slabs every node radiance is continuous. Under a finite last slab, u+(tau) = F_b u-(tau) at a smooth
-  // bottom, and nothing enters going up over an index-matched half-space. (The collimated beam's own reflection at a
-  // smooth bottom, e^{-tau} F_b(1) of it, is left out: §21.14.)
+  // An index-matched half-space under the stack is eliminated through its reflection (below): its unknowns are not
+  // in the system.
+  const SolvedSlab& last = solved.back();
+  const bool semi_infinite = std::isinf(last.tau);
+  const bool eliminate_last = semi_infinite && solved.size() >= 2 && last.face == nullptr;
+  if (eliminate_last) unknowns = last.offset;
+
+  // Boundary conditions (one row each), filled block by block from each slab's solutions at its faces. At the top,
+  // u-(0) = t12 + R21 u+(0) under a rough top, mode by mode (the i^m factor is the same on both sides, and t12 is mode
+  // 0 alone), and nothing enters going down under an open one. Between slabs every node radiance is continuous, or an
+  // interface joins them. Under a finite last slab, u+(tau) = F_b u-(tau) at a smooth bottom, and nothing enters going
+  // up over an index-matched half-space. (The collimated beam's own reflection at a smooth bottom, e^{-tau} F_b(1) of
+  // it, is left out: §21.14.)
   Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(unknowns, unknowns);
   Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(unknowns);
+  const auto rows = [&](int m, int up) { return layout.at(m, up, 0); };  // the first of a mode's N rows one way
   int equation = 0;
   const SolvedSlab& first = solved.front();
-  for (int m = 0; m < M; ++m) {
-    for (int i = 0; i < N; ++i) {
-      const int row = layout.at(m, 0, i);
-      for (int c = 0; c < first.count; ++c) B(equation, first.offset + c) = first.column(c, row, 0.0);
-      rhs(equation) = -first.particular(row, 0.0);
+  {
+    const Eigen::MatrixXcd values = first.values(0.0);
+    const Eigen::VectorXd beam = first.particulars(0.0);
+    for (int m = 0; m < M; ++m) {
+      auto block = B.block(equation, first.offset, N, first.count);
+      block = values.middleRows(rows(m, 0), N);
+      rhs.segment(equation, N) = -beam.segment(rows(m, 0), N).cast<std::complex<double>>();
       if (top != nullptr) {
         const Eigen::MatrixXd& reflect = top->reflection[static_cast<std::size_t>(m)];
-        for (int j = 0; j < N; ++j) {
-          const int from = layout.at(m, 1, j);
-          for (int c = 0; c < first.count; ++c)
-            B(equation, first.offset + c) -= reflect(i, j) * first.column(c, from, 0.0);
-          rhs(equation) += reflect(i, j) * first.particular(from, 0.0);
-        }
-        if (m == 0) rhs(equation) += top->source(i);
+        block -= reflect * values.middleRows(rows(m, 1), N);
+        rhs.segment(equation, N) += (reflect * beam.segment(rows(m, 1), N)).cast<std::complex<double>>();
+        if (m == 0) rhs.segment(equation, N) += top->source.cast<std::complex<double>>();
       }
-      ++equation;
+      equation += N;
     }
   }
   for (std::size_t l = 0; l + 1 < solved.size(); ++l) {
     const SolvedSlab &upper = solved[l], &lower = solved[l + 1];
-    if (lower.face == nullptr) {
-      for (int row = 0; row < n; ++row) {
-        for (int c = 0; c < upper.count; ++c) B(equation, upper.offset + c) = upper.column(c, row, upper.tau);
-        for (int c = 0; c < lower.count; ++c) B(equation, lower.offset + c) = -lower.column(c, row, 0.0);
-        rhs(equation++) = lower.particular(row, 0.0) - upper.particular(row, upper.tau);
+    const Eigen::MatrixXcd above = upper.values(upper.tau), below = lower.values(0.0);
+    const Eigen::VectorXd beam_above = upper.particulars(upper.tau), beam_below = lower.particulars(0.0);
+    if (eliminate_last && l + 2 == solved.size()) {
+      // The half-space's decaying solutions V at its top, split by direction, give its reflection R = V_up V_down^-1.
+      // With c its weights and x the rest, continuity U x + p_U = V c + p_L makes, on the up rows,
+      //   (U_up - R U_down) x = R (p_U,down - p_L,down) + p_L,up - p_U,up.
+      const int h = n / 2;
+      Eigen::MatrixXcd down(h, h), up(h, h), above_down(h, upper.count), above_up(h, upper.count);
+      Eigen::VectorXd gap_down(h), gap_up(h);  // p_U - p_L
+      for (int m = 0; m < M; ++m) {
+        down.middleRows(m * N, N) = below.middleRows(rows(m, 0), N);
+        up.middleRows(m * N, N) = below.middleRows(rows(m, 1), N);
+        above_down.middleRows(m * N, N) = above.middleRows(rows(m, 0), N);
+        above_up.middleRows(m * N, N) = above.middleRows(rows(m, 1), N);
+        gap_down.segment(m * N, N) = beam_above.segment(rows(m, 0), N) - beam_below.segment(rows(m, 0), N);
+        gap_up.segment(m * N, N) = beam_above.segment(rows(m, 1), N) - beam_below.segment(rows(m, 1), N);
       }
+      const Eigen::MatrixXcd reflection = down.transpose().partialPivLu().solve(up.transpose()).transpose();
+      B.block(equation, upper.offset, h, upper.count) = above_up - reflection * above_down;
+      rhs.segment(equation, h) =
+          reflection * gap_down.cast<std::complex<double>>() - gap_up.cast<std::complex<double>>();
+      equation += h;
+      continue;
+    }
+    if (lower.face == nullptr) {
+      B.block(equation, upper.offset, n, upper.count) = above;
+      B.block(equation, lower.offset, n, lower.count) = -below;
+      rhs.segment(equation, n) = (beam_below - beam_above).cast<std::complex<double>>();
+      equation += n;
       continue;
     }
     // A rough interface between them, mode by mode (lateral_internal_face.h): up-going above is R_a (down above) +
@@ -142,42 +183,29 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
     const LateralInternalFace& face = *lower.face;
     for (int m = 0; m < M; ++m) {
       const std::size_t mode = static_cast<std::size_t>(m);
-      for (const bool up : {true, false}) {
-        const SolvedSlab& own = up ? upper : lower;  // the side whose outgoing radiance the row sets
-        const SolvedSlab& other = up ? lower : upper;
-        const double own_depth = up ? upper.tau : 0.0, other_depth = up ? 0.0 : upper.tau;
-        const Eigen::MatrixXd& reflect = up ? face.reflect_above[mode] : face.reflect_below[mode];
-        const Eigen::MatrixXd& transmit = up ? face.transmit_up[mode] : face.transmit_down[mode];
-        for (int i = 0; i < N; ++i) {
-          const int row = layout.at(m, up ? 1 : 0, i);
-          for (int c = 0; c < own.count; ++c) B(equation, own.offset + c) = own.column(c, row, own_depth);
-          for (int j = 0; j < N; ++j) {
-            const int towards = layout.at(m, up ? 0 : 1, j);  // the face: down above it, up below it
-            const int from = layout.at(m, up ? 1 : 0, j);     // through it: up from below, down from above
-            for (int c = 0; c < own.count; ++c)
-              B(equation, own.offset + c) -= reflect(i, j) * own.column(c, towards, own_depth);
-            for (int c = 0; c < other.count; ++c)
-              B(equation, other.offset + c) -= transmit(i, j) * other.column(c, from, other_depth);
-          }
-          ++equation;
-        }
-      }
+      B.block(equation, upper.offset, N, upper.count) =
+          above.middleRows(rows(m, 1), N) - face.reflect_above[mode] * above.middleRows(rows(m, 0), N);
+      B.block(equation, lower.offset, N, lower.count) = -face.transmit_up[mode] * below.middleRows(rows(m, 1), N);
+      equation += N;
+      B.block(equation, lower.offset, N, lower.count) =
+          below.middleRows(rows(m, 0), N) - face.reflect_below[mode] * below.middleRows(rows(m, 1), N);
+      B.block(equation, upper.offset, N, upper.count) = -face.transmit_down[mode] * above.middleRows(rows(m, 0), N);
+      equation += N;
     }
   }
-  const SolvedSlab& last = solved.back();
-  const bool semi_infinite = std::isinf(last.tau);
   if (!semi_infinite) {
+    const Eigen::MatrixXcd values = last.values(last.tau);
+    const Eigen::VectorXd beam = last.particulars(last.tau);
+    const Eigen::VectorXd reflect = bottom ? bottom->reflection : Eigen::VectorXd::Zero(N);
     for (int m = 0; m < M; ++m) {
-      for (int i = 0; i < N; ++i) {
-        const int row = layout.at(m, 1, i), down = layout.at(m, 0, i);
-        const double reflect = bottom ? bottom->reflection(i) : 0.0;
-        for (int c = 0; c < last.count; ++c) {
-          B(equation, last.offset + c) = last.column(c, row, last.tau) - reflect * last.column(c, down, last.tau);
-        }
-        rhs(equation++) = -last.particular(row, last.tau) + reflect * last.particular(down, last.tau);
-      }
+      B.block(equation, last.offset, N, last.count) =
+          values.middleRows(rows(m, 1), N) - reflect.asDiagonal() * values.middleRows(rows(m, 0), N);
+      rhs.segment(equation, N) = (-beam.segment(rows(m, 1), N) + reflect.asDiagonal() * beam.segment(rows(m, 0), N))
+                                     .cast<std::complex<double>>();
+      equation += N;
     }
   }
+  check(equation == unknowns, "the boundary system is not square");
   const Eigen::VectorXcd coefficients = B.partialPivLu().solve(rhs);
 
   // Fluxes out of the faces: mode 0 only, 2 pi sum_j a_j mu_j I(mu_j) times the fraction that crosses the face.
