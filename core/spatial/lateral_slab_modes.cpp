@@ -93,8 +93,10 @@ LateralSlabModes lateral_slab_modes(double operator_albedo, double source_albedo
     A.row(row) /= up ? -q.nodes[i] : q.nodes[i];
   }
 
-  // Particular solution X e^-tau: (A - 1) X = D^-1 s.
-  const Eigen::VectorXd X = (A - Eigen::MatrixXd::Identity(n, n)).partialPivLu().solve(source);
+  // Particular solution X e^-tau: (A - 1) X = D^-1 s (none without a beam: light that enters as node radiance).
+  const Eigen::VectorXd X = source_albedo == 0.0
+                                ? Eigen::VectorXd::Zero(n)
+                                : Eigen::VectorXd((A - Eigen::MatrixXd::Identity(n, n)).partialPivLu().solve(source));
 
   // Homogeneous solutions v e^{-lambda tau}, at half size (§21.3). Within each mode block A is
   // [[D^-1 L1, D^-1 L2], [-D^-1 L2, -D^-1 L1]] (down, up); for S = v_down + v_up and Delta = v_down - v_up,
@@ -147,7 +149,10 @@ LateralSlabModes lateral_slab_modes(double operator_albedo, double source_albedo
   Eigen::MatrixXcd& V = slab.vectors;
   lambda.resize(n);
   V.resize(n, n);
-  const Eigen::MatrixXcd PS = P.cast<std::complex<double>>() * S;
+  // P real, S complex: two real products cost half of one complex one.
+  Eigen::MatrixXcd PS(h, h);
+  PS.real() = P * S.real();
+  PS.imag() = P * S.imag();
   for (int l = 0; l < h; ++l) {
     const std::complex<double> root = std::sqrt(squared(l));  // Re >= 0: the decaying one
     check(root.real() > 0.0, "a mode neither decays nor grows (conservative scattering at k = 0?)");
