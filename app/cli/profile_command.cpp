@@ -78,7 +78,7 @@ std::string profile_usage() {
          "one wavelength's with --wavelength NM. Under a rough top the reflectance leaves out the interface's own\n"
          "reflection, which leaves at the entry point. Light that crosses unscattered or is scattered once,\n"
          "singular at the beam, is exact; the rest comes from the discrete ordinates in the lateral frequency\n"
-         "(docs/model.md section 21): 1-2 s per channel for one layer, 2-4 s per wavelength for a skin, on both\n"
+         "(docs/model.md section 21): 1-2 s per channel for one layer, 1-3 s per wavelength for a skin, on both\n"
          "cores. A finite layer lit through a rough top or diffusely has its transmittance computed on 24 nodes,\n"
          "about 6 s per channel.\n"
          "\n"
@@ -122,7 +122,7 @@ int run_profile_command(std::span<const std::string_view> arguments, std::ostrea
   ProfileRequest request;
   request.incidence = incidence;
   request.options.parallel_for = parallel_for_threads;
-  if (document.skin) {  // a skin's 31 wavelengths take about a minute: a line every tenth of them
+  if (document.skin) {  // a skin's 31 wavelengths take about 40 s: a line every tenth of them
     request.progress = [&](int done, int total) {
       if (done * 10 / total != (done - 1) * 10 / total) {
         progress << "profile: " << done << " of " << total << " wavelengths\n" << std::flush;
