@@ -28,6 +28,16 @@ LayerProfileOptions command_options() {
   return options;
 }
 
+// A layer under the top of --eta 1.4 and --sigma SIGMA, as the profile takes it.
+ProfileLayer under_rough_top(double tau, double albedo, double g, double sigma) {
+  Material m;
+  m.eta = 1.4;
+  m.sigma = sigma;
+  ProfileLayer layer{tau, albedo, g};
+  layer.top = top_interface(m);
+  return layer;
+}
+
 ProcessResult profile(std::vector<std::string> flags) {
   flags.insert(flags.begin(), "profile");
   return run_skinlayer(flags);
@@ -81,11 +91,7 @@ TEST(ProfileCommand, RoughTopHalfSpaceIsTheCoresProfile) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const CsvOutput csv = parse_csv_output(result.out);
   ASSERT_EQ(csv.rows.size(), 2u);
-  Material m;
-  m.eta = 1.4;
-  m.sigma = 0.4;
-  ProfileLayer layer{kInf, 0.95, 0.8};
-  layer.top = top_interface(m);
+  const ProfileLayer layer = under_rough_top(kInf, 0.95, 0.8, 0.4);
   const double radii[] = {0.5, 2.0};
   const LayerProfile expected = layer_profile_at(layer, radii, command_options());
   for (std::size_t i = 0; i < 2; ++i) {
@@ -157,11 +163,7 @@ TEST(ProfileCommand, FiniteLayerUnderARoughTopTransmitsOnFinerOrdinates) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const CsvOutput csv = parse_csv_output(result.out);
   ASSERT_EQ(csv.rows.size(), 2u);
-  Material m;
-  m.eta = 1.4;
-  m.sigma = 0.3;
-  ProfileLayer layer{1.0, 0.9, 0.8};
-  layer.top = top_interface(m);
+  const ProfileLayer layer = under_rough_top(1.0, 0.9, 0.8, 0.3);
   LayerProfileOptions options = command_options();
   options.resolution.ordinates = 24;
   const double radii[] = {0.1, 1.0};
@@ -180,12 +182,9 @@ TEST(ProfileCommand, InterfaceBetweenLayersIsTheCoresProfile) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const CsvOutput csv = parse_csv_output(result.out);
   ASSERT_EQ(csv.rows.size(), 2u);
-  Material m;
-  m.sigma = 0.35;
-  ProfileLayer layer{1.0, 0.9, 0.8};
-  layer.top = top_interface(m);
+  ProfileLayer layer = under_rough_top(1.0, 0.9, 0.8, 0.35);
   layer.below = {LateralSlab{kInf, 0.99, 0.8, 2.0}};
-  layer.faces = {RoughDielectric{1.1, 0.3, m.microfacet}};
+  layer.faces = {RoughDielectric{1.1, 0.3, Material{}.microfacet}};
   const double radii[] = {0.05 * 20.0, 0.2 * 20.0};  // mm in the first layer's mean free paths
   const LayerProfile expected = layer_profile_at(layer, radii, command_options());
   for (std::size_t i = 0; i < 2; ++i) {

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "core/conventions.h"
-#include "core/interfaces/layer_interfaces.h"
 #include "core/material.h"
 #include "core/series/quadrature.h"
 #include "core/spatial/entering_radiance.h"
@@ -19,9 +18,9 @@
 #include "core/spatial/rough_top_single_scattering.h"
 #include "core/spatial/single_scattering_profile.h"
 #include "core/spatial/transmitted_low_orders.h"
-#include "tests/core/index_matched_slab.h"
 #include "tests/core/reference_csv.h"
 #include "tests/core/spatial/profile_against_walk.h"
+#include "tests/core/spatial/rough_top_layers.h"
 
 namespace skinlayer {
 namespace {
@@ -110,18 +109,8 @@ TEST(FiniteStackTransmittance, LowOrdersInKSpaceAreTheOrdinatesOwn) {
   }
 }
 
-Material rough_slab(double tau, double sigma, double albedo, double g) {
-  Material m = test::index_matched_slab(tau, albedo, g);
-  m.eta = 1.4;
-  m.sigma = sigma;
-  return m;
-}
-
-ProfileLayer as_profile_layer(const Material& m) {
-  ProfileLayer layer{m.tau, m.albedo, m.g};
-  layer.top = top_interface(m);
-  return layer;
-}
+using test::as_profile_layer;
+using test::rough_top_layer;
 
 // 24 nodes: the refracted lobe enters on the nodes nearest the normal, and each node's stream through the slab
 // makes a ring that the multiply scattered light keeps. At 12, 16, 20 and 24 nodes the worst annulus below is 4.7%,
@@ -138,13 +127,13 @@ const std::vector<double> kSlabEdges = {0.0, 0.025, 0.05, 0.075, 0.1, 0.15, 0.2,
 // A finite slab under a rough top: both faces against the walk, which refracts the beam facet by facet and records
 // where each photon leaves, the unscattered ones included.
 TEST(FiniteStackTransmittance, RoughTopOverAFiniteSlabMatchesTheWalk) {
-  const Material m = rough_slab(1.0, 0.3, 0.9, 0.8);
+  const Material m = rough_top_layer(1.0, 0.3, 0.9, 0.8);
   test::expect_profile_matches_the_walk(as_profile_layer(m), m, transmitted_radiance_options(), kSlabEdges);
 }
 
 // A rougher top, whose lobe spreads over more nodes, over a more absorbing slab.
 TEST(FiniteStackTransmittance, RougherTopOverAnAbsorbingSlabMatchesTheWalk) {
-  const Material m = rough_slab(1.5, 0.8, 0.8, 0.6);
+  const Material m = rough_top_layer(1.5, 0.8, 0.8, 0.6);
   test::expect_profile_matches_the_walk(as_profile_layer(m), m, transmitted_radiance_options(), kSlabEdges);
 }
 
@@ -153,7 +142,7 @@ TEST(FiniteStackTransmittance, RougherTopOverAnAbsorbingSlabMatchesTheWalk) {
 // walk beyond 0.2 mm, at every resolution. That lobe is azimuth-uniform in the model (docs/model.md §3.2a) and not in
 // the walk, and in so thin a stack much of the light that gets far has been reflected inside the top.
 TEST(FiniteStackTransmittance, TwoLayerStackInMillimetresMatchesTheWalk) {
-  Material m = rough_slab(1.0, 0.35, 0.9, 0.8);
+  Material m = rough_top_layer(1.0, 0.35, 0.9, 0.8);
   m.microfacet = MicrofacetModel::Single;
   m.extinction = 20.0;
   m.below = {StackedLayer{1.0, 0.95, 0.5, std::nullopt, 40.0}};

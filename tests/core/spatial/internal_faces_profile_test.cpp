@@ -14,8 +14,8 @@
 #include "core/solver.h"
 #include "core/spatial/lateral_top_interface.h"
 #include "core/spatial/layer_profile.h"
-#include "tests/core/index_matched_slab.h"
 #include "tests/core/spatial/profile_against_walk.h"
+#include "tests/core/spatial/rough_top_layers.h"
 
 namespace skinlayer {
 namespace {
@@ -24,22 +24,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // A rough top over a layer of tau 1, an interface into a denser half-space below it (in mm when mu_t is given).
 Material faced_stack(double upper_extinction, double lower_extinction) {
-  Material m = test::index_matched_slab(1.0, 0.9, 0.8);
-  m.eta = 1.4;
-  m.sigma = 0.35;
+  Material m = test::rough_top_layer(1.0, 0.35, 0.9, 0.8);
   m.extinction = upper_extinction;
   m.below = {StackedLayer{kInf, 0.99, 0.8, LayerInterface{0.3, 1.1}, lower_extinction}};
   return m;
 }
 
-ProfileLayer as_profile_layer(const Material& m) {
-  ProfileLayer layer{m.tau, m.albedo, m.g};
-  layer.top = top_interface(m);
-  const StackedLayer& lower = m.below.front();
-  layer.below = {LateralSlab{lower.tau, lower.albedo, lower.g, *lower.extinction / *m.extinction}};
-  layer.faces = {RoughDielectric{lower.interface->eta, lower.interface->sigma, m.microfacet}};
-  return layer;
-}
+using test::as_profile_layer;
 
 // The annuli add up to R(0), and R(0) plus the top's own multiply scattered reflection is the stack solver's
 // subsurface reflectance at normal incidence: the same interface operators on the same nodes, projected on the

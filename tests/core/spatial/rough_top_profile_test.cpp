@@ -18,6 +18,7 @@
 #include "core/spatial/layer_profile.h"
 #include "tests/core/index_matched_slab.h"
 #include "tests/core/spatial/profile_against_walk.h"
+#include "tests/core/spatial/rough_top_layers.h"
 
 namespace skinlayer {
 namespace {
@@ -25,17 +26,10 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 Material rough_half_space(double sigma, double albedo, double g) {
-  Material m = test::index_matched_slab(kInf, albedo, g);
-  m.eta = 1.4;
-  m.sigma = sigma;
-  return m;
+  return test::rough_top_layer(kInf, sigma, albedo, g);
 }
 
-ProfileLayer as_profile_layer(const Material& m) {
-  ProfileLayer layer{m.tau, m.albedo, m.g};
-  layer.top = top_interface(m);
-  return layer;
-}
+using test::as_profile_layer;
 
 const std::vector<double> kEdges = {0.0, 0.05, 0.1, 0.2, 0.35, 0.5,  0.75, 1.0, 1.5,
                                     2.0, 3.0,  4.0, 6.0, 8.0,  12.0, 16.0, 24.0};
