@@ -7,13 +7,15 @@
 // its bottom at r = G tan(theta), G the stack's geometric depth: on the nodes that is a ring per node, where the walk
 // and nature have a continuous spread. So, as the BSDF's unscattered light does (core/unscattered), the profile takes
 // the entering radiance continuous in mu = cos(theta):
-//   L(mu) = f_t(z, d(mu)) + interpolated(t_j - t_j,single)(mu)                                   [1/sr]
-// with f_t the top's microfacet BTDF at normal incidence (a radiance BTDF, microfacet.h; the light per unit area is 1),
-// and the rest of the node radiance (the interface's multiply scattered lobe; under diffuse light all of it) linear
-// in mu between the nodes and held beyond the end ones: it is broad, and the nodes resolve it.
+//   L(mu) = f_t(n, d(mu)) + interpolated(t_j - t_j,single)(mu)                                   [1/sr]
+// with f_t the top's microfacet BTDF from the normal n into the direction d(mu) (a radiance BTDF, microfacet.h; the
+// light per unit area is 1), and the rest of the node radiance (the interface's multiply scattered lobe; under diffuse
+// light all of it) linear in mu between the nodes and held beyond the end ones: it is broad, and the nodes resolve it.
 #pragma once
 
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "core/interfaces/microfacet.h"
 #include "core/series/quadrature.h"

@@ -1,5 +1,6 @@
-// docs/model.md §21.4, §21.9, §21.11 and §21.14: slabs at one lateral frequency joined through their faces, under an
-// open, rough or smooth top and over a matched or smooth bottom, and the fluxes out of the stack.
+// docs/model.md §21.4, §21.9, §21.11, §21.14 and §21.16: slabs at one lateral frequency joined through their faces
+// (continuous, or a rough interface), under an open, rough or smooth top and over a matched or smooth bottom, and the
+// fluxes out of the stack.
 #include "core/spatial/lateral_frequency_response.h"
 
 #include <Eigen/Dense>
