@@ -148,33 +148,32 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
   }
   for (std::size_t l = 0; l + 1 < solved.size(); ++l) {
     const SolvedSlab &upper = solved[l], &lower = solved[l + 1];
-    const Eigen::MatrixXcd above = upper.values(upper.tau), below = lower.values(0.0);
+    const Eigen::MatrixXcd upper_face = upper.values(upper.tau), lower_face = lower.values(0.0);
     const Eigen::VectorXd beam_above = upper.particulars(upper.tau), beam_below = lower.particulars(0.0);
     if (eliminate_last && l + 2 == solved.size()) {
       // The half-space's decaying solutions V at its top, split by direction, give its reflection R = V_up V_down^-1.
       // With c its weights and x the rest, continuity U x + p_U = V c + p_L makes, on the up rows,
       //   (U_up - R U_down) x = R (p_U,down - p_L,down) + p_L,up - p_U,up.
-      const int h = n / 2;
-      Eigen::MatrixXcd down(h, h), up(h, h), above_down(h, upper.count), above_up(h, upper.count);
+      Eigen::MatrixXcd down(h, h), up(h, h), upper_down(h, upper.count), upper_up(h, upper.count);
       Eigen::VectorXd gap_down(h), gap_up(h);  // p_U - p_L
       for (int m = 0; m < M; ++m) {
-        down.middleRows(m * N, N) = below.middleRows(rows(m, 0), N);
-        up.middleRows(m * N, N) = below.middleRows(rows(m, 1), N);
-        above_down.middleRows(m * N, N) = above.middleRows(rows(m, 0), N);
-        above_up.middleRows(m * N, N) = above.middleRows(rows(m, 1), N);
+        down.middleRows(m * N, N) = lower_face.middleRows(rows(m, 0), N);
+        up.middleRows(m * N, N) = lower_face.middleRows(rows(m, 1), N);
+        upper_down.middleRows(m * N, N) = upper_face.middleRows(rows(m, 0), N);
+        upper_up.middleRows(m * N, N) = upper_face.middleRows(rows(m, 1), N);
         gap_down.segment(m * N, N) = beam_above.segment(rows(m, 0), N) - beam_below.segment(rows(m, 0), N);
         gap_up.segment(m * N, N) = beam_above.segment(rows(m, 1), N) - beam_below.segment(rows(m, 1), N);
       }
       const Eigen::MatrixXcd reflection = down.transpose().partialPivLu().solve(up.transpose()).transpose();
-      B.block(equation, upper.offset, h, upper.count) = above_up - reflection * above_down;
+      B.block(equation, upper.offset, h, upper.count) = upper_up - reflection * upper_down;
       rhs.segment(equation, h) =
           reflection * gap_down.cast<std::complex<double>>() - gap_up.cast<std::complex<double>>();
       equation += h;
       continue;
     }
     if (lower.face == nullptr) {
-      B.block(equation, upper.offset, n, upper.count) = above;
-      B.block(equation, lower.offset, n, lower.count) = -below;
+      B.block(equation, upper.offset, n, upper.count) = upper_face;
+      B.block(equation, lower.offset, n, lower.count) = -lower_face;
       rhs.segment(equation, n) = (beam_below - beam_above).cast<std::complex<double>>();
       equation += n;
       continue;
@@ -185,12 +184,13 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
     for (int m = 0; m < M; ++m) {
       const std::size_t mode = static_cast<std::size_t>(m);
       B.block(equation, upper.offset, N, upper.count) =
-          above.middleRows(rows(m, 1), N) - face.reflect_above[mode] * above.middleRows(rows(m, 0), N);
-      B.block(equation, lower.offset, N, lower.count) = -face.transmit_up[mode] * below.middleRows(rows(m, 1), N);
+          upper_face.middleRows(rows(m, 1), N) - face.reflect_above[mode] * upper_face.middleRows(rows(m, 0), N);
+      B.block(equation, lower.offset, N, lower.count) = -face.transmit_up[mode] * lower_face.middleRows(rows(m, 1), N);
       equation += N;
       B.block(equation, lower.offset, N, lower.count) =
-          below.middleRows(rows(m, 0), N) - face.reflect_below[mode] * below.middleRows(rows(m, 1), N);
-      B.block(equation, upper.offset, N, upper.count) = -face.transmit_down[mode] * above.middleRows(rows(m, 0), N);
+          lower_face.middleRows(rows(m, 0), N) - face.reflect_below[mode] * lower_face.middleRows(rows(m, 1), N);
+      B.block(equation, upper.offset, N, upper.count) =
+          -face.transmit_down[mode] * upper_face.middleRows(rows(m, 0), N);
       equation += N;
     }
   }
