@@ -103,6 +103,7 @@ sanitize_skipped_tests=(
   'FiniteStackTransmittance\.TwoLayerStackInMillimetresMatchesTheWalk'
   'InternalFacesProfile\.StackWithAnInterfaceMatchesTheWalk'                # its identity and refusals
   'ProfileCommand\.FiniteLayerUnderARoughTopTransmitsOnFinerOrdinates'     # the other ProfileCommand ones
+  'ProfileCommand\.InterfaceBetweenLayersIsTheCoresProfile'
 )
 sanitize_skipped="^($(IFS='|'; echo "${sanitize_skipped_tests[*]}"))$"
 readonly sanitize_skipped
