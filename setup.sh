@@ -102,8 +102,8 @@ sanitize_skipped_tests=(
   'FiniteStackTransmittance\.RougherTopOverAnAbsorbingSlabMatchesTheWalk'
   'FiniteStackTransmittance\.TwoLayerStackInMillimetresMatchesTheWalk'
   'InternalFacesProfile\.StackWithAnInterfaceMatchesTheWalk'                # its identity and refusals
-  'ProfileCommand\.FiniteLayerUnderARoughTopTransmitsOnFinerOrdinates'     # the other ProfileCommand ones
-  'ProfileCommand\.InterfaceBetweenLayersIsTheCoresProfile'
+  'app\.ProfileCommand\.FiniteLayerUnderARoughTopTransmitsOnFinerOrdinates'     # the other ProfileCommand ones
+  'app\.ProfileCommand\.InterfaceBetweenLayersIsTheCoresProfile'
 )
 sanitize_skipped="^($(IFS='|'; echo "${sanitize_skipped_tests[*]}"))$"
 readonly sanitize_skipped
