@@ -50,3 +50,13 @@ def test_diffuse_incidence_is_the_command_lines():
         [0.5, 2.0], incidence="diffuse")
     table = cli_table(["profile"] + half_space + ["--incidence", "diffuse", "--radii", "0.5,2"])
     assert_close(result["reflectance"], table["reflectance"])
+
+
+def test_a_stack_with_an_interface_between_its_layers_is_the_command_lines():
+    layers = ["tau=1,albedo=0.9,g=0.8,mu_t=20", "tau=inf,albedo=0.99,g=0.8,mu_t=40,sigma=0.3,eta=1.1"]
+    result = skinlayer.solve(skinlayer.Material(sigma=0.35, layers=layers)).profile([0.05, 0.2])
+    assert result["unit"] == "mm"
+    flags = ["--sigma", "0.35"] + [arg for layer in layers for arg in ("--layer", layer)]
+    table = cli_table(["profile"] + flags + ["--radii", "0.05,0.2"])
+    assert_close(result["reflectance"], table["reflectance"])
+    assert np.all(result["transmittance"] == 0)  # it ends in a half-space
