@@ -128,6 +128,10 @@ int run_profile_command(std::span<const std::string_view> arguments, std::ostrea
         progress << "profile: " << done << " of " << total << " wavelengths\n" << std::flush;
       }
     };
+  } else {  // an RGB albedo's distinct channels take 1-6 s each (a finite layer's transmittance: 24 nodes)
+    request.progress = [&](int done, int total) {
+      if (total > 1) progress << "profile: " << done << " of " << total << " distinct channels\n" << std::flush;
+    };
   }
   const DocumentProfile profile = at_radii ? document_profile_at_radii(document, positions, request)
                                            : document_profile_in_annuli(document, positions, request);

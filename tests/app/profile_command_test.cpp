@@ -148,6 +148,8 @@ TEST(ProfileCommand, EqualChannelsAreSolvedOnceAndWrittenEach) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const CsvOutput csv = parse_csv_output(result.out);
   ASSERT_EQ(csv.header.size(), 8u);
+  // Each solve says so on the error stream.
+  EXPECT_EQ(result.err, "profile: 1 of 2 distinct channels\nprofile: 2 of 2 distinct channels\n");
   for (const std::vector<double>& row : csv.rows) {
     EXPECT_EQ(row[2], row[3]);  // reflectance_r == reflectance_g
     EXPECT_EQ(row[5], row[6]);  // transmittance_r == transmittance_g
