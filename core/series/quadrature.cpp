@@ -1,6 +1,7 @@
 #include "core/series/quadrature.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -43,6 +44,34 @@ QuadratureRule gauss_legendre(int n, double a, double b) {
     rule.nodes[i] = midpoint - half_length * x;
     rule.weights[n - 1 - i] = half_length * weight;
     rule.weights[i] = half_length * weight;
+  }
+  return rule;
+}
+
+std::vector<std::pair<double, double>> graded_panels(double from, double to, double fine, double widest) {
+  std::vector<double> breaks = {from, to};
+  if (fine > 0.0) {
+    for (const double f : {0.5, 1.0, 2.0, 4.0}) breaks.push_back(from + f * fine);
+  }
+  std::sort(breaks.begin(), breaks.end());
+  std::vector<std::pair<double, double>> panels;
+  for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
+    const double a = breaks[b], c = std::min(breaks[b + 1], to);
+    if (!(c > a) || a >= to) continue;
+    const int pieces = std::max(1, static_cast<int>(std::ceil((c - a) / widest)));
+    for (int p = 0; p < pieces; ++p) panels.emplace_back(a + (c - a) * p / pieces, a + (c - a) * (p + 1) / pieces);
+  }
+  return panels;
+}
+
+QuadratureRule gauss_legendre_panels(std::span<const std::pair<double, double>> panels, int points) {
+  const QuadratureRule unit = gauss_legendre(points, 0.0, 1.0);
+  QuadratureRule rule;
+  for (const auto& [a, b] : panels) {
+    for (std::size_t p = 0; p < unit.nodes.size(); ++p) {
+      rule.nodes.push_back(a + (b - a) * unit.nodes[p]);
+      rule.weights.push_back((b - a) * unit.weights[p]);
+    }
   }
   return rule;
 }

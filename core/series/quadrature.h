@@ -1,6 +1,8 @@
 // Polar-angle quadrature: Gauss-Legendre rules and the double-Gauss rule of discrete-ordinate codes.
 #pragma once
 
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace skinlayer {
@@ -21,6 +23,13 @@ double integrate_mapped(const QuadratureRule& unit, double a, double b, const Fu
   for (std::size_t i = 0; i < unit.nodes.size(); ++i) total += unit.weights[i] * f(a + (b - a) * unit.nodes[i]);
   return (b - a) * total;
 }
+
+// Panels [a, b) covering [from, to): breaks at from + fine/2, fine, 2 fine and 4 fine when fine > 0 (narrower where a
+// lobe starts at `from`), each piece cut further to at most `widest`.
+std::vector<std::pair<double, double>> graded_panels(double from, double to, double fine, double widest);
+
+// The composite rule of `points`-point Gauss-Legendre rules on each panel [a, b), nodes in the panels' order.
+QuadratureRule gauss_legendre_panels(std::span<const std::pair<double, double>> panels, int points);
 
 // Double-Gauss (Sykes 1951; DISORT): Gauss-Legendre with n nodes on each half-range mu in (0, 1), weights summing
 // to 1. The same cosines serve upward (+mu) and downward (-mu) directions. No node at mu = 0; half-range moments

@@ -9,22 +9,6 @@
 
 namespace skinlayer {
 
-std::vector<std::pair<double, double>> angle_panels(double from, double to, double fine, double widest) {
-  std::vector<double> breaks = {from, to};
-  if (fine > 0.0) {
-    for (const double f : {0.5, 1.0, 2.0, 4.0}) breaks.push_back(from + f * fine);
-  }
-  std::sort(breaks.begin(), breaks.end());
-  std::vector<std::pair<double, double>> panels;
-  for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
-    const double a = breaks[b], c = std::min(breaks[b + 1], to);
-    if (!(c > a) || a >= to) continue;
-    const int pieces = std::max(1, static_cast<int>(std::ceil((c - a) / widest)));
-    for (int p = 0; p < pieces; ++p) panels.emplace_back(a + (c - a) * p / pieces, a + (c - a) * (p + 1) / pieces);
-  }
-  return panels;
-}
-
 EnteringRadiance::EnteringRadiance(const LateralTopInterface& top, const std::optional<RoughDielectric>& rough,
                                    int ordinates)
     : collimated_(top.collimated) {
@@ -44,16 +28,13 @@ EnteringRadiance::EnteringRadiance(const LateralTopInterface& top, const std::op
     broad_.push_back(top.source(j) - (lobe ? top.source_single(j) : 0.0));
   }
   if (top.source.isZero()) return;
-  const double fine = lobe ? lobe_width_ : 0.0;
-  const QuadratureRule unit = gauss_legendre(8, 0.0, 1.0);
-  for (const auto& [a, b] : angle_panels(0.0, 0.5 * kPi, fine, 0.25)) {
-    for (std::size_t p = 0; p < unit.nodes.size(); ++p) {
-      const double theta = a + (b - a) * unit.nodes[p], mu = std::cos(theta);
-      const double power = 2.0 * kPi * mu * (*this)(mu)*std::sin(theta) * (b - a) * unit.weights[p];
-      if (power <= 0.0) continue;
-      directions_.nodes.push_back(mu);
-      directions_.weights.push_back(power);
-    }
+  const QuadratureRule theta = gauss_legendre_panels(graded_panels(0.0, 0.5 * kPi, lobe ? lobe_width_ : 0.0, 0.25), 8);
+  for (int p = 0; p < theta.size(); ++p) {
+    const double mu = std::cos(theta.nodes[p]);
+    const double power = 2.0 * kPi * mu * (*this)(mu)*std::sin(theta.nodes[p]) * theta.weights[p];
+    if (power <= 0.0) continue;
+    directions_.nodes.push_back(mu);
+    directions_.weights.push_back(power);
   }
 }
 

@@ -14,7 +14,6 @@
 #pragma once
 
 #include <optional>
-#include <utility>
 #include <vector>
 
 #include "core/interfaces/microfacet.h"
@@ -46,9 +45,5 @@ class EnteringRadiance {
   double collimated_ = 0.0, lobe_width_ = 0.0;
   QuadratureRule directions_;
 };
-
-// Panels [a, b) on [from, to), narrower near `from` when `fine` > 0 (breaks at fine/2, fine, 2 fine, 4 fine) and at
-// most `widest` wide: the theta panels of the entering and leaving directions.
-std::vector<std::pair<double, double>> angle_panels(double from, double to, double fine, double widest);
 
 }  // namespace skinlayer

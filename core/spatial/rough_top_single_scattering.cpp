@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -60,13 +61,8 @@ double over_node_pairs(std::span<const LateralSlab> slabs, const LateralTopInter
   const QuadratureRule q = double_gauss_half_range(ordinates);
   const SlabDepths depths = slab_depths(slabs);
   // Panels in dphi on [0, pi] (the integrand is even), closer towards pi, where rho is least.
-  QuadratureRule azimuth;
-  for (const auto& [from, to] :
-       {std::pair{0.0, 0.5 * kPi}, std::pair{0.5 * kPi, 0.85 * kPi}, std::pair{0.85 * kPi, kPi}}) {
-    const QuadratureRule panel = gauss_legendre(24, from, to);
-    azimuth.nodes.insert(azimuth.nodes.end(), panel.nodes.begin(), panel.nodes.end());
-    azimuth.weights.insert(azimuth.weights.end(), panel.weights.begin(), panel.weights.end());
-  }
+  const QuadratureRule azimuth = gauss_legendre_panels(
+      std::array{std::pair{0.0, 0.5 * kPi}, std::pair{0.5 * kPi, 0.85 * kPi}, std::pair{0.85 * kPi, kPi}}, 24);
   double total = 0.0;
   // A collimated beam under a smooth or open top (LateralTopInterface::collimated) scatters on its vertical path:
   // the pair (i, beam) has rho = tan(theta_i) whatever the azimuth, and p is the ordinates' renormalized one, as the

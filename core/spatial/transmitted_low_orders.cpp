@@ -2,6 +2,7 @@
 #include "core/spatial/transmitted_low_orders.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
 #include "core/medium/henyey_greenstein.h"
+#include "core/series/quadrature.h"
 
 namespace skinlayer {
 namespace {
@@ -85,20 +87,6 @@ struct Displacement {
   }
 };
 
-// Gauss-Legendre panels in the polar angle on [0, pi/2) for the leaving directions, and in the azimuth between
-// entering and leaving on [0, pi] (doubled: the integrand is even), closer where forward scattering peaks.
-QuadratureRule panel_rule(const std::vector<std::pair<double, double>>& panels, int points) {
-  const QuadratureRule unit = gauss_legendre(points, 0.0, 1.0);
-  QuadratureRule rule;
-  for (const auto& [a, b] : panels) {
-    for (std::size_t p = 0; p < unit.nodes.size(); ++p) {
-      rule.nodes.push_back(a + (b - a) * unit.nodes[p]);
-      rule.weights.push_back((b - a) * unit.weights[p]);
-    }
-  }
-  return rule;
-}
-
 // sum over entering directions e, slabs l, leaving directions o and azimuths of the path's weight times
 // along(rate, ref, z_lo, z_hi, displacement): the z-integral of e^{-rate (z - ref)} over the slab's part that falls in
 // the annulus or, for a density, the roots' sum. ref is the slab's top where the path's weight falls with depth, else
@@ -119,10 +107,13 @@ double over_scattering_paths(std::span<const LateralSlab> slabs, const EnteringR
   std::sort(breaks.begin(), breaks.end());
   for (std::size_t b = 0; b + 1 < breaks.size(); ++b) {
     if (breaks[b + 1] <= breaks[b]) continue;
-    for (const auto& panel : angle_panels(breaks[b], breaks[b + 1], b == 0 ? 0.1 : 0.0, 0.1)) panels.push_back(panel);
+    for (const auto& panel : graded_panels(breaks[b], breaks[b + 1], b == 0 ? 0.1 : 0.0, 0.1)) panels.push_back(panel);
   }
-  const QuadratureRule leaving = panel_rule(panels, 6);
-  static const QuadratureRule azimuths = panel_rule({{0.0, 0.15 * kPi}, {0.15 * kPi, 0.5 * kPi}, {0.5 * kPi, kPi}}, 16);
+  const QuadratureRule leaving = gauss_legendre_panels(panels, 6);
+  // The azimuth between entering and leaving on [0, pi] (doubled: the integrand is even), closer where forward
+  // scattering peaks.
+  static const QuadratureRule azimuths = gauss_legendre_panels(
+      std::array{std::pair{0.0, 0.15 * kPi}, std::pair{0.15 * kPi, 0.5 * kPi}, std::pair{0.5 * kPi, kPi}}, 16);
   // The collimated beam first (mu_e = 1), then the entering radiance's directions.
   std::vector<double> entry_mu = {1.0}, entry_power = {entering.collimated()};
   const QuadratureRule& radiance = entering.directions();
