@@ -5,7 +5,6 @@
 
 #include "app/cli/numbers.h"
 #include "app/material/color_channels.h"
-#include "core/interfaces/layer_interfaces.h"
 #include "core/spatial/layer_profile.h"
 
 namespace skinlayer {
@@ -22,9 +21,7 @@ void require_profile_layer(const Material& m, Incidence incidence) {
                                                        [](const StackedLayer& l) { return l.extinction.has_value(); });
   const bool albedo_below_1 = m.albedo < 1.0 && std::all_of(m.below.begin(), m.below.end(),
                                                             [](const StackedLayer& l) { return l.albedo < 1.0; });
-  const bool faces = std::any_of(m.below.begin(), m.below.end(), [](const StackedLayer& l) {
-    return l.interface.has_value() && l.interface->eta != 1.0;
-  });
+  const bool faces = m.has_internal_interfaces();
   if (faces && m.eta == 1.0 && incidence == Incidence::Normal) {
     why =
         "it has an interface between its layers under no top interface (--eta 1), which the beam reaches "
@@ -70,21 +67,6 @@ ColorChannels profile_solves(const MaterialDocument& document, const ProfileRequ
   ColorChannels solves = color_channels(document, request.preview);
   for (const Material& material : solves.materials) require_profile_layer(material, request.incidence);
   return solves;
-}
-
-// The material as the profile sees it (core/spatial/layer_profile.h): lengths in its first layer's mean free paths.
-ProfileLayer profile_layer(const Material& m, Incidence incidence) {
-  ProfileLayer layer{m.tau, m.albedo, m.g};
-  layer.incidence = incidence;
-  if (m.eta != 1.0) layer.top = top_interface(m);
-  for (const StackedLayer& below : m.below) {
-    layer.below.push_back({below.tau, below.albedo, below.g, *below.extinction / *m.extinction});
-    const bool face = below.interface && below.interface->eta != 1.0;
-    layer.faces.push_back(
-        face ? std::optional(RoughDielectric{below.interface->eta, below.interface->sigma, m.microfacet})
-             : std::nullopt);
-  }
-  return layer;
 }
 
 template <class Profile>

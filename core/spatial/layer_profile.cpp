@@ -9,6 +9,7 @@
 #include <unsupported/Eigen/Splines>
 
 #include "core/conventions.h"
+#include "core/interfaces/layer_interfaces.h"
 #include "core/material.h"
 #include "core/series/quadrature.h"
 #include "core/spatial/entering_radiance.h"
@@ -260,6 +261,23 @@ LayerProfile assemble_profile(const ProfileLayer& layer, const LayerProfileOptio
 }
 
 }  // namespace
+
+ProfileLayer profile_layer(const Material& m, Incidence incidence) {
+  ProfileLayer layer{m.tau, m.albedo, m.g};
+  layer.incidence = incidence;
+  if (m.eta != 1.0) layer.top = top_interface(m);
+  for (const StackedLayer& below : m.below) {
+    if (!m.extinction || !below.extinction) {
+      throw std::invalid_argument("profile_layer: a stack's layers need their extinction (mu_t) to relate lengths");
+    }
+    layer.below.push_back({below.tau, below.albedo, below.g, *below.extinction / *m.extinction});
+    const bool face = below.interface && below.interface->eta != 1.0;
+    layer.faces.push_back(
+        face ? std::optional(RoughDielectric{below.interface->eta, below.interface->sigma, m.microfacet})
+             : std::nullopt);
+  }
+  return layer;
+}
 
 std::vector<LateralSlab> ProfileLayer::slabs() const {
   std::vector<LateralSlab> all = {{tau, albedo, g, 1.0}};

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/interfaces/microfacet.h"
+#include "core/material.h"
 #include "core/parallel_for.h"
 #include "core/spatial/lateral_frequency_response.h"
 #include "core/spatial/lateral_top_interface.h"
@@ -45,6 +46,11 @@ struct ProfileLayer {
 
   std::vector<LateralSlab> slabs() const;  // all of them, top to bottom
 };
+
+// A material as the profile takes it: its first layer, its top (rough where eta != 1, else none), the layers below in
+// the first one's mean free paths, and the rough interfaces between them. A stack's layers must all have their
+// extinction (mu_t), which relates their lengths; throws std::invalid_argument otherwise.
+ProfileLayer profile_layer(const Material& material, Incidence incidence = Incidence::Normal);
 
 struct LayerProfileOptions {
   LateralFrequencyResolution resolution{16, 24};  // the azimuthal modes at the highest frequencies

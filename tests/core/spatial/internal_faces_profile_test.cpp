@@ -30,8 +30,6 @@ Material faced_stack(double upper_extinction, double lower_extinction) {
   return m;
 }
 
-using test::as_profile_layer;
-
 // The annuli add up to R(0), and R(0) plus the top's own multiply scattered reflection is the stack solver's
 // subsurface reflectance at normal incidence: the same interface operators on the same nodes, projected on the
 // azimuth samples of the solver's albedo (its mode 0 alone; with the profile's 97 against its 49 they differ by 8e-6).
@@ -46,7 +44,7 @@ TEST(InternalFacesProfile, PowersAddUpToTheStacksDirectionalAlbedo) {
   SolveOptions mode_zero;
   mode_zero.max_modes = 1;
   options.interface_azimuths = choose_resolution(m, mode_zero).interface_azimuths;
-  const LayerProfile profile = layer_profile(as_profile_layer(m), edges, options);
+  const LayerProfile profile = layer_profile(profile_layer(m), edges, options);
   double power = 0.0;
   for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
     power += profile.reflectance[i] * kPi * (edges[i + 1] * edges[i + 1] - edges[i] * edges[i]);
@@ -65,12 +63,12 @@ TEST(InternalFacesProfile, PowersAddUpToTheStacksDirectionalAlbedo) {
 TEST(InternalFacesProfile, StackWithAnInterfaceMatchesTheWalk) {
   const Material m = faced_stack(20.0, 40.0);
   test::expect_profile_matches_the_walk(
-      as_profile_layer(m), m, test::profile_test_options(),
+      profile_layer(m), m, test::profile_test_options(),
       {0.0, 0.0025, 0.005, 0.01, 0.02, 0.035, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, 0.8, 1.2, 1.6}, 20.0);
 }
 
 TEST(InternalFacesProfile, WhatItCannotTakeYetIsRefused) {
-  ProfileLayer layer = as_profile_layer(faced_stack(1.0, 2.0));
+  ProfileLayer layer = profile_layer(faced_stack(1.0, 2.0));
   const double radii[] = {1.0};
   LayerProfileOptions coarse;  // what is taken need not be accurate here
   coarse.resolution = {6, 4};

@@ -29,21 +29,19 @@ Material rough_half_space(double sigma, double albedo, double g) {
   return test::rough_top_layer(kInf, sigma, albedo, g);
 }
 
-using test::as_profile_layer;
-
 const std::vector<double> kEdges = {0.0, 0.05, 0.1, 0.2, 0.35, 0.5,  0.75, 1.0, 1.5,
                                     2.0, 3.0,  4.0, 6.0, 8.0,  12.0, 16.0, 24.0};
 
 // Skin-like: a weakly absorbing, forward-scattering half-space under a fairly smooth top.
 TEST(RoughTopProfile, ForwardScatteringHalfSpaceMatchesTheWalk) {
   const Material m = rough_half_space(0.3, 0.99, 0.8);
-  test::expect_profile_matches_the_walk(as_profile_layer(m), m, test::profile_test_options(), kEdges);
+  test::expect_profile_matches_the_walk(profile_layer(m), m, test::profile_test_options(), kEdges);
 }
 
 // A rougher top over a more absorbing, less forward medium: the light stays near the beam.
 TEST(RoughTopProfile, RoughTopOverAnAbsorbingHalfSpaceMatchesTheWalk) {
   const Material m = rough_half_space(0.8, 0.9, 0.5);
-  test::expect_profile_matches_the_walk(as_profile_layer(m), m, test::profile_test_options(), kEdges);
+  test::expect_profile_matches_the_walk(profile_layer(m), m, test::profile_test_options(), kEdges);
 }
 
 // A skin-like stack in millimetres: a 0.08 mm layer (mu_t 20/mm, Omega 0.9) over a half-space of twice its extinction
@@ -55,10 +53,8 @@ TEST(RoughTopProfile, TwoLayerStackInMillimetresMatchesTheWalk) {
   m.sigma = 0.35;
   m.extinction = 20.0;
   m.below = {StackedLayer{kInf, 0.99, 0.8, std::nullopt, 40.0}};
-  ProfileLayer layer = as_profile_layer(m);
-  layer.below = {LateralSlab{kInf, 0.99, 0.8, 2.0}};
   test::expect_profile_matches_the_walk(
-      layer, m, test::profile_test_options(),
+      profile_layer(m), m, test::profile_test_options(),
       {0.0, 0.0025, 0.005, 0.01, 0.02, 0.035, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3, 0.4, 0.6, 0.8, 1.2, 1.6}, 20.0);
 }
 
@@ -69,7 +65,7 @@ TEST(RoughTopProfile, PowersAddUpToTheDirectionalAlbedo) {
   m.ordinates = 12;
   std::vector<double> edges = {0.0};
   for (double r = 0.05; r < 120.0; r *= 1.25) edges.push_back(r);
-  const LayerProfile profile = layer_profile(as_profile_layer(m), edges, test::profile_test_options());
+  const LayerProfile profile = layer_profile(profile_layer(m), edges, test::profile_test_options());
   double power = 0.0;
   for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
     power += profile.reflectance[i] * kPi * (edges[i + 1] * edges[i + 1] - edges[i] * edges[i]);
@@ -85,7 +81,7 @@ TEST(RoughTopProfile, PowersAddUpToTheDirectionalAlbedo) {
 
 // Point values averaged over an annulus (Gauss-Legendre in r) are the annulus's value.
 TEST(RoughTopProfile, PointValuesAverageToTheAnnuli) {
-  const ProfileLayer layer = as_profile_layer(rough_half_space(0.4, 0.95, 0.7));
+  const ProfileLayer layer = profile_layer(rough_half_space(0.4, 0.95, 0.7));
   const std::vector<double> edges = {0.1, 0.3, 1.0, 3.0, 8.0};
   const QuadratureRule rule = gauss_legendre(24, 0.0, 1.0);
   std::vector<double> radii;
@@ -137,7 +133,7 @@ TEST(RoughTopProfile, DiffuseIncidenceAtZeroFrequencyIsTheHemisphericalAverage) 
 // top, annulus by annulus, within 2% or 3 standard errors above 1e-3 of the peak.
 TEST(RoughTopProfile, DiffuseIncidenceMatchesTheWalkAveragedOverTheHemisphere) {
   const Material m = rough_half_space(0.4, 0.98, 0.8);
-  ProfileLayer layer = as_profile_layer(m);
+  ProfileLayer layer = profile_layer(m);
   layer.incidence = Incidence::Diffuse;
   const std::vector<double> edges = {0.0, 0.1, 0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0};
   const LayerProfile profile = layer_profile(layer, edges, test::profile_test_options());
@@ -169,7 +165,7 @@ TEST(RoughTopProfile, DiffuseIncidenceMatchesTheWalkAveragedOverTheHemisphere) {
 
 // Fewer modes at low frequencies (LayerProfileOptions::adaptive_modes) leave a skin-like stack's profile as it is.
 TEST(RoughTopProfile, AdaptiveModesLeaveTheProfile) {
-  ProfileLayer layer = as_profile_layer(rough_half_space(0.4, 0.95, 0.8));
+  ProfileLayer layer = profile_layer(rough_half_space(0.4, 0.95, 0.8));
   layer.tau = 1.5;
   layer.below = {LateralSlab{kInf, 0.99, 0.8, 0.6}};
   const double radii[] = {0.1, 0.5, 2.0, 8.0, 20.0};
@@ -183,7 +179,7 @@ TEST(RoughTopProfile, AdaptiveModesLeaveTheProfile) {
 }
 
 TEST(RoughTopProfile, WhatItCannotTakeYetIsRefused) {
-  ProfileLayer layer = as_profile_layer(rough_half_space(0.4, 0.95, 0.7));
+  ProfileLayer layer = profile_layer(rough_half_space(0.4, 0.95, 0.7));
   layer.tau = 2.0;
   const double radii[] = {1.0};
   LayerProfileOptions coarse;  // what is taken need not be accurate here
