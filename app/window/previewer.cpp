@@ -203,10 +203,12 @@ class Previewer final : private TestActionTarget {
     return true;
   }
 
-  // The same material for the profile: the same solve of it, whatever the light or the views.
-  static bool same_material(const ColorMaterial& a, const ColorMaterial& b) {
-    return same_request(SolveRequest{a, 0.0, false, SubsurfaceModel::Stam},
-                        SolveRequest{b, 0.0, false, SubsurfaceModel::Stam});
+  // Whether a profile's material is the shown one, for the profile: the same solve of it, whatever the light or the
+  // views.
+  bool for_shown(const std::optional<ColorMaterial>& material) const {
+    return shown_ && material &&
+           same_request(SolveRequest{*material, 0.0, false, SubsurfaceModel::Stam},
+                        SolveRequest{shown_->request.material, 0.0, false, SubsurfaceModel::Stam});
   }
 
   // The sphere's translucency (app/window/spread_job.h): once the shown material's full solve is on screen, its
@@ -222,14 +224,11 @@ class Previewer final : private TestActionTarget {
       changed = true;
     }
     const bool wanted = spread_wanted();
-    if (wanted && !spread_job_.running() &&
-        !(spread_material_ && same_material(*spread_material_, shown_->request.material)) &&
-        !(spread_requested_ && same_material(*spread_requested_, shown_->request.material))) {
+    if (wanted && !spread_job_.running() && !for_shown(spread_material_) && !for_shown(spread_requested_)) {
       spread_requested_ = shown_->request.material;
       spread_job_.start(material_document(*spread_requested_));
     }
-    const bool current =
-        wanted && spread_profile_ && spread_material_ && same_material(*spread_material_, shown_->request.material);
+    const bool current = wanted && spread_profile_ && for_shown(spread_material_);
     if (current && spread_radius_ != state_.view.sphere_radius_mm) {
       try {
         renderer_.upload_spread(spread_texture(*spread_profile_, state_.view.sphere_radius_mm));
@@ -257,8 +256,7 @@ class Previewer final : private TestActionTarget {
       return "translucency: for the layer model only (the sphere shows a comparison model)";
     }
     if (spread_job_.running()) return "translucency: computing the material's profile...";
-    if (!shown_ || shown_->preview || !spread_material_ ||
-        !same_material(*spread_material_, shown_->request.material)) {
+    if (!shown_ || shown_->preview || !for_shown(spread_material_)) {
       return "translucency: waiting for the full solve";
     }
     if (!spread_profile_) return "no translucency: " + spread_note_;
@@ -496,7 +494,7 @@ class Previewer final : private TestActionTarget {
   // window through the same export path as the S key, and finish.
   void capture_if_ready(std::array<int, 2> framebuffer) {
     if (!capture_path_ || !script_.finished() || jobs_.running() || spread_job_.running()) return;
-    if (spread_wanted() && !(spread_material_ && same_material(*spread_material_, shown_->request.material))) {
+    if (spread_wanted() && !for_shown(spread_material_)) {
       return;  // the translucency of the shown material is still to come
     }
     const bool final_result = submitted_ && !worker_.settling();
