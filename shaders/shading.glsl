@@ -16,13 +16,19 @@ vec3 local_angles(vec3 n, vec3 l, vec3 v) {
   return vec3(acos(cos_i), acos(cos_o), phi);
 }
 
+// The surface term and the unscattered light [1/sr] at the local angles a (local_angles): the BRDF's parts that leave
+// where the light falls.
+float surface_brdf(vec3 a) {
+  vec3 wi = vec3(sin(a.x), 0.0, cos(a.x));
+  vec3 wo = vec3(sin(a.y) * cos(a.z), sin(a.y) * sin(a.z), cos(a.y));
+  return microfacet_brdf(wi, wo, u_eta, u_sigma, u_microfacet) + unscattered_brdf(wi, wo);
+}
+
 // The material's BRDF per channel [1/sr] for light along l seen along v at normal n (both above the surface):
 // surface term + unscattered + subsurface tables, the same sum as core's brdf_total.
 vec3 sphere_brdf(vec3 n, vec3 l, vec3 v) {
   vec3 a = local_angles(n, l, v);
-  vec3 wi = vec3(sin(a.x), 0.0, cos(a.x));
-  vec3 wo = vec3(sin(a.y) * cos(a.z), sin(a.y) * sin(a.z), cos(a.y));
-  return vec3(microfacet_brdf(wi, wo, u_eta, u_sigma, u_microfacet) + unscattered_brdf(wi, wo)) + brdf_subsurface(a.x, a.y, a.z);
+  return vec3(surface_brdf(a)) + brdf_subsurface(a.x, a.y, a.z);
 }
 
 // The material's subsurface light spread over the sphere by its spatial profile (docs/model.md §21.13): the
@@ -36,11 +42,7 @@ vec3 spread_radiance(vec3 n, vec3 l, vec3 v, float irradiance) {
   vec3 a = local_angles(n, l, v);
   float cos_i = dot(n, l);
   vec3 radiance = vec3(0.0);
-  if (cos_i > 0.0) {
-    vec3 wi = vec3(sin(a.x), 0.0, cos(a.x));
-    vec3 wo = vec3(sin(a.y) * cos(a.z), sin(a.y) * sin(a.z), cos(a.y));
-    radiance = vec3(microfacet_brdf(wi, wo, u_eta, u_sigma, u_microfacet) + unscattered_brdf(wi, wo)) * cos_i;
-  }
+  if (cos_i > 0.0) radiance = vec3(surface_brdf(a)) * cos_i;
   float width = float(textureSize(u_spread_table, 0).x);
   float u = (a.x / kPi * (width - 1.0) + 0.5) / width;
   vec3 spread = textureLod(u_spread_table, vec2(u, 0.5), 0.0).rgb;
