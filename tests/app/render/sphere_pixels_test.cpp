@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "app/gl/osmesa_context.h"
@@ -62,28 +63,38 @@ std::vector<Case> cases() {
           {surface_only, degrees_to_radians(35.0), 2.5}};
 }
 
-// The CPU radiance of one pixel (rows top-down), or a negative value off the sphere / in shadow.
-std::array<double, 3> cpu_radiance(const ColorTables& tables, const SphereView& view, const Viewport& viewport,
-                                   int x, int y, bool& lit) {
+// The shading geometry of pixel (x, y) (rows top-down) of the sphere view, as shaders/shading.glsl's local_angles:
+// the light's cosine and polar angle, the view's polar angle, and the azimuth between them about the normal. Unset off
+// the sphere, beyond r^2 = max_r2 of the view's radius.
+struct PixelAngles {
+  double cos_i, theta_i, theta_o, phi;
+};
+std::optional<PixelAngles> pixel_angles(const SphereView& view, const Viewport& viewport, int x, int y, double max_r2) {
   const std::array<double, 2> extent = view_extent(viewport, Renderer::kSphereMargin);
   const double px = ((x + 0.5) / viewport.width * 2.0 - 1.0) * extent[0];
   const double py = (1.0 - (y + 0.5) / viewport.height * 2.0) * extent[1];
-  lit = false;
   const double r2 = px * px + py * py;
-  if (r2 > 0.98) return {};
+  if (r2 > max_r2) return std::nullopt;
   const Vec3 n(px, py, std::sqrt(1.0 - r2));
   const Vec3 l(view.light[0], view.light[1], view.light[2]);
   const Vec3 v(0.0, 0.0, 1.0);
-  const double cos_i = n.dot(l);
-  if (cos_i < 0.05) return {};
-  lit = true;
-  const double cos_o = n.dot(v);
+  const double cos_i = std::clamp(n.dot(l), -1.0, 1.0), cos_o = n.dot(v);
   const Vec3 li = (l - cos_i * n).normalized();
   const Vec3 vo = (v - cos_o * n).normalized();
   const double phi = std::acos(std::clamp(li.dot(vo), -1.0, 1.0));
-  const double theta_i = std::acos(cos_i), theta_o = std::acos(cos_o);
+  return PixelAngles{cos_i, std::acos(cos_i), std::acos(cos_o), phi};
+}
+
+// The CPU radiance of one pixel (rows top-down), or a negative value off the sphere / in shadow.
+std::array<double, 3> cpu_radiance(const ColorTables& tables, const SphereView& view, const Viewport& viewport, int x,
+                                   int y, bool& lit) {
+  const std::optional<PixelAngles> a = pixel_angles(view, viewport, x, y, 0.98);
+  lit = a && a->cos_i >= 0.05;
+  if (!lit) return {};
   std::array<double, 3> radiance{};
-  for (int c = 0; c < 3; ++c) radiance[c] = brdf_total(tables, c, theta_i, theta_o, phi) * view.irradiance * cos_i;
+  for (int c = 0; c < 3; ++c) {
+    radiance[c] = brdf_total(tables, c, a->theta_i, a->theta_o, a->phi) * view.irradiance * a->cos_i;
+  }
   return radiance;
 }
 
@@ -165,21 +176,12 @@ TEST(SpherePixels, SpreadSubsurfaceMatchesTheCpuConvolution) {
   draw_scene(renderer, scene, size, size);
   RenderTarget::unbind();
   const std::vector<float> pixels = target.read_rgba32f();
-  const Viewport viewport{0, 0, size, size};
-  const std::array<double, 2> extent = view_extent(viewport, Renderer::kSphereMargin);
-  const Vec3 l(scene.sphere.light[0], scene.sphere.light[1], scene.sphere.light[2]);
   int checked = 0, past_terminator = 0;
   for (int y = 3; y < size; y += 7) {
     for (int x = 5; x < size; x += 7) {
-      const double px = ((x + 0.5) / size * 2.0 - 1.0) * extent[0];
-      const double py = (1.0 - (y + 0.5) / size * 2.0) * extent[1];
-      const double r2 = px * px + py * py;
-      if (r2 > 0.95) continue;
-      const Vec3 n(px, py, std::sqrt(1.0 - r2)), v(0.0, 0.0, 1.0);
-      const double cos_i = std::clamp(n.dot(l), -1.0, 1.0), cos_o = n.dot(v);
-      const Vec3 li = (l - cos_i * n).normalized(), vo = (v - cos_o * n).normalized();
-      const double phi = std::acos(std::clamp(li.dot(vo), -1.0, 1.0));
-      const double theta_i = std::acos(cos_i), theta_o = std::acos(cos_o);
+      const std::optional<PixelAngles> a = pixel_angles(scene.sphere, {0, 0, size, size}, x, y, 0.95);
+      if (!a) continue;
+      const auto [cos_i, theta_i, theta_o, phi] = *a;
       const double surface = cos_i > 0.0 ? brdf_surface(tables.material.layer, theta_i, theta_o, phi) * cos_i : 0.0;
       for (int c = 0; c < 3; ++c) {
         const double subsurface = tables.channels[static_cast<std::size_t>(c)].brdf_subsurface(
