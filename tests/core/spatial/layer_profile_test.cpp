@@ -17,6 +17,7 @@
 #include "core/spatial/single_scattering_profile.h"
 #include "tests/core/index_matched_slab.h"
 #include "tests/core/reference_csv.h"
+#include "tests/core/spatial/mcml_agreement.h"
 #include "tests/core/spatial/profile_against_walk.h"
 
 namespace skinlayer {
@@ -61,20 +62,7 @@ TEST(LayerProfile, AgreesWithMcmlsAnnuli) {
       if (expected.empty()) continue;
       const LayerProfile profile = layer_profile({c.tau, c.albedo, c.g}, edges, test::profile_test_options());
       const std::vector<double>& got = side == "reflectance" ? profile.reflectance : profile.transmittance;
-      double peak = 0.0, worst = 0.0;
-      for (const double v : got) peak = std::max(peak, v);
-      for (std::size_t i = 0; i < expected.size(); ++i) {
-        if (got[i] < 1e-3 * peak) continue;
-        const double relative = got[i] / expected[i] - 1.0;
-        const double power = expected[i] * kPi * (edges[i + 1] * edges[i + 1] - edges[i] * edges[i]);
-        const double noise = 1.0 / std::sqrt(kMcmlPhotons * power);
-        worst = std::max(worst, std::abs(relative) / (0.02 + 3.0 * noise));
-        EXPECT_LT(std::abs(relative), 0.02 + 3.0 * noise)
-            << c.name << " " << side << " annulus " << edges[i] << "-" << edges[i + 1] << ": profile " << got[i]
-            << ", MCML " << expected[i];
-      }
-      std::printf("  %s %s: %zu annuli, worst at %.0f%% of the tolerance\n", c.name.c_str(), side.c_str(),
-                  expected.size(), 100.0 * worst);
+      test::expect_within_mcml_noise(c.name + " " + side, got, expected, edges, kMcmlPhotons);
     }
   }
 }

@@ -15,6 +15,7 @@
 #include "core/spatial/layer_profile.h"
 #include "core/spatial/rough_top_single_scattering.h"
 #include "tests/core/reference_csv.h"
+#include "tests/core/spatial/mcml_agreement.h"
 
 namespace skinlayer {
 namespace {
@@ -43,25 +44,17 @@ TEST(SmoothFacesProfile, CollimatedSingleScatteringClosedFormIsTheSolvesFirstOrd
   EXPECT_NEAR(integral, power, 1e-4 * power);
 }
 
-// One face's profile (1/mfp^2, in the annuli of `table`) against MCML's rows (1/mm^2): where the profile exceeds 1e-3
-// of its peak, within 2% plus three times MCML's noise, 1/sqrt(1e6 P) relative for an annulus of power P.
+// One face's profile (1/mfp^2) against MCML's rows of `table` (1/mm^2, in 0.1 mm annuli; 10^6 photons), from
+// from_mm on.
 void expect_matches_mcml(const char* face, const std::vector<double>& profile, const test::CsvTable& table, double mu_t,
                          double from_mm = 0.0) {
-  double peak = 0.0, worst = 0.0;
-  for (const double v : profile) peak = std::max(peak, v);
+  std::vector<double> edges = {0.0}, got, expected;
   for (std::size_t i = 0; i < table.rows.size(); ++i) {
-    const double r0 = table.number(i, "r_inner_mm"), r1 = table.number(i, "r_outer_mm");
-    const double expected = table.number(i, "per_mm2");
-    const double got = profile[i] * mu_t * mu_t;  // 1/mfp^2 -> 1/mm^2
-    const double noise = 1.0 / std::sqrt(1e6 * expected * kPi * (r1 * r1 - r0 * r0));
-    const double relative = got / expected - 1.0;
-    std::printf("  %s [%.1f, %.1f) mm  profile %.4e  MCML %.4e  (%+.2f%%, noise %.1f%%)\n", face, r0, r1, got, expected,
-                100.0 * relative, 100.0 * noise);
-    if (profile[i] < 1e-3 * peak || r0 < from_mm) continue;
-    worst = std::max(worst, std::abs(relative) / (0.02 + 3.0 * noise));
-    EXPECT_LT(std::abs(relative), 0.02 + 3.0 * noise) << face << " annulus " << r0 << "-" << r1 << " mm";
+    edges.push_back(table.number(i, "r_outer_mm"));
+    expected.push_back(table.number(i, "per_mm2"));
+    got.push_back(profile[i] * mu_t * mu_t);  // 1/mfp^2 -> 1/mm^2
   }
-  std::printf("  %s: worst at %.0f%% of the tolerance\n", face, 100.0 * worst);
+  test::expect_within_mcml_noise(face, got, expected, edges, 1e6, true, from_mm);
 }
 
 // MCML 1.2.2's published sample (tests/reference/README.md): three layers of n 1.37 between air above and below,
