@@ -218,11 +218,6 @@ RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const
   return orders;
 }
 
-double rough_top_single_scattering_reflectance(std::span<const LateralSlab> slabs, const LateralTopInterface& top,
-                                               double k, const LateralFrequencyResolution& resolution) {
-  return rough_top_low_orders(slabs, top, k, resolution).reflected_once;
-}
-
 double rough_top_single_scattered_power(std::span<const LateralSlab> slabs, const LateralTopInterface& top,
                                         int ordinates, double r0, double r1) {
   if (!(r0 >= 0.0 && r1 >= r0)) throw std::invalid_argument("rough-top single scattering: needs 0 <= r0 <= r1");

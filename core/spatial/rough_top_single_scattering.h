@@ -23,17 +23,15 @@
 
 namespace skinlayer {
 
-// The first order in the albedos of lateral_stack_response's reflectance under `top` at frequency k, exactly: the
-// top's node radiance streamed down, scattered once, streamed up and out, every stream through the same M coupled
-// modes. With C = W diag(lambda) W^-1, streaming along node mu over optical depth t of slab l is
-// W diag(e^{-t (1 + (k / e_l) sin(theta) lambda) / mu}) W^-1, so the depth integral is closed-form per pair of
-// eigenvalues and slab. Nothing reflects below the stack.
-double rough_top_single_scattering_reflectance(std::span<const LateralSlab> slabs, const LateralTopInterface& top,
-                                               double k, const LateralFrequencyResolution& resolution);
-
-// The same light's first order on the bottom of a finite stack, and its zeroth: the node radiance streamed down through
-// every slab without being scattered (§21.15), leaving an index-matched bottom. Reflected: as above. For a
-// semi-infinite stack both transmitted parts are 0.
+// The ordinates' own low orders in the albedos under `top` at frequency k, exactly, every stream through the same M
+// coupled modes. With C = W diag(lambda) W^-1, streaming along node mu over optical depth t of slab l is
+// W diag(e^{-t (1 + (k / e_l) sin(theta) lambda) / mu}) W^-1, so each depth integral is closed-form per pair of
+// eigenvalues and slab. Nothing reflects at either face.
+//   reflected_once: lateral_stack_response's reflectance to first order: the top's node radiance streamed down,
+//     scattered once, streamed up and out through the top;
+//   transmitted_once, transmitted_unscattered: on the bottom of a finite stack, the first order, and the node radiance
+//     streamed down through every slab unscattered (§21.15), leaving an index-matched bottom; 0 for a semi-infinite
+//     stack.
 struct RoughTopLowOrders {
   double reflected_once = 0.0, transmitted_once = 0.0, transmitted_unscattered = 0.0;
 };

@@ -37,7 +37,7 @@ TEST(RoughTopSingleScattering, IsTheFirstOrderInTheAlbedoOfTheFullSolve) {
         const double twice = rough_top_lateral_response(tau, 2.0 * e, g, top, k, resolution).reflectance / (2.0 * e);
         const double extrapolated = 2.0 * once - twice;
         const LateralSlab slab[] = {{tau, 1.0, g}};
-        const double first_order = rough_top_single_scattering_reflectance(slab, top, k, resolution);
+        const double first_order = rough_top_low_orders(slab, top, k, resolution).reflected_once;
         std::printf("  tau %4.1f g %.1f k %4.0f  first order %.9f  extrapolated %.9f (%+.1e)\n", tau, g, k, first_order,
                     extrapolated, first_order / extrapolated - 1.0);
         EXPECT_NEAR(first_order, extrapolated, 1e-5 * first_order) << tau << " " << g << " " << k;
@@ -58,13 +58,13 @@ TEST(RoughTopSingleScattering, InAStackIsTheFirstOrderInTheAlbedosOfTheFullSolve
     const LateralSlab unit[] = {{0.6, 0.5, 0.7, 1.0}, {kInf, 1.0, 0.85, 3.0}};
     const double once = lateral_stack_response(weak, &top, k, resolution).reflectance / e;
     const double twice = lateral_stack_response(weaker, &top, k, resolution).reflectance / (2.0 * e);
-    const double first_order = rough_top_single_scattering_reflectance(unit, top, k, resolution);
+    const double first_order = rough_top_low_orders(unit, top, k, resolution).reflected_once;
     EXPECT_NEAR(first_order, 2.0 * once - twice, 1e-5 * first_order) << k;
   }
   // At k = 0, the closed form of the stack.
   const LateralSlab unit[] = {{0.6, 0.5, 0.7, 1.0}, {kInf, 1.0, 0.85, 3.0}};
   EXPECT_NEAR(rough_top_single_scattered_power(unit, top, 12, 0.0, kInf),
-              rough_top_single_scattering_reflectance(unit, top, 0.0, resolution), 1e-9);
+              rough_top_low_orders(unit, top, 0.0, resolution).reflected_once, 1e-9);
 }
 
 // With the azimuth integrated exactly the closed forms are the ordinates' single scattering with infinitely many
@@ -75,10 +75,10 @@ TEST(RoughTopSingleScattering, ClosedFormsAreTheManyModeLimitOfTheOrdinates) {
   const LateralSlab half_space[] = {{kInf, 0.9, 0.8}};
   const double total = rough_top_single_scattered_transform(0.9, 0.8, top, 12, 0.0);
   EXPECT_NEAR(rough_top_single_scattered_power(half_space, top, 12, 0.0, kInf), total, 1e-12);
-  EXPECT_NEAR(rough_top_single_scattering_reflectance(half_space, top, 0.0, {12, 4}), total, 1e-9 * total);
+  EXPECT_NEAR(rough_top_low_orders(half_space, top, 0.0, {12, 4}).reflected_once, total, 1e-9 * total);
   for (const double k : {1.0, 10.0, 50.0}) {
     const double closed = rough_top_single_scattered_transform(0.9, 0.8, top, 12, k);
-    const double many = rough_top_single_scattering_reflectance(half_space, top, k, {12, 40});
+    const double many = rough_top_low_orders(half_space, top, k, {12, 40}).reflected_once;
     std::printf("  k %4.0f  closed form %.9f  40 modes %.9f (%+.1e)\n", k, closed, many, many / closed - 1.0);
     EXPECT_NEAR(many, closed, 2e-4 * closed) << k;
   }
