@@ -16,7 +16,7 @@ namespace {
 void require_profile_layer(const Material& m, Incidence incidence) {
   std::string why;
   const bool stack = m.layer_count() > 1;
-  const bool ends_in_half_space = std::isinf(stack ? m.below.back().tau : m.tau);
+  const bool ends_in_half_space = std::isinf(m.total_tau());
   const bool all_lengths = m.extinction && std::all_of(m.below.begin(), m.below.end(),
                                                        [](const StackedLayer& l) { return l.extinction.has_value(); });
   const bool albedo_below_1 = m.albedo < 1.0 && std::all_of(m.below.begin(), m.below.end(),
@@ -54,7 +54,7 @@ constexpr int kTransmittedRadianceOrdinates = 24;
 
 LayerProfileOptions options_for(const Material& m, const ProfileRequest& request) {
   LayerProfileOptions options = request.options;
-  const bool finite = std::isfinite(m.layer_count() > 1 ? m.below.back().tau : m.tau);
+  const bool finite = std::isfinite(m.total_tau());
   if (finite && !options.reflectance_only && (m.eta != 1.0 || request.incidence == Incidence::Diffuse)) {
     options.resolution.ordinates = std::max(options.resolution.ordinates, kTransmittedRadianceOrdinates);
   }
