@@ -5,7 +5,6 @@
 
 #include <Eigen/Dense>
 #include <cmath>
-#include <complex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -33,20 +32,8 @@ struct SolvedSlab {
   double beam = 0;  // the collimated beam's flux at the slab's top (open or smooth top), else 0
   const LateralInternalFace* face = nullptr;  // a rough interface above the slab (not the first's), else none
 
-  // Column c's solution at node row `row` and depth t in the slab.
-  std::complex<double> column(int c, int row, double t) const {
-    const std::complex<double> rate = modes.lambda(c);
-    const int h = static_cast<int>(modes.lambda.size()) / 2;
-    return modes.vectors(row, c) * std::exp(-rate * (c < h ? t : t - tau));
-  }
-  double particular(int row, double t) const { return beam == 0.0 ? 0.0 : beam * modes.beam(row) * std::exp(-t); }
-  // Every column at every node row at depth t (n x count), and the particular solution there.
-  Eigen::MatrixXcd values(double t) const {
-    const int h = static_cast<int>(modes.lambda.size()) / 2;
-    Eigen::VectorXcd factor(count);
-    for (int c = 0; c < count; ++c) factor(c) = std::exp(-modes.lambda(c) * (c < h ? t : t - tau));
-    return modes.vectors.leftCols(count) * factor.asDiagonal();
-  }
+  // Every column's real solution at every node row at depth t (n x count), and the particular solution there.
+  Eigen::MatrixXd values(double t) const { return modes.real_solutions(t, tau, count); }
   Eigen::VectorXd particulars(double t) const {
     return beam == 0.0 ? Eigen::VectorXd::Zero(modes.vectors.rows())
                        : Eigen::VectorXd(beam * std::exp(-t) * modes.beam);
@@ -125,36 +112,36 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
   // interface joins them. Under a finite last slab, u+(tau) = F_b u-(tau) at a smooth bottom, and nothing enters going
   // up over an index-matched half-space. (The collimated beam's own reflection at a smooth bottom, e^{-tau} F_b(1) of
   // it, is left out: §21.14.)
-  Eigen::MatrixXcd B = Eigen::MatrixXcd::Zero(unknowns, unknowns);
-  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(unknowns);
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(unknowns, unknowns);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
   const auto rows = [&](int m, int up) { return layout.at(m, up, 0); };  // the first of a mode's N rows one way
   int equation = 0;
   const SolvedSlab& first = solved.front();
   {
-    const Eigen::MatrixXcd values = first.values(0.0);
+    const Eigen::MatrixXd values = first.values(0.0);
     const Eigen::VectorXd beam = first.particulars(0.0);
     for (int m = 0; m < M; ++m) {
       auto block = B.block(equation, first.offset, N, first.count);
       block = values.middleRows(rows(m, 0), N);
-      rhs.segment(equation, N) = -beam.segment(rows(m, 0), N).cast<std::complex<double>>();
+      rhs.segment(equation, N) = -beam.segment(rows(m, 0), N);
       if (top != nullptr) {
         const Eigen::MatrixXd& reflect = top->reflection[static_cast<std::size_t>(m)];
         block -= reflect * values.middleRows(rows(m, 1), N);
-        rhs.segment(equation, N) += (reflect * beam.segment(rows(m, 1), N)).cast<std::complex<double>>();
-        if (m == 0) rhs.segment(equation, N) += top->source.cast<std::complex<double>>();
+        rhs.segment(equation, N) += reflect * beam.segment(rows(m, 1), N);
+        if (m == 0) rhs.segment(equation, N) += top->source;
       }
       equation += N;
     }
   }
   for (std::size_t l = 0; l + 1 < solved.size(); ++l) {
     const SolvedSlab &upper = solved[l], &lower = solved[l + 1];
-    const Eigen::MatrixXcd upper_face = upper.values(upper.tau), lower_face = lower.values(0.0);
+    const Eigen::MatrixXd upper_face = upper.values(upper.tau), lower_face = lower.values(0.0);
     const Eigen::VectorXd beam_above = upper.particulars(upper.tau), beam_below = lower.particulars(0.0);
     if (eliminate_last && l + 2 == solved.size()) {
       // The half-space's decaying solutions V at its top, split by direction, give its reflection R = V_up V_down^-1.
       // With c its weights and x the rest, continuity U x + p_U = V c + p_L makes, on the up rows,
       //   (U_up - R U_down) x = R (p_U,down - p_L,down) + p_L,up - p_U,up.
-      Eigen::MatrixXcd down(h, h), up(h, h), upper_down(h, upper.count), upper_up(h, upper.count);
+      Eigen::MatrixXd down(h, h), up(h, h), upper_down(h, upper.count), upper_up(h, upper.count);
       Eigen::VectorXd gap_down(h), gap_up(h);  // p_U - p_L
       for (int m = 0; m < M; ++m) {
         down.middleRows(m * N, N) = lower_face.middleRows(rows(m, 0), N);
@@ -164,17 +151,16 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
         gap_down.segment(m * N, N) = beam_above.segment(rows(m, 0), N) - beam_below.segment(rows(m, 0), N);
         gap_up.segment(m * N, N) = beam_above.segment(rows(m, 1), N) - beam_below.segment(rows(m, 1), N);
       }
-      const Eigen::MatrixXcd reflection = down.transpose().partialPivLu().solve(up.transpose()).transpose();
+      const Eigen::MatrixXd reflection = down.transpose().partialPivLu().solve(up.transpose()).transpose();
       B.block(equation, upper.offset, h, upper.count) = upper_up - reflection * upper_down;
-      rhs.segment(equation, h) =
-          reflection * gap_down.cast<std::complex<double>>() - gap_up.cast<std::complex<double>>();
+      rhs.segment(equation, h) = reflection * gap_down - gap_up;
       equation += h;
       continue;
     }
     if (lower.face == nullptr) {
       B.block(equation, upper.offset, n, upper.count) = upper_face;
       B.block(equation, lower.offset, n, lower.count) = -lower_face;
-      rhs.segment(equation, n) = (beam_below - beam_above).cast<std::complex<double>>();
+      rhs.segment(equation, n) = beam_below - beam_above;
       equation += n;
       continue;
     }
@@ -195,31 +181,29 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
     }
   }
   if (!semi_infinite) {
-    const Eigen::MatrixXcd values = last.values(last.tau);
+    const Eigen::MatrixXd values = last.values(last.tau);
     const Eigen::VectorXd beam = last.particulars(last.tau);
     const Eigen::VectorXd reflect = bottom ? bottom->reflection : Eigen::VectorXd::Zero(N);
     for (int m = 0; m < M; ++m) {
       B.block(equation, last.offset, N, last.count) =
           values.middleRows(rows(m, 1), N) - reflect.asDiagonal() * values.middleRows(rows(m, 0), N);
-      rhs.segment(equation, N) = (-beam.segment(rows(m, 1), N) + reflect.asDiagonal() * beam.segment(rows(m, 0), N))
-                                     .cast<std::complex<double>>();
+      rhs.segment(equation, N) = -beam.segment(rows(m, 1), N) + reflect.asDiagonal() * beam.segment(rows(m, 0), N);
       equation += N;
     }
   }
   check(equation == unknowns, "the boundary system is not square");
-  const Eigen::VectorXcd coefficients = B.partialPivLu().solve(rhs);
+  const Eigen::VectorXd coefficients = B.partialPivLu().solve(rhs);
 
   // Fluxes out of the faces: mode 0 only, 2 pi sum_j a_j mu_j I(mu_j) times the fraction that crosses the face.
   const auto mode0_flux = [&](const SolvedSlab& slab, int up, double depth) {
-    std::complex<double> flux = 0.0;
+    const Eigen::VectorXd radiance =
+        slab.values(depth) * coefficients.segment(slab.offset, slab.count) + slab.particulars(depth);
+    double flux = 0.0;
     for (int i = 0; i < N; ++i) {
-      const int row = layout.at(0, up, i);
-      std::complex<double> value = slab.particular(row, depth);
-      for (int c = 0; c < slab.count; ++c) value += coefficients(slab.offset + c) * slab.column(c, row, depth);
       const double crossing = up == 1 ? (top ? top->exit(i) : 1.0) : (bottom ? bottom->exit(i) : 1.0);
-      flux += q.weights[i] * q.nodes[i] * crossing * value;
+      flux += q.weights[i] * q.nodes[i] * crossing * radiance(layout.at(0, up, i));
     }
-    return 2.0 * kPi * flux.real();
+    return 2.0 * kPi * flux;
   };
   LateralFrequencyResponse response;
   response.reflectance = mode0_flux(first, 1, 0.0);

@@ -153,7 +153,12 @@ LateralSlabModes lateral_slab_modes(double operator_albedo, double source_albedo
   Eigen::MatrixXcd PS(h, h);
   PS.real() = P * S.real();
   PS.imag() = P * S.imag();
+  slab.imaginary.assign(static_cast<std::size_t>(n), false);
   for (int l = 0; l < h; ++l) {
+    // The second of a conjugate pair (its lambda^2 and vector the first's conjugates, as EigenSolver gives them).
+    const bool second = l > 0 && squared(l).imag() != 0.0 && squared(l) == std::conj(squared(l - 1)) &&
+                        !slab.imaginary[static_cast<std::size_t>(l - 1)];
+    slab.imaginary[static_cast<std::size_t>(l)] = slab.imaginary[static_cast<std::size_t>(h + l)] = second;
     const std::complex<double> root = std::sqrt(squared(l));  // Re >= 0: the decaying one
     check(root.real() > 0.0, "a mode neither decays nor grows (conservative scattering at k = 0?)");
     const Eigen::VectorXcd delta = PS.col(l) / root;
@@ -168,6 +173,20 @@ LateralSlabModes lateral_slab_modes(double operator_albedo, double source_albedo
     }
   }
   return slab;
+}
+
+Eigen::MatrixXd LateralSlabModes::real_solutions(double t, double bottom, int count) const {
+  const int h = static_cast<int>(lambda.size()) / 2;
+  Eigen::MatrixXd solutions(vectors.rows(), count);
+  for (int c = 0; c < count; ++c) {
+    const std::complex<double> factor = std::exp(-lambda(c) * (c < h ? t : t - bottom));
+    if (imaginary[static_cast<std::size_t>(c)]) {
+      solutions.col(c) = (vectors.col(c) * factor).imag();
+    } else {
+      solutions.col(c) = (vectors.col(c) * factor).real();
+    }
+  }
+  return solutions;
 }
 
 }  // namespace skinlayer

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "core/medium/henyey_greenstein.h"
 #include "core/series/quadrature.h"
@@ -36,10 +37,19 @@ double beam_scattering_on_nodes(double g, const QuadratureRule& quadrature);
 // caller refers them to the slab's bottom). `beam`: X with (A - 1) X = D^-1 s, the particular solution X e^{-t} of a
 // collimated beam of unit flux at the slab's top, travelling straight down, whose first scattering s has the albedo
 // `source_albedo`; zero where source_albedo is 0.
+//
+// The system is real, so its complex solutions come in conjugate pairs, adjacent (the one with Im lambda^2 > 0
+// first). A real basis takes the real part of the first and the imaginary part of the second (the conjugate's
+// imaginary part, negated): `imaginary` marks the latter, and real_solutions() gives them (§21.3).
 struct LateralSlabModes {
   Eigen::VectorXcd lambda;
   Eigen::MatrixXcd vectors;
   Eigen::VectorXd beam;
+  std::vector<bool> imaginary;  // per column: the solution's imaginary part stands for it, else its real part
+
+  // The real solutions of columns [0, count) at depth t, each referred to its own depth: the decaying columns to
+  // t = 0 and the growing ones (from size/2 on) to t = bottom.
+  Eigen::MatrixXd real_solutions(double t, double bottom, int count) const;
 };
 
 // operator_albedo in [0, 1) scatters in the operator; operator_albedo = 0 (streaming alone) is solved as one M x M
