@@ -160,7 +160,7 @@ RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const
                                         std::exp(-total_optical / q.nodes[j]) * streamed.real();
     }
   }
-  Eigen::MatrixXcd depth(M, M), mixed(M, M);
+  Eigen::MatrixXcd depth(M, M), through(M, M);
   for (std::size_t l = 0; l < slabs.size(); ++l) {
     const LateralSlab& slab = slabs[l];
     if (slab.tau == 0.0 || slab.albedo == 0.0) continue;
@@ -169,6 +169,15 @@ RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const
     // Below the slab, for the light scattered down (finite stacks only).
     const double below = transmits ? total_optical - above - slab.tau : 0.0;
     const double below_geometric = transmits ? total_geometric - above_geometric - slab.tau / e : 0.0;
+    // The lateral factors of the light that goes down to the slab and back, per mode and node: e^{-G_l lateral} to
+    // the slab's top and e^{-tau_l lateral / e_l} through it. Their products make the exponentials of each pair.
+    Eigen::MatrixXcd reach(M, N), across(M, N);
+    for (int node = 0; node < N; ++node) {
+      for (int a = 0; a < M; ++a) {
+        reach(a, node) = std::exp(-above_geometric * lateral(a, node));
+        across(a, node) = std::isinf(slab.tau) ? 0.0 : std::exp(-slab.tau * lateral(a, node) / e);
+      }
+    }
     for (const bool up : {true, false}) {
       if (!up && !transmits) continue;
       const FourierKernel& scattering = up ? phase.opposite : phase.same;
@@ -177,15 +186,18 @@ RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const
         for (int j = 0; j < N; ++j) {
           if (top.source(j) == 0.0) continue;
           const double mu_i = q.nodes[i], mu_j = q.nodes[j];
+          const double base = 1.0 / mu_i + 1.0 / mu_j;  // the decay per optical depth down along j and up along i
+          const double to_slab = std::exp(-above * base), through_slab = std::exp(-slab.tau * base);
           for (int a = 0; a < M; ++a) {
             for (int b = 0; b < M; ++b) {
               if (up) {
                 // Down to the slab and back (e^{-(T_l base + G_l lateral)}), then int_0^tau_l e^{-t (base + lateral /
-                // e_l)} dt, base = 1/mu_i + 1/mu_j.
-                const double base = 1.0 / mu_i + 1.0 / mu_j;
-                const std::complex<double> sideways = lateral(a, i) + lateral(b, j);
-                depth(a, b) = std::exp(-(above * base + above_geometric * sideways)) *
-                              depth_integral(base + sideways / e, slab.tau);
+                // e_l)} dt, base = 1/mu_i + 1/mu_j: (1 - e^{-rate tau_l}) / rate from the factors above.
+                const std::complex<double> rate = base + (lateral(a, i) + lateral(b, j)) / e;
+                const std::complex<double> integral = std::isinf(slab.tau) || std::abs(rate * slab.tau) < 1e-3
+                                                          ? depth_integral(rate, slab.tau)
+                                                          : (1.0 - through_slab * across(a, i) * across(b, j)) / rate;
+                depth(a, b) = to_slab * reach(a, i) * reach(b, j) * integral;
               } else {
                 // Down along j to depth t in the slab, then down along i through the rest of the stack:
                 //   e^{-(T_l / mu_j + G_l lat_j)} e^{-(B_l / mu_i + G'_l lat_i)} int_0^tau_l e^{-t d_j - (tau_l - t)
@@ -200,14 +212,15 @@ RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const
               }
             }
           }
-          // sum_m pi_m out(a, m) in(m, b), pi_m = c_m a_j P^m(i, j): the scattering, diagonal in m.
-          mixed.setZero();
+          // sum_ab depth(a, b) sum_m out(a, m) pi_m in(m, b), pi_m = c_m a_j P^m(i, j) the scattering, diagonal
+          // in m: sum_m pi_m sum_a out(a, m) (depth in^T)(a, m), one product instead of M outer ones.
+          through.noalias() = depth * in.transpose();
+          const Eigen::VectorXcd per_mode = (out.array() * through.array()).colwise().sum().transpose();
           for (int m = 0; m < M; ++m) {
             const double scatter =
                 fourier_azimuth_weight(m) * q.weights[j] * scattering[static_cast<std::size_t>(m)](i, j);
-            mixed.noalias() += scatter * out.col(m) * in.row(m);
+            leaving += top.source(j) * scatter * per_mode(m);
           }
-          leaving += top.source(j) * (depth.array() * mixed.array()).sum();
         }
         // mu_i cancels the 1/mu_i of the source; nothing reflects below the stack, and everything leaves it there.
         const double flux = 2.0 * kPi * q.weights[i] * slab.albedo * leaving.real();
