@@ -58,34 +58,60 @@ class FrequencySpline {
 };
 
 // int_0^kmax F(k) kernel(k) dk by 8-point Gauss-Legendre panels: within each cell of the spline (so that no panel
-// straddles its C1 joins), no wider than half the period of a Bessel kernel of largest radius r (and 0.25).
-template <class Kernel>
-double integrate_over_frequency(const FrequencySpline& F, double r, const Kernel& kernel) {
-  const double width = std::min(0.25, kPi / std::max(r, 1e-12));
-  const QuadratureRule unit = gauss_legendre(8, 0.0, 1.0);
-  const auto integrand = [&](double k) { return F(k) * kernel(k); };
-  double total = 0.0;
-  for (int cell = 0; cell + 1 < F.samples(); ++cell) {
-    const double from = F.node(cell), to = F.node(cell + 1);
-    const int panels = std::max(1, static_cast<int>(std::ceil((to - from) / width)));
-    for (int p = 0; p < panels; ++p) {
-      total +=
-          integrate_mapped(unit, from + (to - from) * p / panels, from + (to - from) * (p + 1) / panels, integrand);
+// straddles its C1 joins), at most `width` wide. Level L has width 0.25 / 2^L; a Bessel kernel of largest radius r
+// takes the first level no wider than half its period, pi / r. The nodes and F's weighted values are shared by every
+// radius of a level, so the spline is evaluated once per node, not once per node and radius.
+class FrequencyQuadrature {
+ public:
+  FrequencyQuadrature(const FrequencySpline& F, double largest_radius) {
+    const QuadratureRule unit = gauss_legendre(8, 0.0, 1.0);
+    for (int level = 0; level <= level_for(largest_radius); ++level) {
+      const double width = 0.25 / std::ldexp(1.0, level);
+      Level nodes;
+      for (int cell = 0; cell + 1 < F.samples(); ++cell) {
+        const double from = F.node(cell), to = F.node(cell + 1);
+        const int panels = std::max(1, static_cast<int>(std::ceil((to - from) / width)));
+        const double length = (to - from) / panels;
+        for (int p = 0; p < panels; ++p) {
+          for (std::size_t g = 0; g < unit.nodes.size(); ++g) {
+            const double k = from + length * (p + unit.nodes[g]);
+            nodes.k.push_back(k);
+            nodes.weighted.push_back(length * unit.weights[g] * F(k));
+          }
+        }
+      }
+      levels_.push_back(std::move(nodes));
     }
   }
-  return total;
-}
+  // int_0^kmax F(k) kernel(k) dk, on the level that a kernel of largest radius r needs.
+  template <class Kernel>
+  double integrate(double r, const Kernel& kernel) const {
+    const Level& nodes = levels_[std::min(static_cast<std::size_t>(level_for(r)), levels_.size() - 1)];
+    double total = 0.0;
+    for (std::size_t i = 0; i < nodes.k.size(); ++i) total += nodes.weighted[i] * kernel(nodes.k[i]);
+    return total;
+  }
+
+ private:
+  struct Level {
+    std::vector<double> k, weighted;
+  };
+  static int level_for(double r) {
+    return r * 0.25 <= kPi ? 0 : static_cast<int>(std::ceil(std::log2(r * 0.25 / kPi)));
+  }
+  std::vector<Level> levels_;
+};
 
 // int_0^kmax F(k) [r1 J1(k r1) - r0 J1(k r0)] dk: the power through the annulus [r0, r1).
-double annulus_power(const FrequencySpline& F, double r0, double r1) {
-  return integrate_over_frequency(F, r1, [&](double k) {
+double annulus_power(const FrequencyQuadrature& F, double r0, double r1) {
+  return F.integrate(r1, [&](double k) {
     return r1 * Eigen::numext::bessel_j1(k * r1) - (r0 > 0.0 ? r0 * Eigen::numext::bessel_j1(k * r0) : 0.0);
   });
 }
 
 // (1 / 2 pi) int_0^kmax F(k) J0(k r) k dk: the inverse Hankel transform at one radius.
-double point_value(const FrequencySpline& F, double r) {
-  return integrate_over_frequency(F, r, [&](double k) { return Eigen::numext::bessel_j0(k * r) * k; }) / (2.0 * kPi);
+double point_value(const FrequencyQuadrature& F, double r) {
+  return F.integrate(r, [&](double k) { return Eigen::numext::bessel_j0(k * r) * k; }) / (2.0 * kPi);
 }
 
 void check_options(const LayerProfileOptions& options) {
@@ -241,22 +267,27 @@ MultipleScatteringTransforms multiple_scattering_transforms(const SolvedLayer& s
           all.front().transmittance};
 }
 
-// The totals, then value(solved, face, transform, i) at each of `count` places (annuli or radii), on both faces.
+// The totals, then value(solved, face, transform, i) at each of `count` places (annuli or radii) out to
+// largest_radius, on both faces, the places side by side through the caller's parallel-for.
 template <class Value>
 LayerProfile assemble_profile(const ProfileLayer& layer, const LayerProfileOptions& options, std::size_t count,
-                              const Value& value) {
+                              double largest_radius, const Value& value) {
   const SolvedLayer solved(layer, options);
   const MultipleScatteringTransforms ms = multiple_scattering_transforms(solved);
+  const bool transmits = !options.reflectance_only && std::isfinite(solved.slabs.back().tau);
+  const FrequencyQuadrature reflected(ms.reflected, largest_radius);
+  const std::optional<FrequencyQuadrature> transmitted =
+      transmits ? std::optional(FrequencyQuadrature(ms.transmitted, largest_radius)) : std::nullopt;
   LayerProfile profile;
   profile.total_reflectance = ms.total_reflectance;
   profile.total_transmittance = ms.total_transmittance;
-  for (std::size_t i = 0; i < count; ++i) {
-    profile.reflectance.push_back(value(solved, LayerFace::Top, ms.reflected, i));
-    if (!options.reflectance_only) {
-      profile.transmittance.push_back(
-          std::isfinite(solved.slabs.back().tau) ? value(solved, LayerFace::Bottom, ms.transmitted, i) : 0.0);
-    }
-  }
+  profile.reflectance.resize(count);
+  if (!options.reflectance_only) profile.transmittance.assign(count, 0.0);
+  run_parallel(options.parallel_for, static_cast<int>(count), [&](int place) {
+    const std::size_t i = static_cast<std::size_t>(place);
+    profile.reflectance[i] = value(solved, LayerFace::Top, reflected, i);
+    if (transmits) profile.transmittance[i] = value(solved, LayerFace::Bottom, *transmitted, i);
+  });
   return profile;
 }
 
@@ -292,8 +323,8 @@ LayerProfile layer_profile(const ProfileLayer& layer, std::span<const double> ed
     throw ParameterError("profile: the annuli's edges must be at least two finite, increasing radii from 0 or more");
   }
   return assemble_profile(
-      layer, options, edges.size() - 1,
-      [&](const SolvedLayer& solved, LayerFace face, const FrequencySpline& transform, std::size_t a) {
+      layer, options, edges.size() - 1, edges.back(),
+      [&](const SolvedLayer& solved, LayerFace face, const FrequencyQuadrature& transform, std::size_t a) {
         const double r0 = edges[a], r1 = edges[a + 1];
         return (solved.single_scattered_power(face, r0, r1) + annulus_power(transform, r0, r1)) /
                (kPi * (r1 * r1 - r0 * r0));
@@ -306,8 +337,8 @@ LayerProfile layer_profile_at(const ProfileLayer& layer, std::span<const double>
     throw ParameterError("profile: radii must be finite and > 0 (the profile is infinite at the beam)");
   }
   return assemble_profile(
-      layer, options, radii.size(),
-      [&](const SolvedLayer& solved, LayerFace face, const FrequencySpline& transform, std::size_t i) {
+      layer, options, radii.size(), *std::max_element(radii.begin(), radii.end()),
+      [&](const SolvedLayer& solved, LayerFace face, const FrequencyQuadrature& transform, std::size_t i) {
         return solved.single_scattered_density(face, radii[i]) + point_value(transform, radii[i]);
       });
 }
