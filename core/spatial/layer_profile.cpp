@@ -59,7 +59,8 @@ class FrequencySpline {
 
 // int_0^kmax F(k) kernel(k) dk by 8-point Gauss-Legendre panels: within each cell of the spline (so that no panel
 // straddles its C1 joins), at most `width` wide. Level L has width 0.25 / 2^L; a Bessel kernel of largest radius r
-// takes the first level no wider than half its period, pi / r. The nodes and F's weighted values are shared by every
+// takes the first level no wider than its period, 2 pi / r (eight nodes a period; against half a period the skin's
+// point values move by 5e-8 relative). The nodes and F's weighted values are shared by every
 // radius of a level, so the spline is evaluated once per node, not once per node and radius.
 class FrequencyQuadrature {
  public:
@@ -97,7 +98,7 @@ class FrequencyQuadrature {
     std::vector<double> k, weighted;
   };
   static int level_for(double r) {
-    return r * 0.25 <= kPi ? 0 : static_cast<int>(std::ceil(std::log2(r * 0.25 / kPi)));
+    return r * 0.25 <= 2.0 * kPi ? 0 : static_cast<int>(std::ceil(std::log2(r * 0.25 / (2.0 * kPi))));
   }
   std::vector<Level> levels_;
 };
