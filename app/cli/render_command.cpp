@@ -73,7 +73,7 @@ std::string render_usage() {
          "  --sphere-radius MM   a sphere of this radius in mm, in [0.1, 10000], whose subsurface light spreads by\n"
          "                       the material's profile (skinlayer profile), bleeding past the terminator; the\n"
          "                       material needs a profile and lengths (mu_t; a skin has them). A skin takes about\n"
-         "                       a minute on two cores. Without it the light leaves where it falls.\n" +
+         "                       5 s on two cores. Without it the light leaves where it falls.\n" +
          lighting_flags_usage() + "\n" +
          "A --skin renders its spectrum's linear sRGB (CIE 1931 2-degree, D65); --wavelength NM one wavelength's\n"
          "grey material.\n" +
