@@ -1,6 +1,6 @@
-// docs/model.md §21.4, §21.9, §21.11, §21.14 and §21.16: slabs at one lateral frequency joined through their faces
-// (continuous, or a rough interface), under an open, rough or smooth top and over a matched or smooth bottom, and the
-// fluxes out of the stack.
+// docs/model.md §21.4, §21.9, §21.11, §21.14, §21.16 and §21.17: slabs at one lateral frequency joined through their
+// faces (continuous, or a rough interface), under an open, rough or smooth top and over a matched half-space or a
+// bottom face (§21.17), and the fluxes out of the stack.
 #include "core/spatial/lateral_frequency_response.h"
 
 #include <Eigen/Dense>
@@ -12,6 +12,7 @@
 
 #include "core/conventions.h"
 #include "core/series/quadrature.h"
+#include "core/spatial/lateral_bottom_face.h"
 #include "core/spatial/lateral_internal_face.h"
 #include "core/spatial/lateral_slab_modes.h"
 #include "core/spatial/lateral_top_interface.h"
@@ -43,7 +44,7 @@ struct SolvedSlab {
 // The solve with the albedo in the scattering operator scaled by operator_scale (1, or 0 for the first order in Omega
 // of a collimated beam, whose source keeps its albedo).
 LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, double operator_scale,
-                                        const LateralTopInterface* top, const LateralSmoothFace* bottom, double k,
+                                        const LateralTopInterface* top, const LateralBottomFace* bottom, double k,
                                         const LateralFrequencyResolution& resolution,
                                         std::span<const std::optional<LateralInternalFace>> faces = {}) {
   check(!slabs.empty(), "needs at least one slab");
@@ -60,7 +61,8 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
               static_cast<int>(top->reflection.size()) >= resolution.azimuth_modes,
           "the top interface's operators were built for another resolution");
   }
-  check(bottom == nullptr || bottom->reflection.size() == resolution.ordinates,
+  check(bottom == nullptr || (bottom->exit.size() == resolution.ordinates &&
+                              static_cast<int>(bottom->reflection.size()) >= resolution.azimuth_modes),
         "the bottom face was built for another resolution");
   check(faces.empty() || faces.size() == slabs.size(), "needs one entry of faces per slab");
   for (std::size_t l = 0; l < faces.size(); ++l) {
@@ -109,9 +111,9 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
   // Boundary conditions (one row each), filled block by block from each slab's solutions at its faces. At the top,
   // u-(0) = t12 + R21 u+(0) under a rough top, mode by mode (the i^m factor is the same on both sides, and t12 is mode
   // 0 alone), and nothing enters going down under an open one. Between slabs every node radiance is continuous, or an
-  // interface joins them. Under a finite last slab, u+(tau) = F_b u-(tau) at a smooth bottom, and nothing enters going
-  // up over an index-matched half-space. (The collimated beam's own reflection at a smooth bottom, e^{-tau} F_b(1) of
-  // it, is left out: §21.14.)
+  // interface joins them. Under a finite last slab, u+(tau) = R23 u-(tau) at a bottom face, mode by mode, and nothing
+  // enters going up over an index-matched half-space. (The collimated beam's own reflection at a bottom face, e^{-tau}
+  // of it, is left out: §21.14.)
   Eigen::MatrixXd B = Eigen::MatrixXd::Zero(unknowns, unknowns);
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
   const auto rows = [&](int m, int up) { return layout.at(m, up, 0); };  // the first of a mode's N rows one way
@@ -183,11 +185,15 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
   if (!semi_infinite) {
     const Eigen::MatrixXd values = last.values(last.tau);
     const Eigen::VectorXd beam = last.particulars(last.tau);
-    const Eigen::VectorXd reflect = bottom ? bottom->reflection : Eigen::VectorXd::Zero(N);
     for (int m = 0; m < M; ++m) {
-      B.block(equation, last.offset, N, last.count) =
-          values.middleRows(rows(m, 1), N) - reflect.asDiagonal() * values.middleRows(rows(m, 0), N);
-      rhs.segment(equation, N) = -beam.segment(rows(m, 1), N) + reflect.asDiagonal() * beam.segment(rows(m, 0), N);
+      auto block = B.block(equation, last.offset, N, last.count);
+      block = values.middleRows(rows(m, 1), N);
+      rhs.segment(equation, N) = -beam.segment(rows(m, 1), N);
+      if (bottom != nullptr) {
+        const Eigen::MatrixXd& reflect = bottom->reflection[static_cast<std::size_t>(m)];
+        block -= reflect * values.middleRows(rows(m, 0), N);
+        rhs.segment(equation, N) += reflect * beam.segment(rows(m, 0), N);
+      }
       equation += N;
     }
   }
@@ -215,7 +221,7 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
 
 LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> slabs, const LateralTopInterface* top,
                                                 double k, const LateralFrequencyResolution& resolution,
-                                                const LateralSmoothFace* bottom,
+                                                const LateralBottomFace* bottom,
                                                 std::span<const std::optional<LateralInternalFace>> faces) {
   return stack_response(slabs, 1.0, top, bottom, k, resolution, faces);
 }
@@ -223,15 +229,18 @@ LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> sla
 LateralFrequencyResponse collimated_single_scattering_response(std::span<const LateralSlab> slabs,
                                                                const LateralTopInterface* top, double k,
                                                                const LateralFrequencyResolution& resolution,
-                                                               const LateralSmoothFace* bottom) {
+                                                               const LateralBottomFace* bottom) {
   // The faces let the light out as they do, and send none of it back.
   std::optional<LateralTopInterface> letting_out;
   if (top != nullptr) {
     letting_out = *top;
     for (Eigen::MatrixXd& mode : letting_out->reflection) mode.setZero();
   }
-  std::optional<LateralSmoothFace> leaving;
-  if (bottom != nullptr) leaving = LateralSmoothFace{Eigen::VectorXd::Zero(bottom->exit.size()), bottom->exit};
+  std::optional<LateralBottomFace> leaving;
+  if (bottom != nullptr) {
+    leaving = *bottom;
+    for (Eigen::MatrixXd& mode : leaving->reflection) mode.setZero();
+  }
   return stack_response(slabs, 0.0, letting_out ? &*letting_out : nullptr, leaving ? &*leaving : nullptr, k,
                         resolution);
 }

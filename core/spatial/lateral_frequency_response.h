@@ -10,9 +10,9 @@
 // transforms of the profiles: R(k) = int_0^inf R(r) J0(k r) 2 pi r dr, so R(0) is the subsurface reflectance.
 //
 // A stack of homogeneous slabs (lateral_slab_modes.h), index-matched or with rough interfaces between them
-// (lateral_internal_face.h), and below it an index-matched half-space, nothing or a smooth face. Above it: no
-// interface (eta = 1, the open layer), a rough one or a smooth one (lateral_top_interface.h), through the BSDF's own
-// operators. Light at normal incidence or diffuse.
+// (lateral_internal_face.h), and below it an index-matched half-space, nothing or a face (lateral_bottom_face.h). Above
+// it: no interface (eta = 1, the open layer), a rough one or a smooth one (lateral_top_interface.h), through the BSDF's
+// own operators. Light at normal incidence or diffuse.
 #pragma once
 
 #include <optional>
@@ -23,7 +23,7 @@
 namespace skinlayer {
 
 struct LateralTopInterface;
-struct LateralSmoothFace;
+struct LateralBottomFace;
 
 struct LateralFrequencyResolution {
   int ordinates = 16;      // double-Gauss nodes per hemisphere
@@ -47,12 +47,12 @@ struct LateralSlab {
 
 // The stack's response at k (1 / the first slab's mean free path) under an open top (top null: a collimated beam
 // scattered in each slab with its own albedo), a rough one, diffuse light, or a smooth top (lateral_top_interface.h,
-// built for `resolution`), over an index-matched half-space or a smooth bottom face (bottom, for a finite stack).
+// built for `resolution`), over an index-matched half-space or a bottom face (bottom, for a finite stack).
 // faces: empty, or per slab the rough interface above it (lateral_internal_face.h; none above the first), where the
 // light enters as node radiance. Throws std::invalid_argument for values outside the ranges above.
 LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> slabs, const LateralTopInterface* top,
                                                 double k, const LateralFrequencyResolution& resolution = {},
-                                                const LateralSmoothFace* bottom = nullptr,
+                                                const LateralBottomFace* bottom = nullptr,
                                                 std::span<const std::optional<LateralInternalFace>> faces = {});
 
 // The first order in the albedos of a collimated beam (under an open top, or a smooth one): the beam scattered once,
@@ -60,7 +60,7 @@ LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> sla
 LateralFrequencyResponse collimated_single_scattering_response(std::span<const LateralSlab> slabs,
                                                                const LateralTopInterface* top, double k,
                                                                const LateralFrequencyResolution& resolution = {},
-                                                               const LateralSmoothFace* bottom = nullptr);
+                                                               const LateralBottomFace* bottom = nullptr);
 
 // One slab: tau the optical depth (+infinity: semi-infinite); albedo Omega in [0, 1); g the Henyey-Greenstein
 // asymmetry; k >= 0 in 1 / mean free path. Throws std::invalid_argument for values outside those ranges (Omega = 1 with

@@ -12,7 +12,9 @@
 #include "core/interfaces/layer_interfaces.h"
 #include "core/material.h"
 #include "core/series/quadrature.h"
+#include "core/spatial/bottom_bounce_transform.h"
 #include "core/spatial/entering_radiance.h"
+#include "core/spatial/lateral_bottom_face.h"
 #include "core/spatial/lateral_internal_face.h"
 #include "core/spatial/lateral_top_interface.h"
 #include "core/spatial/rough_top_single_scattering.h"
@@ -115,6 +117,9 @@ double point_value(const FrequencyQuadrature& F, double r) {
   return F.integrate(r, [&](double k) { return Eigen::numext::bessel_j0(k * r) * k; }) / (2.0 * kPi);
 }
 
+// The ordinates of the finer bounce image (§21.17).
+constexpr int kBounceOrdinates = 96;
+
 void check_options(const LayerProfileOptions& options) {
   if (options.frequencies < 4 || !(options.max_frequency > 0.0) || !(options.frequency_scale > 0.0)) {
     throw std::invalid_argument("layer_profile: needs >= 4 frequencies and positive frequency bounds");
@@ -132,7 +137,10 @@ struct SolvedLayer {
     const int N = options.resolution.ordinates, M = options.resolution.azimuth_modes;
     const bool finite = std::isfinite(slabs.back().tau);
     if (layer.top && layer.smooth_top) throw std::invalid_argument("layer_profile: a top is rough or smooth, not both");
-    if (layer.smooth_bottom && !finite) throw std::invalid_argument("layer_profile: a half-space has no bottom face");
+    const int bottoms = int(layer.smooth_bottom.has_value()) + int(layer.rough_bottom.has_value()) +
+                        int(layer.lambert_bottom.has_value());
+    if (bottoms > 1) throw std::invalid_argument("layer_profile: a stack has one bottom face");
+    if (bottoms > 0 && !finite) throw std::invalid_argument("layer_profile: a half-space has no bottom face");
     if (layer.smooth_top && layer.incidence == Incidence::Diffuse) {
       throw std::invalid_argument("layer_profile: diffuse light through a smooth top is not computed yet");
     }
@@ -144,7 +152,16 @@ struct SolvedLayer {
       // No top, through the rough top's path: all but the classic open slab's beam.
       entry = open_top_interface(N, M, layer.incidence);
     }
-    if (layer.smooth_bottom) bottom = lateral_smooth_face(*layer.smooth_bottom, N);
+    if (layer.smooth_bottom) {
+      bottom = smooth_bottom_face(*layer.smooth_bottom, N, M);
+      exit = smooth_exit_fraction(*layer.smooth_bottom);
+    } else if (layer.rough_bottom) {
+      bottom = rough_bottom_face(*layer.rough_bottom, N, M, options.interface_azimuths);
+      exit = rough_exit_fraction(*layer.rough_bottom);
+    } else if (layer.lambert_bottom) {
+      bottom = lambert_bottom_face(*layer.lambert_bottom, N, M);
+      exit = [](double) { return 0.0; };
+    }
     // Light that enters as node radiance crosses a finite stack unscattered at every angle; a smooth bottom would send
     // it back up as rings that the profile does not take apart yet.
     if (entry && !entry->source.isZero() && layer.smooth_bottom) {
@@ -152,8 +169,39 @@ struct SolvedLayer {
           "profile: a smooth bottom face is taken so far under an open or smooth top at normal incidence, not under a "
           "rough top or in diffuse light");
     }
+    // A collimated beam would meet a rough or diffuse bottom at the entry point and leave it spread over directions.
+    if ((layer.rough_bottom || layer.lambert_bottom) && (!entry || entry->collimated > 0.0)) {
+      throw ParameterError(
+          "profile: a rough bottom or a Lambertian base is taken so far where the light enters spread over "
+          "directions: under a rough top, or in diffuse light");
+    }
     if (entry && finite) entering = EnteringRadiance(*entry, layer.top, N);
     take_faces(finite);
+    if (bottom && entry && !entry->source.isZero()) take_finer_bounce();
+  }
+  // The unscattered light's first bounce off the bottom on finer ordinates (§21.17), scaled to carry the solve's own
+  // power at k = 0, so that the profile still adds up to R(0).
+  void take_finer_bounce() {
+    const int M = options.resolution.azimuth_modes, fine = kBounceOrdinates;
+    fine_entry = layer.top ? lateral_top_interface(*layer.top, fine, M, layer.incidence, options.interface_azimuths)
+                           : open_top_interface(fine, M, layer.incidence);
+    if (layer.rough_bottom) {
+      fine_bottom = rough_bottom_face(*layer.rough_bottom, fine, M, options.interface_azimuths);
+    } else if (layer.lambert_bottom) {
+      fine_bottom = lambert_bottom_face(*layer.lambert_bottom, fine, M);
+    } else {
+      fine_bottom = smooth_bottom_face(*layer.smooth_bottom, fine, M);
+    }
+    const double coarse = bottom_bounce_transform(slabs, *entry, *bottom, 0.0, 1);
+    const double finer = bottom_bounce_transform(slabs, *fine_entry, *fine_bottom, 0.0, 1);
+    bounce_scale = finer > 0.0 ? coarse / finer : 0.0;
+  }
+  // What the finer bounce adds at k: its image less the solve's own.
+  double bounce_correction(double k) const {
+    if (!fine_entry) return 0.0;
+    const int M = resolution_at(k).azimuth_modes;
+    return bounce_scale * bottom_bounce_transform(slabs, *fine_entry, *fine_bottom, k, M) -
+           bottom_bounce_transform(slabs, *entry, *bottom, k, M);
   }
   // The interfaces between slabs (§21.16), their operators built once; `upper` ends at the first of them.
   void take_faces(bool finite) {
@@ -203,7 +251,8 @@ struct SolvedLayer {
     if (!entry->source.isZero()) {
       // Above the first interface between slabs: what is scattered once below it crossed that interface, is no longer
       // singular at the beam (it leaves from at least the interface's depth), and stays in the k-space part.
-      const RoughTopLowOrders node = rough_top_low_orders(upper, *entry, k, resolution_at(k));
+      const RoughTopLowOrders node =
+          rough_top_low_orders(upper, *entry, k, resolution_at(k), bottom ? bottom->exit : Eigen::VectorXd());
       orders.reflectance = node.reflected_once;
       orders.transmittance = node.transmitted_once + node.transmitted_unscattered;
     }
@@ -222,22 +271,26 @@ struct SolvedLayer {
     if (face == LayerFace::Top) {
       return rough_top_single_scattered_power(upper, *entry, options.resolution.ordinates, r0, r1);
     }
-    return unscattered_transmitted_power(slabs, *entering, layer.smooth_bottom, r0, r1) +
-           single_scattered_transmitted_power(slabs, *entering, layer.smooth_bottom, r0, r1);
+    return unscattered_transmitted_power(slabs, *entering, exit, r0, r1) +
+           single_scattered_transmitted_power(slabs, *entering, exit, r0, r1);
   }
   double single_scattered_density(LayerFace face, double r) const {
     if (!entry) return skinlayer::single_scattered_density(layer.tau, layer.albedo, layer.g, face, r);
     if (face == LayerFace::Top)
       return rough_top_single_scattered_density(upper, *entry, options.resolution.ordinates, r);
-    return unscattered_transmitted_density(slabs, *entering, layer.smooth_bottom, r) +
-           single_scattered_transmitted_density(slabs, *entering, layer.smooth_bottom, r);
+    return unscattered_transmitted_density(slabs, *entering, exit, r) +
+           single_scattered_transmitted_density(slabs, *entering, exit, r);
   }
 
   ProfileLayer layer;
   std::vector<LateralSlab> slabs;
   LayerProfileOptions options;
   std::optional<LateralTopInterface> entry;  // none: the collimated beam into one open slab (§21.4)
-  std::optional<LateralSmoothFace> bottom;   // a smooth bottom face
+  std::optional<LateralBottomFace> bottom;   // a bottom face under a finite stack
+  std::optional<LateralTopInterface> fine_entry;  // the entry and the bottom on kBounceOrdinates, for the bounce
+  std::optional<LateralBottomFace> fine_bottom;
+  double bounce_scale = 0.0;
+  ExitFraction exit;                         // its exit fraction, continuous in angle (empty: none, all leaves)
   std::optional<EnteringRadiance> entering;  // the entry's light, continuous in angle, under a finite stack
   std::vector<std::optional<LateralInternalFace>> faces;  // per slab, the interface above it; empty: none
   std::vector<LateralSlab> upper;  // the slabs above the first interface between slabs (all of them without one)
@@ -260,7 +313,7 @@ MultipleScatteringTransforms multiple_scattering_transforms(const SolvedLayer& s
     const std::size_t at = static_cast<std::size_t>(i);
     all[at] = solved.response(k);
     const LateralFrequencyResponse once = solved.single_scattering(k);
-    reflected[at] = all[at].reflectance - once.reflectance;
+    reflected[at] = all[at].reflectance - once.reflectance + solved.bounce_correction(k);
     transmitted[at] = all[at].transmittance - once.transmittance;
   });
   return {FrequencySpline(reflected, step, options.frequency_scale),
@@ -307,6 +360,10 @@ ProfileLayer profile_layer(const Material& m, Incidence incidence) {
     layer.faces.push_back(
         face ? std::optional(RoughDielectric{below.interface->eta, below.interface->sigma, m.microfacet})
              : std::nullopt);
+  }
+  if (std::isfinite(m.total_tau())) {
+    if (m.bottom.kind == BottomKind::Lambert) layer.lambert_bottom = m.bottom.lambert_albedo;
+    if (m.bottom.kind == BottomKind::Air && m.bottom_eta() != 1.0) layer.rough_bottom = bottom_interface(m);
   }
   return layer;
 }

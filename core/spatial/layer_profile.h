@@ -1,8 +1,9 @@
 // The spatially resolved response of a layer or a stack of slabs to light entering at a point: where it leaves the
-// top and the bottom, averaged over annuli about the entry point or at radii (docs/model.md §21.7, §21.10–21.15).
+// top and the bottom, averaged over annuli about the entry point or at radii (docs/model.md §21.7, §21.10–21.17).
 // Lengths are in mean free paths of the first slab. The light is a pencil beam at normal incidence or diffuse. Above
 // the slabs: no interface, a rough one, or a smooth one; below them an index-matched half-space or, under a finite
-// stack, nothing or a smooth face (the latter only where the beam enters collimated: an open or smooth top).
+// stack, nothing, a smooth face (where the beam enters collimated: an open or smooth top), or a rough face or a
+// Lambertian base (where the light enters as node radiance: a rough top, or diffuse light).
 //
 // Single scattering is singular at r -> 0 and is taken in closed form (single_scattering_profile.h for one open slab
 // lit by the beam, rough_top_single_scattering.h wherever the light enters through the top's operators), and so is
@@ -39,6 +40,11 @@ struct ProfileLayer {
   // Smooth (Fresnel) faces instead (§21.14): the top's relative index n_layer / n_above, and under a finite stack the
   // bottom's n_below / n_layer. Unset: none (or the rough `top`).
   std::optional<double> smooth_top = std::nullopt, smooth_bottom = std::nullopt;
+  // Under a finite stack, a rough bottom face (eta = n_below / n_layer, in the frame +z up into the layer) or a
+  // Lambertian base of this albedo (§21.17). They take light that enters as node radiance (a rough top, or diffuse
+  // light).
+  std::optional<RoughDielectric> rough_bottom = std::nullopt;
+  std::optional<double> lambert_bottom = std::nullopt;
   // Rough interfaces between slabs (§21.16): empty, or one per slab of `below`, the interface above it (eta = n_slab /
   // n_above, != 1), unset where the two are index-matched. They take light that enters as node radiance (a rough top,
   // or diffuse light) and a stack that ends in a half-space, or its reflectance alone.
@@ -48,7 +54,8 @@ struct ProfileLayer {
 };
 
 // A material as the profile takes it: its first layer, its top (rough where eta != 1, else none), the layers below in
-// the first one's mean free paths, and the rough interfaces between them. A stack's layers must all have their
+// the first one's mean free paths, the rough interfaces between them, and under a finite stack its rough bottom or
+// Lambertian base. A stack's layers must all have their
 // extinction (mu_t), which relates their lengths; throws std::invalid_argument otherwise.
 ProfileLayer profile_layer(const Material& material, Incidence incidence = Incidence::Normal);
 

@@ -123,12 +123,17 @@ std::complex<double> depth_integral(std::complex<double> rate, double tau) {
 }  // namespace
 
 RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const LateralTopInterface& top, double k,
-                                       const LateralFrequencyResolution& resolution) {
+                                       const LateralFrequencyResolution& resolution,
+                                       const Eigen::VectorXd& bottom_exit) {
   const int N = resolution.ordinates, M = resolution.azimuth_modes;
   check(slabs, top, N);
   if (!(k >= 0.0 && std::isfinite(k)) || static_cast<int>(top.reflection.size()) < M) {
     throw std::invalid_argument("rough-top single scattering: finite k >= 0, and the top built for M modes");
   }
+  if (bottom_exit.size() != 0 && bottom_exit.size() != N) {
+    throw std::invalid_argument("rough-top single scattering: the bottom's exit fractions need one per node");
+  }
+  const auto leaving_bottom = [&](int node) { return bottom_exit.size() == 0 ? 1.0 : bottom_exit(node); };
   const QuadratureRule q = double_gauss_half_range(N);
   const SlabDepths depths = slab_depths(slabs);
   const double total_optical = depths.optical.back() + slabs.back().tau;
@@ -156,7 +161,7 @@ RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const
     for (int j = 0; j < N; ++j) {
       std::complex<double> streamed = 0.0;
       for (int b = 0; b < M; ++b) streamed += in(0, b) * std::exp(-total_geometric * lateral(b, j));
-      orders.transmitted_unscattered += 2.0 * kPi * q.weights[j] * q.nodes[j] * top.source(j) *
+      orders.transmitted_unscattered += 2.0 * kPi * q.weights[j] * q.nodes[j] * top.source(j) * leaving_bottom(j) *
                                         std::exp(-total_optical / q.nodes[j]) * streamed.real();
     }
   }
@@ -222,9 +227,9 @@ RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const
             leaving += top.source(j) * scatter * per_mode(m);
           }
         }
-        // mu_i cancels the 1/mu_i of the source; nothing reflects below the stack, and everything leaves it there.
+        // mu_i cancels the 1/mu_i of the source; nothing reflects at the faces, and each lets out its exit fraction.
         const double flux = 2.0 * kPi * q.weights[i] * slab.albedo * leaving.real();
-        (up ? orders.reflected_once : orders.transmitted_once) += (up ? top.exit(i) : 1.0) * flux;
+        (up ? orders.reflected_once : orders.transmitted_once) += (up ? top.exit(i) : leaving_bottom(i)) * flux;
       }
     }
   }

@@ -30,13 +30,14 @@ namespace skinlayer {
 //   reflected_once: lateral_stack_response's reflectance to first order: the top's node radiance streamed down,
 //     scattered once, streamed up and out through the top;
 //   transmitted_once, transmitted_unscattered: on the bottom of a finite stack, the first order, and the node radiance
-//     streamed down through every slab unscattered (§21.15), leaving an index-matched bottom; 0 for a semi-infinite
-//     stack.
+//     streamed down through every slab unscattered (§21.15), leaving the bottom by its exit fraction at each node
+//     (bottom_exit; empty: an index-matched bottom, all of it); 0 for a semi-infinite stack.
 struct RoughTopLowOrders {
   double reflected_once = 0.0, transmitted_once = 0.0, transmitted_unscattered = 0.0;
 };
 RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const LateralTopInterface& top, double k,
-                                       const LateralFrequencyResolution& resolution);
+                                       const LateralFrequencyResolution& resolution,
+                                       const Eigen::VectorXd& bottom_exit = {});
 
 // With the top's operators on `ordinates` nodes: the singly scattered power leaving the top through the annulus
 // r0 <= r < r1 (per unit incident power; r1 may be +infinity), and its density at r > 0 (1/mfp^2, growing like 1/r

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "core/conventions.h"
-#include "core/interfaces/fresnel.h"
 #include "core/medium/henyey_greenstein.h"
 #include "core/series/quadrature.h"
 
@@ -39,9 +38,7 @@ StackDepths stack_depths(std::span<const LateralSlab> slabs) {
   return d;
 }
 
-double exit_fraction(std::optional<double> smooth_bottom, double mu) {
-  return smooth_bottom ? 1.0 - fresnel_dielectric(mu, *smooth_bottom) : 1.0;
-}
+double exit_fraction(const ExitFraction& exit, double mu) { return exit ? exit(mu) : 1.0; }
 
 // int_lo^hi e^{-rate (z - ref)} dz, where rate (z - ref) >= 0 on [lo, hi].
 double exponential_integral(double rate, double ref, double lo, double hi) {
@@ -95,8 +92,7 @@ struct Displacement {
 // density's): there a path scattered straight below the entry point starts or stops reaching it, an edge in theta_o.
 template <class Along>
 double over_scattering_paths(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
-                             std::optional<double> smooth_bottom, std::initializer_list<double> radii,
-                             const Along& along) {
+                             const ExitFraction& exit, std::initializer_list<double> radii, const Along& along) {
   const StackDepths depths = stack_depths(slabs);
   const double H = depths.height;
   std::vector<std::pair<double, double>> panels;
@@ -136,7 +132,7 @@ double over_scattering_paths(std::span<const LateralSlab> slabs, const EnteringR
         const bool falls = rate >= 0.0;
         const double ref = falls ? z_top : z_bottom;
         const double optical_ref = depths.optical[l] + (falls ? 0.0 : slab.tau);
-        const double weight = entry_power[e] * slab.albedo * e_l / mu_e * exit_fraction(smooth_bottom, mu_o) *
+        const double weight = entry_power[e] * slab.albedo * e_l / mu_e * exit_fraction(exit, mu_o) *
                               std::exp(-optical_ref / mu_e - (depths.tau - optical_ref) / mu_o) * leaving.weights[o] *
                               sin_o;
         if (weight == 0.0) continue;
@@ -178,7 +174,7 @@ void check_annulus(double r0, double r1) {
 }  // namespace
 
 double unscattered_transmitted_power(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
-                                     std::optional<double> smooth_bottom, double r0, double r1) {
+                                     const ExitFraction& exit, double r0, double r1) {
   check_annulus(r0, r1);
   const StackDepths depths = stack_depths(slabs);
   if (entering.directions().nodes.empty() || r1 == r0) return 0.0;
@@ -186,24 +182,23 @@ double unscattered_transmitted_power(std::span<const LateralSlab> slabs, const E
   return over_polar_angle(entering, theta0, theta1, [&](double theta) {
     const double mu = std::cos(theta);
     if (mu <= 0.0) return 0.0;
-    return 2.0 * kPi * entering(mu) * exit_fraction(smooth_bottom, mu) * std::exp(-depths.tau / mu) * mu *
-           std::sin(theta);
+    return 2.0 * kPi * entering(mu) * exit_fraction(exit, mu) * std::exp(-depths.tau / mu) * mu * std::sin(theta);
   });
 }
 
 double unscattered_transmitted_density(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
-                                       std::optional<double> smooth_bottom, double r) {
+                                       const ExitFraction& exit, double r) {
   if (!(r > 0.0 && std::isfinite(r))) throw std::invalid_argument("transmitted light: r must be finite and > 0");
   const StackDepths depths = stack_depths(slabs);
   if (entering.directions().nodes.empty()) return 0.0;
   const double H = depths.height, mu = H / std::hypot(H, r);
-  return entering(mu) * exit_fraction(smooth_bottom, mu) * std::exp(-depths.tau / mu) * std::pow(mu, 4) / (H * H);
+  return entering(mu) * exit_fraction(exit, mu) * std::exp(-depths.tau / mu) * std::pow(mu, 4) / (H * H);
 }
 
 double single_scattered_transmitted_power(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
-                                          std::optional<double> smooth_bottom, double r0, double r1) {
+                                          const ExitFraction& exit, double r0, double r1) {
   check_annulus(r0, r1);
-  return over_scattering_paths(slabs, entering, smooth_bottom, {r0, r1},
+  return over_scattering_paths(slabs, entering, exit, {r0, r1},
                                [&](double rate, double ref, double lo, double hi, const Displacement& r) {
                                  const auto [u1, v1] = r.below(r1 * r1, lo, hi);
                                  if (!(v1 > u1)) return 0.0;
@@ -219,9 +214,9 @@ double single_scattered_transmitted_power(std::span<const LateralSlab> slabs, co
 }
 
 double single_scattered_transmitted_density(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
-                                            std::optional<double> smooth_bottom, double r) {
+                                            const ExitFraction& exit, double r) {
   if (!(r > 0.0 && std::isfinite(r))) throw std::invalid_argument("transmitted light: r must be finite and > 0");
-  return over_scattering_paths(slabs, entering, smooth_bottom, {r},
+  return over_scattering_paths(slabs, entering, exit, {r},
                                [&](double rate, double ref, double lo, double hi, const Displacement& d) {
                                  double sum = 0.0;
                                  d.roots(r * r, lo, hi, [&](double z, double half_slope) {

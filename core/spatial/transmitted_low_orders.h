@@ -19,24 +19,24 @@
 // Gauss-Legendre panels. The density sums, over the roots of r(z) = r, the path's weight times |dz / dr| / (2 pi r).
 #pragma once
 
-#include <optional>
 #include <span>
 
 #include "core/spatial/entering_radiance.h"
+#include "core/spatial/lateral_bottom_face.h"
 #include "core/spatial/lateral_frequency_response.h"
 
 namespace skinlayer {
 
-// smooth_bottom: n_below / n_layer of a smooth bottom face, whose exit fraction is 1 - F(mu); nullopt: index-matched,
-// everything leaves. The slabs must all be finite.
+// exit: the bottom face's exit fraction X(mu) (lateral_bottom_face.h); empty: index-matched, everything leaves. The
+// slabs must all be finite.
 double unscattered_transmitted_power(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
-                                     std::optional<double> smooth_bottom, double r0, double r1);
+                                     const ExitFraction& exit, double r0, double r1);
 double unscattered_transmitted_density(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
-                                       std::optional<double> smooth_bottom, double r);
+                                       const ExitFraction& exit, double r);
 
 double single_scattered_transmitted_power(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
-                                          std::optional<double> smooth_bottom, double r0, double r1);
+                                          const ExitFraction& exit, double r0, double r1);
 double single_scattered_transmitted_density(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
-                                            std::optional<double> smooth_bottom, double r);
+                                            const ExitFraction& exit, double r);
 
 }  // namespace skinlayer

@@ -35,12 +35,12 @@ TEST(FiniteStackTransmittance, CollimatedBeamGivesTheOpenSlabsClosedForm) {
     const LateralSlab slab{tau, 0.9, 0.8, 1.0};
     for (const auto& [r0, r1] : {std::pair{0.0, 0.1}, {0.1, 0.5}, {0.5, 1.0}, {1.0, 3.0}, {0.0, kInf}}) {
       const double closed = single_scattered_power(tau, 0.9, 0.8, LayerFace::Bottom, r0, r1);
-      EXPECT_NEAR(single_scattered_transmitted_power({&slab, 1}, beam, std::nullopt, r0, r1), closed, 1e-7 * closed)
+      EXPECT_NEAR(single_scattered_transmitted_power({&slab, 1}, beam, {}, r0, r1), closed, 1e-7 * closed)
           << tau << " [" << r0 << ", " << r1 << ")";
     }
     for (const double r : {0.01, 0.3, 1.0, 4.0}) {
       const double closed = single_scattered_density(tau, 0.9, 0.8, LayerFace::Bottom, r);
-      EXPECT_NEAR(single_scattered_transmitted_density({&slab, 1}, beam, std::nullopt, r), closed, 1e-7 * closed) << r;
+      EXPECT_NEAR(single_scattered_transmitted_density({&slab, 1}, beam, {}, r), closed, 1e-7 * closed) << r;
     }
   }
 }
@@ -57,19 +57,19 @@ TEST(FiniteStackTransmittance, DiffuseUnscatteredLightIsTwoE3) {
     const double mu = (i + 0.5) / kSteps;
     two_e3 += 2.0 * mu * std::exp(-1.0 / mu) / kSteps;
   }
-  EXPECT_NEAR(unscattered_transmitted_power(slabs, diffuse, std::nullopt, 0.0, 1e9), two_e3, 1e-7);
+  EXPECT_NEAR(unscattered_transmitted_power(slabs, diffuse, {}, 0.0, 1e9), two_e3, 1e-7);
   const double r0 = 0.5, r1 = 2.0;
   double integral = 0.0;
   const QuadratureRule rule = gauss_legendre(32, r0, r1);
   for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
     integral += rule.weights[i] * 2.0 * kPi * rule.nodes[i] *
-                unscattered_transmitted_density(slabs, diffuse, std::nullopt, rule.nodes[i]);
+                unscattered_transmitted_density(slabs, diffuse, {}, rule.nodes[i]);
   }
-  const double power = unscattered_transmitted_power(slabs, diffuse, std::nullopt, r0, r1);
+  const double power = unscattered_transmitted_power(slabs, diffuse, {}, r0, r1);
   EXPECT_NEAR(integral, power, 1e-8 * power);
   // 2 pi r times the density is that of r = 1.6 tan(theta) under radiance 1/pi: 2 mu e^{-1/mu} |d mu / dr|.
   const double r = 1.0, mu = 1.6 / std::hypot(1.6, r);
-  EXPECT_NEAR(2.0 * kPi * r * unscattered_transmitted_density(slabs, diffuse, std::nullopt, r),
+  EXPECT_NEAR(2.0 * kPi * r * unscattered_transmitted_density(slabs, diffuse, {}, r),
               2.0 * mu * std::exp(-1.0 / mu) * 1.6 * r / std::pow(1.6 * 1.6 + r * r, 1.5), 1e-12);
 }
 
