@@ -102,8 +102,12 @@ sanitize_skipped_tests=(
   'FiniteStackTransmittance\.RougherTopOverAnAbsorbingSlabMatchesTheWalk'
   'FiniteStackTransmittance\.TwoLayerStackInMillimetresMatchesTheWalk'
   'InternalFacesProfile\.StackWithAnInterfaceMatchesTheWalk'                # its identity and refusals
+  'BottomFacesProfile\.RoughBottomMatchesTheWalk'                          # its totals, refusals and the bounce's
+  'BottomFacesProfile\.PapersRoughBottomMatchesTheWalkUnderItsInterfaces'  # closed form
+  'BottomFacesProfile\.LambertBaseMatchesTheWalkUnderThePapersInterfaces'
   'app\.ProfileCommand\.FiniteLayerUnderARoughTopTransmitsOnFinerOrdinates'     # the other ProfileCommand ones
   'app\.ProfileCommand\.InterfaceBetweenLayersIsTheCoresProfile'
+  'app\.ProfileCommand\.RoughBottomIsTheCoresProfile'
 )
 sanitize_skipped="^($(IFS='|'; echo "${sanitize_skipped_tests[*]}"))$"
 readonly sanitize_skipped

@@ -10,9 +10,10 @@
 namespace skinlayer {
 namespace {
 
-// One line naming what the profile cannot take yet, or nothing for a material it can: albedos below 1, an
-// index-matched half-space or nothing below, layers each with its extinction when there are several, and interfaces
-// between them only under a rough top or in diffuse light, in a stack that ends in a half-space.
+// One line naming what the profile cannot take yet, or nothing for a material it can: albedos below 1, layers each
+// with its extinction when there are several, interfaces between them only under a rough top or in diffuse light
+// and in a stack that ends in a half-space, and a rough bottom or a Lambertian base only where the light enters
+// spread over directions (a rough top, or diffuse light).
 void require_profile_layer(const Material& m, Incidence incidence) {
   std::string why;
   const bool stack = m.layer_count() > 1;
@@ -22,7 +23,10 @@ void require_profile_layer(const Material& m, Incidence incidence) {
   const bool albedo_below_1 = m.albedo < 1.0 && std::all_of(m.below.begin(), m.below.end(),
                                                             [](const StackedLayer& l) { return l.albedo < 1.0; });
   const bool faces = m.has_internal_interfaces();
-  if (faces && m.eta == 1.0 && incidence == Incidence::Normal) {
+  const bool collimated = m.eta == 1.0 && incidence == Incidence::Normal;
+  const bool bottom_face = !ends_in_half_space && (m.bottom.kind == BottomKind::Lambert ||
+                                                   (m.bottom.kind == BottomKind::Air && m.bottom_eta() != 1.0));
+  if (faces && collimated) {
     why =
         "it has an interface between its layers under no top interface (--eta 1), which the beam reaches "
         "unscattered";
@@ -30,19 +34,20 @@ void require_profile_layer(const Material& m, Incidence incidence) {
     why = "it has an interface between its layers over a finite stack (its last layer needs tau=inf)";
   } else if (stack && !all_lengths) {
     why = "its layers do not all have their extinction (mu_t=, 1/mm), which relates their lengths";
-  } else if (m.bottom.kind == BottomKind::Lambert && !ends_in_half_space) {
-    why = "it has a Lambertian base (--bottom " + format_bottom(m.bottom) + ")";
-  } else if (m.bottom.kind == BottomKind::Air && m.bottom_eta() != 1.0 && !ends_in_half_space) {
-    why = "it has a rough bottom interface (bottom-eta " + cli::format_shortest(m.bottom_eta()) +
-          "; --bottom matched has none)";
+  } else if (bottom_face && collimated) {
+    why = m.bottom.kind == BottomKind::Lambert
+              ? "it has a Lambertian base (--bottom " + format_bottom(m.bottom) +
+                    ") under no top interface (--eta 1), which the beam reaches unscattered"
+              : "it has a rough bottom interface (bottom-eta " + cli::format_shortest(m.bottom_eta()) +
+                    ") under no top interface (--eta 1), which the beam reaches unscattered";
   } else if (!albedo_below_1) {
     why = "an albedo is 1 (give albedos below 1)";
   }
   if (why.empty()) return;
   throw ParameterError(
-      "profile: spatial profiles are computed so far for albedos below 1 over an index-matched bottom (--bottom "
-      "matched) or a half-space (--T 0, or a last layer with tau=inf), with interfaces between layers only under a "
-      "rough top over a half-space, and this material cannot be: " +
+      "profile: spatial profiles are computed so far for albedos below 1, with interfaces between layers only under "
+      "a rough top over a half-space, and a rough bottom or a Lambertian base only under a rough top or in diffuse "
+      "light; this material cannot be: " +
       why);
 }
 

@@ -25,9 +25,9 @@ struct DocumentProfile {
 };
 
 // The means over the annuli [edges[i], edges[i + 1]) (increasing, from >= 0, in the unit), or the values at radii
-// (> 0, in the unit). Throws ParameterError, naming what it cannot take (a rough bottom interface or a base under a
-// finite stack, interfaces between layers under an open top or over a finite stack, a stack without every layer's
-// mu_t, albedo 1), and for bad positions.
+// (> 0, in the unit). Throws ParameterError, naming what it cannot take (a rough bottom interface or a Lambertian
+// base under an open top, interfaces between layers under an open top or over a finite stack, a stack without every
+// layer's mu_t, albedo 1), and for bad positions.
 // Where the light enters as radiance spread over directions and leaves a finite stack's bottom, the transmittance is
 // computed on 24 nodes at least. With options.reflectance_only the transmittance is left empty.
 // The command's resolution: 12 nodes, 16 modes, 40 frequencies.

@@ -35,8 +35,9 @@ def test_a_colour_material_in_millimetres_has_a_channel_axis():
 
 def test_what_it_cannot_take_raises_value_error_with_the_command_lines_message():
     with pytest.raises(ValueError) as raised:
-        skinlayer.solve(skinlayer.Material(albedo=0.9)).profile([1.0])
-    assert str(raised.value) == cli_error(["profile", "--albedo", "0.9", "--radii", "1"])
+        skinlayer.solve(skinlayer.Material(eta=1, bottom="lambert:0.5", albedo=0.9)).profile([1.0])
+    assert str(raised.value) == cli_error(["profile", "--eta", "1", "--bottom", "lambert:0.5", "--albedo", "0.9",
+                                           "--radii", "1"])
     open_layer = skinlayer.solve(skinlayer.Material(eta=1, bottom="matched", albedo=0.9))
     with pytest.raises(ValueError, match="radii must be finite and > 0"):
         open_layer.profile([0.0, 1.0])
