@@ -41,6 +41,20 @@ struct SolvedSlab {
   }
 };
 
+// A conservative half-space at k = 0 (slab_eigen.h): the clamped albedo's slowest decaying mode gives way to the exact
+// bounded solution, isotropic radiance of mode 0 (lambda = 0), as in the BSDF solve.
+void take_bounded_mode(LateralSlabModes& modes, const LateralLayout& layout) {
+  const Eigen::Index h = modes.lambda.size() / 2;
+  Eigen::Index slowest = 0;
+  modes.lambda.head(h).cwiseAbs().minCoeff(&slowest);
+  modes.lambda(slowest) = 0.0;
+  modes.vectors.col(slowest).setZero();
+  for (int up = 0; up < 2; ++up) {
+    for (int j = 0; j < layout.nodes; ++j) modes.vectors(layout.at(0, up, j), slowest) = 1.0;
+  }
+  modes.imaginary[static_cast<std::size_t>(slowest)] = false;
+}
+
 // The solve with the albedo in the scattering operator scaled by operator_scale (1, or 0 for the first order in Omega
 // of a collimated beam, whose source keeps its albedo).
 LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, double operator_scale,
@@ -91,6 +105,7 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
     // k is per mean free path of the first slab; in this slab's own it is k mu_t,first / mu_t.
     s.modes = lateral_slab_modes(operator_scale * slab.albedo, collimated > 0.0 ? slab.albedo : 0.0, slab.g,
                                  k / slab.relative_extinction, q, M);
+    if (std::isinf(slab.tau) && k == 0.0 && operator_scale * slab.albedo == 1.0) take_bounded_mode(s.modes, layout);
     s.tau = slab.tau;
     s.offset = unknowns;
     s.count = std::isinf(slab.tau) ? h : n;

@@ -40,7 +40,7 @@ struct LateralFrequencyResponse {
 // from the first's sees the frequency k / relative_extinction in its own mean free paths.
 struct LateralSlab {
   double tau = 0.0;                  // optical depth; +infinity (semi-infinite) for the last slab only
-  double albedo = 0.0;               // Omega in [0, 1)
+  double albedo = 0.0;               // Omega in [0, 1]
   double g = 0.0;                    // Henyey-Greenstein asymmetry
   double relative_extinction = 1.0;  // mu_t / the first slab's mu_t
 };
@@ -62,9 +62,8 @@ LateralFrequencyResponse collimated_single_scattering_response(std::span<const L
                                                                const LateralFrequencyResolution& resolution = {},
                                                                const LateralBottomFace* bottom = nullptr);
 
-// One slab: tau the optical depth (+infinity: semi-infinite); albedo Omega in [0, 1); g the Henyey-Greenstein
-// asymmetry; k >= 0 in 1 / mean free path. Throws std::invalid_argument for values outside those ranges (Omega = 1 with
-// k = 0 in a semi-infinite layer has no decaying solution).
+// One slab: tau the optical depth (+infinity: semi-infinite); albedo Omega in [0, 1]; g the Henyey-Greenstein
+// asymmetry; k >= 0 in 1 / mean free path. Throws std::invalid_argument for values outside those ranges.
 LateralFrequencyResponse open_layer_lateral_response(double tau, double albedo, double g, double k,
                                                      const LateralFrequencyResolution& resolution = {});
 

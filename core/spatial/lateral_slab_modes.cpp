@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/conventions.h"
+#include "core/medium/slab_eigen.h"
 #include "core/series/fourier.h"
 
 namespace skinlayer {
@@ -48,7 +49,7 @@ double beam_scattering_on_nodes(double g, const QuadratureRule& q) {
 
 LateralSlabModes lateral_slab_modes(double operator_albedo, double source_albedo, double g, double k,
                                     const QuadratureRule& q, int modes) {
-  check(operator_albedo >= 0.0 && operator_albedo < 1.0, "albedo must be in [0, 1)");
+  check(operator_albedo >= 0.0 && operator_albedo <= 1.0, "albedo must be in [0, 1]");
   check(source_albedo >= 0.0 && source_albedo <= 1.0, "albedo must be in [0, 1]");
   check(std::abs(g) <= 0.95, "g must be in [-0.95, 0.95]");
   check(k >= 0.0 && std::isfinite(k), "k must be finite and >= 0");
@@ -58,6 +59,9 @@ LateralSlabModes lateral_slab_modes(double operator_albedo, double source_albedo
 
   const PhaseMatrices phase = lateral_phase_matrices(g, q, M);
   const Eigen::MatrixXd coupling = lateral_mode_coupling(M);
+  // Conservative scattering is solved at the BSDF's clamped albedo (slab_eigen.h): at k = 0 mode 0 would have a double
+  // eigenvalue 0.
+  operator_albedo = std::min(operator_albedo, kMaxSolvedAlbedo);
 
   // L U = (1 + k sin(theta) C) U - Omega S U, and A = D^-1 L with D = diag(signed mu): dU/dtau = -A U + D^-1 s e^-tau.
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(n, n);

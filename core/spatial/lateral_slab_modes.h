@@ -52,7 +52,8 @@ struct LateralSlabModes {
   Eigen::MatrixXd real_solutions(double t, double bottom, int count) const;
 };
 
-// operator_albedo in [0, 1) scatters in the operator; operator_albedo = 0 (streaming alone) is solved as one M x M
+// operator_albedo in [0, 1] scatters in the operator, at most kMaxSolvedAlbedo (slab_eigen.h) as in the BSDF solve;
+// operator_albedo = 0 (streaming alone) is solved as one M x M
 // eigenproblem per node. k >= 0 in 1 / the slab's mean free path. Throws std::invalid_argument for values outside
 // those ranges, or for a mode that neither decays nor grows.
 LateralSlabModes lateral_slab_modes(double operator_albedo, double source_albedo, double g, double k,

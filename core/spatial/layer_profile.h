@@ -32,7 +32,7 @@ namespace skinlayer {
 // extinction saying how its own compare), with the interfaces between them.
 struct ProfileLayer {
   double tau = 0.0;                                   // optical depth; +infinity: semi-infinite
-  double albedo = 0.0;                                // Omega in [0, 1)
+  double albedo = 0.0;                                // Omega in [0, 1]
   double g = 0.0;                                     // Henyey-Greenstein asymmetry
   std::optional<RoughDielectric> top = std::nullopt;  // none: no interface (eta = 1)
   std::vector<LateralSlab> below = {};                // the slabs under the first, top to bottom

@@ -180,7 +180,12 @@ TEST(LateralFrequencyResponse, FallsWithFrequencyAndRefusesBadInput) {
     EXPECT_GT(r, 0.0) << k;
     previous = r;
   }
-  EXPECT_THROW(open_layer_lateral_response(1.0, 1.0, 0.8, 0.5), std::invalid_argument);
+  // Conservative scattering (§21.18): a white half-space returns all of the beam at k = 0 (within the 5e-9 that the
+  // operator's clamped albedo leaves), and less at k > 0.
+  const double white = open_layer_lateral_response(kInf, 1.0, 0.8, 0.0).reflectance;
+  EXPECT_NEAR(white, 1.0, 1e-8);
+  EXPECT_LT(open_layer_lateral_response(kInf, 1.0, 0.8, 0.1).reflectance, white);
+  EXPECT_THROW(open_layer_lateral_response(1.0, 1.5, 0.8, 0.5), std::invalid_argument);
   EXPECT_THROW(open_layer_lateral_response(1.0, 0.5, 0.8, -1.0), std::invalid_argument);
   EXPECT_THROW(open_layer_lateral_response(-1.0, 0.5, 0.8, 1.0), std::invalid_argument);
   EXPECT_EQ(open_layer_lateral_response(0.0, 0.5, 0.8, 1.0).reflectance, 0.0);
