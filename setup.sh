@@ -105,9 +105,11 @@ sanitize_skipped_tests=(
   'BottomFacesProfile\.RoughBottomMatchesTheWalk'                          # its totals, refusals and the bounce's
   'BottomFacesProfile\.PapersRoughBottomMatchesTheWalkUnderItsInterfaces'  # closed form
   'BottomFacesProfile\.LambertBaseMatchesTheWalkUnderThePapersInterfaces'
+  'ConservativeProfile\.PapersLayerMatchesTheWalk'                        # its totals
   'app\.ProfileCommand\.FiniteLayerUnderARoughTopTransmitsOnFinerOrdinates'     # the other ProfileCommand ones
   'app\.ProfileCommand\.InterfaceBetweenLayersIsTheCoresProfile'
   'app\.ProfileCommand\.RoughBottomIsTheCoresProfile'
+  'app\.ProfileCommand\.ThePapersConservativeLayerIsTheCoresProfile'
 )
 sanitize_skipped="^($(IFS='|'; echo "${sanitize_skipped_tests[*]}"))$"
 readonly sanitize_skipped

@@ -10,8 +10,8 @@
 namespace skinlayer {
 namespace {
 
-// One line naming what the profile cannot take yet, or nothing for a material it can: albedos below 1, layers each
-// with its extinction when there are several, interfaces between them only under a rough top or in diffuse light
+// One line naming what the profile cannot take yet, or nothing for a material it can: layers each with their
+// extinction when there are several, interfaces between them only under a rough top or in diffuse light
 // and in a stack that ends in a half-space, and a rough bottom or a Lambertian base only where the light enters
 // spread over directions (a rough top, or diffuse light).
 void require_profile_layer(const Material& m, Incidence incidence) {
@@ -20,8 +20,6 @@ void require_profile_layer(const Material& m, Incidence incidence) {
   const bool ends_in_half_space = std::isinf(m.total_tau());
   const bool all_lengths = m.extinction && std::all_of(m.below.begin(), m.below.end(),
                                                        [](const StackedLayer& l) { return l.extinction.has_value(); });
-  const bool albedo_below_1 = m.albedo < 1.0 && std::all_of(m.below.begin(), m.below.end(),
-                                                            [](const StackedLayer& l) { return l.albedo < 1.0; });
   const bool faces = m.has_internal_interfaces();
   const bool collimated = m.eta == 1.0 && incidence == Incidence::Normal;
   const bool bottom_face = !ends_in_half_space && (m.bottom.kind == BottomKind::Lambert ||
@@ -40,14 +38,12 @@ void require_profile_layer(const Material& m, Incidence incidence) {
                     ") under no top interface (--eta 1), which the beam reaches unscattered"
               : "it has a rough bottom interface (bottom-eta " + cli::format_shortest(m.bottom_eta()) +
                     ") under no top interface (--eta 1), which the beam reaches unscattered";
-  } else if (!albedo_below_1) {
-    why = "an albedo is 1 (give albedos below 1)";
   }
   if (why.empty()) return;
   throw ParameterError(
-      "profile: spatial profiles are computed so far for albedos below 1, with interfaces between layers only under "
-      "a rough top over a half-space, and a rough bottom or a Lambertian base only under a rough top or in diffuse "
-      "light; this material cannot be: " +
+      "profile: spatial profiles are computed so far with interfaces between layers only under a rough top over a "
+      "half-space, and a rough bottom or a Lambertian base only under a rough top or in diffuse light; this "
+      "material cannot be: " +
       why);
 }
 

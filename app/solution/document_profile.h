@@ -1,8 +1,8 @@
 // A material document's spatial profile (core/spatial/layer_profile.h) per colour channel, in the document's
 // length unit: what `skinlayer profile` writes and the Python module's Solution.profile returns, through the same
-// code. So far for albedos below 1 and nothing reflecting below: layers under an open or rough top, finite or ending
-// in a half-space (a skin among them, mixed from its wavelengths), lit by a pencil beam at normal incidence or
-// diffusely, and rough interfaces between layers under a rough top (or in diffuse light) over a half-space.
+// code. So far: layers under an open or rough top, finite or ending in a half-space (a skin among them, mixed from
+// its wavelengths), lit by a pencil beam at normal incidence or diffusely; under a rough top (or in diffuse light) a
+// rough bottom or a Lambertian base, and rough interfaces between layers over a half-space.
 #pragma once
 
 #include <functional>
@@ -27,7 +27,7 @@ struct DocumentProfile {
 // The means over the annuli [edges[i], edges[i + 1]) (increasing, from >= 0, in the unit), or the values at radii
 // (> 0, in the unit). Throws ParameterError, naming what it cannot take (a rough bottom interface or a Lambertian
 // base under an open top, interfaces between layers under an open top or over a finite stack, a stack without every
-// layer's mu_t, albedo 1), and for bad positions.
+// layer's mu_t), and for bad positions.
 // Where the light enters as radiance spread over directions and leaves a finite stack's bottom, the transmittance is
 // computed on 24 nodes at least. With options.reflectance_only the transmittance is left empty.
 // The command's resolution: 12 nodes, 16 modes, 40 frequencies.
