@@ -12,7 +12,6 @@
 #include "core/interfaces/layer_interfaces.h"
 #include "core/material.h"
 #include "core/series/quadrature.h"
-#include "core/spatial/bottom_bounce_transform.h"
 #include "core/spatial/entering_radiance.h"
 #include "core/spatial/lateral_bottom_face.h"
 #include "core/spatial/lateral_internal_face.h"
@@ -20,6 +19,7 @@
 #include "core/spatial/rough_top_single_scattering.h"
 #include "core/spatial/single_scattering_profile.h"
 #include "core/spatial/transmitted_low_orders.h"
+#include "core/spatial/unscattered_images.h"
 
 namespace skinlayer {
 namespace {
@@ -117,9 +117,6 @@ double point_value(const FrequencyQuadrature& F, double r) {
   return F.integrate(r, [&](double k) { return Eigen::numext::bessel_j0(k * r) * k; }) / (2.0 * kPi);
 }
 
-// The ordinates of the finer bounce image (§21.17).
-constexpr int kBounceOrdinates = 96;
-
 void check_options(const LayerProfileOptions& options) {
   if (options.frequencies < 4 || !(options.max_frequency > 0.0) || !(options.frequency_scale > 0.0)) {
     throw std::invalid_argument("layer_profile: needs >= 4 frequencies and positive frequency bounds");
@@ -144,24 +141,11 @@ struct SolvedLayer {
     if (layer.smooth_top && layer.incidence == Incidence::Diffuse) {
       throw std::invalid_argument("layer_profile: diffuse light through a smooth top is not computed yet");
     }
-    if (layer.top) {
-      entry = lateral_top_interface(*layer.top, N, M, layer.incidence, options.interface_azimuths);
-    } else if (layer.smooth_top) {
-      entry = smooth_top_interface(*layer.smooth_top, N, M);
-    } else if (layer.incidence == Incidence::Diffuse || slabs.size() > 1 || layer.smooth_bottom) {
-      // No top, through the rough top's path: all but the classic open slab's beam.
-      entry = open_top_interface(N, M, layer.incidence);
-    }
-    if (layer.smooth_bottom) {
-      bottom = smooth_bottom_face(*layer.smooth_bottom, N, M);
-      exit = smooth_exit_fraction(*layer.smooth_bottom);
-    } else if (layer.rough_bottom) {
-      bottom = rough_bottom_face(*layer.rough_bottom, N, M, options.interface_azimuths);
-      exit = rough_exit_fraction(*layer.rough_bottom);
-    } else if (layer.lambert_bottom) {
-      bottom = lambert_bottom_face(*layer.lambert_bottom, N, M);
-      exit = [](double) { return 0.0; };
-    }
+    entry = entry_interface(layer, N, M, options.interface_azimuths);
+    bottom = bottom_face(layer, N, M, options.interface_azimuths);
+    if (layer.smooth_bottom) exit = smooth_exit_fraction(*layer.smooth_bottom);
+    if (layer.rough_bottom) exit = rough_exit_fraction(*layer.rough_bottom);
+    if (layer.lambert_bottom) exit = [](double) { return 0.0; };
     // Light that enters as node radiance crosses a finite stack unscattered at every angle; a smooth bottom would send
     // it back up as rings that the profile does not take apart yet.
     if (entry && !entry->source.isZero() && layer.smooth_bottom) {
@@ -177,31 +161,14 @@ struct SolvedLayer {
     }
     if (entry && finite) entering = EnteringRadiance(*entry, layer.top, N);
     take_faces(finite);
-    if (bottom && entry && !entry->source.isZero()) take_finer_bounce();
-  }
-  // The unscattered light's first bounce off the bottom on finer ordinates (§21.17), scaled to carry the solve's own
-  // power at k = 0, so that the profile still adds up to R(0).
-  void take_finer_bounce() {
-    const int M = options.resolution.azimuth_modes, fine = kBounceOrdinates;
-    fine_entry = layer.top ? lateral_top_interface(*layer.top, fine, M, layer.incidence, options.interface_azimuths)
-                           : open_top_interface(fine, M, layer.incidence);
-    if (layer.rough_bottom) {
-      fine_bottom = rough_bottom_face(*layer.rough_bottom, fine, M, options.interface_azimuths);
-    } else if (layer.lambert_bottom) {
-      fine_bottom = lambert_bottom_face(*layer.lambert_bottom, fine, M);
-    } else {
-      fine_bottom = smooth_bottom_face(*layer.smooth_bottom, fine, M);
+    if (bottom && entry && !entry->source.isZero()) {
+      if (!faces.empty()) {
+        throw ParameterError(
+            "profile: a rough bottom or a Lambertian base under a stack with interfaces between its layers is not "
+            "computed yet");
+      }
+      images = UnscatteredImages(layer, slabs, *entry, *bottom, options);
     }
-    const double coarse = bottom_bounce_transform(slabs, *entry, *bottom, 0.0, 1);
-    const double finer = bottom_bounce_transform(slabs, *fine_entry, *fine_bottom, 0.0, 1);
-    bounce_scale = finer > 0.0 ? coarse / finer : 0.0;
-  }
-  // What the finer bounce adds at k: its image less the solve's own.
-  double bounce_correction(double k) const {
-    if (!fine_entry) return 0.0;
-    const int M = resolution_at(k).azimuth_modes;
-    return bounce_scale * bottom_bounce_transform(slabs, *fine_entry, *fine_bottom, k, M) -
-           bottom_bounce_transform(slabs, *entry, *bottom, k, M);
   }
   // The interfaces between slabs (§21.16), their operators built once; `upper` ends at the first of them.
   void take_faces(bool finite) {
@@ -287,9 +254,7 @@ struct SolvedLayer {
   LayerProfileOptions options;
   std::optional<LateralTopInterface> entry;  // none: the collimated beam into one open slab (§21.4)
   std::optional<LateralBottomFace> bottom;   // a bottom face under a finite stack
-  std::optional<LateralTopInterface> fine_entry;  // the entry and the bottom on kBounceOrdinates, for the bounce
-  std::optional<LateralBottomFace> fine_bottom;
-  double bounce_scale = 0.0;
+  UnscatteredImages images;                  // the unscattered bounce's finer image (§21.17)
   ExitFraction exit;                         // its exit fraction, continuous in angle (empty: none, all leaves)
   std::optional<EnteringRadiance> entering;  // the entry's light, continuous in angle, under a finite stack
   std::vector<std::optional<LateralInternalFace>> faces;  // per slab, the interface above it; empty: none
@@ -313,7 +278,8 @@ MultipleScatteringTransforms multiple_scattering_transforms(const SolvedLayer& s
     const std::size_t at = static_cast<std::size_t>(i);
     all[at] = solved.response(k);
     const LateralFrequencyResponse once = solved.single_scattering(k);
-    reflected[at] = all[at].reflectance - once.reflectance + solved.bounce_correction(k);
+    reflected[at] = all[at].reflectance - once.reflectance +
+                    solved.images.reflectance_correction(k, solved.resolution_at(k).azimuth_modes);
     transmitted[at] = all[at].transmittance - once.transmittance;
   });
   return {FrequencySpline(reflected, step, options.frequency_scale),
@@ -346,6 +312,24 @@ LayerProfile assemble_profile(const ProfileLayer& layer, const LayerProfileOptio
 }
 
 }  // namespace
+
+std::optional<LateralTopInterface> entry_interface(const ProfileLayer& layer, int ordinates, int modes, int azimuths) {
+  if (layer.top) return lateral_top_interface(*layer.top, ordinates, modes, layer.incidence, azimuths);
+  if (layer.smooth_top) return smooth_top_interface(*layer.smooth_top, ordinates, modes);
+  // No top, through the rough top's path: all but the classic open slab's beam.
+  if (layer.incidence == Incidence::Diffuse || !layer.below.empty() || layer.smooth_bottom || layer.rough_bottom ||
+      layer.lambert_bottom) {
+    return open_top_interface(ordinates, modes, layer.incidence);
+  }
+  return std::nullopt;
+}
+
+std::optional<LateralBottomFace> bottom_face(const ProfileLayer& layer, int ordinates, int modes, int azimuths) {
+  if (layer.smooth_bottom) return smooth_bottom_face(*layer.smooth_bottom, ordinates, modes);
+  if (layer.rough_bottom) return rough_bottom_face(*layer.rough_bottom, ordinates, modes, azimuths);
+  if (layer.lambert_bottom) return lambert_bottom_face(*layer.lambert_bottom, ordinates, modes);
+  return std::nullopt;
+}
 
 ProfileLayer profile_layer(const Material& m, Incidence incidence) {
   ProfileLayer layer{m.tau, m.albedo, m.g};

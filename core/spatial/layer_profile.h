@@ -23,6 +23,7 @@
 #include "core/interfaces/microfacet.h"
 #include "core/material.h"
 #include "core/parallel_for.h"
+#include "core/spatial/lateral_bottom_face.h"
 #include "core/spatial/lateral_frequency_response.h"
 #include "core/spatial/lateral_top_interface.h"
 
@@ -58,6 +59,13 @@ struct ProfileLayer {
 // Lambertian base. A stack's layers must all have their
 // extinction (mu_t), which relates their lengths; throws std::invalid_argument otherwise.
 ProfileLayer profile_layer(const Material& material, Incidence incidence = Incidence::Normal);
+
+// The operators that a layer's faces give the ordinates on `ordinates` nodes and `modes` modes, projected on `azimuths`
+// samples: what layer_profile builds once at its resolution, and again on finer nodes for the images of the
+// unscattered light (§21.17). The entry: none for the open slab's collimated beam (§21.4). The bottom face: none over
+// a half-space or where nothing is below.
+std::optional<LateralTopInterface> entry_interface(const ProfileLayer& layer, int ordinates, int modes, int azimuths);
+std::optional<LateralBottomFace> bottom_face(const ProfileLayer& layer, int ordinates, int modes, int azimuths);
 
 struct LayerProfileOptions {
   LateralFrequencyResolution resolution{16, 24};  // the azimuthal modes at the highest frequencies

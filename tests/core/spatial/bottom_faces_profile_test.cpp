@@ -104,5 +104,18 @@ TEST(BottomFacesProfile, ACollimatedBeamOntoARoughBottomIsRefused) {
   EXPECT_THROW(layer_profile(layer, edges, coarse), ParameterError);
 }
 
+// The unscattered bounce through an interface between layers is not built: refused, even for the reflectance alone.
+TEST(BottomFacesProfile, ABottomUnderAnInterfaceBetweenLayersIsRefused) {
+  Material m = lambert_based_layer();
+  m.extinction = 1.0;
+  m.below = {StackedLayer{1.0, 0.9, 0.8, LayerInterface{0.3, 1.1}, 1.0}};
+  const double edges[] = {0.0, 1.0};
+  LayerProfileOptions coarse;
+  coarse.resolution = {6, 4};
+  coarse.frequencies = 8;
+  coarse.reflectance_only = true;
+  EXPECT_THROW(layer_profile(profile_layer(m), edges, coarse), ParameterError);
+}
+
 }  // namespace
 }  // namespace skinlayer
