@@ -133,23 +133,28 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(unknowns);
   const auto rows = [&](int m, int up) { return layout.at(m, up, 0); };  // the first of a mode's N rows one way
   int equation = 0;
-  const SolvedSlab& first = solved.front();
-  {
-    const Eigen::MatrixXd values = first.values(0.0);
-    const Eigen::VectorXd beam = first.particulars(0.0);
+  // An outer face of `slab` at `depth`, mode by mode: the radiance going in (direction `in`: 0 down, 1 up) is what the
+  // face reflects of the radiance going out (none where `reflection` is null), plus `source` in mode 0.
+  const auto outer_face = [&](const SolvedSlab& slab, double depth, int in,
+                              const std::vector<Eigen::MatrixXd>* reflection, const Eigen::VectorXd* source) {
+    const Eigen::MatrixXd values = slab.values(depth);
+    const Eigen::VectorXd beam = slab.particulars(depth);
+    const int out = 1 - in;
     for (int m = 0; m < M; ++m) {
-      auto block = B.block(equation, first.offset, N, first.count);
-      block = values.middleRows(rows(m, 0), N);
-      rhs.segment(equation, N) = -beam.segment(rows(m, 0), N);
-      if (top != nullptr) {
-        const Eigen::MatrixXd& reflect = top->reflection[static_cast<std::size_t>(m)];
-        block -= reflect * values.middleRows(rows(m, 1), N);
-        rhs.segment(equation, N) += reflect * beam.segment(rows(m, 1), N);
-        if (m == 0) rhs.segment(equation, N) += top->source;
+      auto block = B.block(equation, slab.offset, N, slab.count);
+      block = values.middleRows(rows(m, in), N);
+      rhs.segment(equation, N) = -beam.segment(rows(m, in), N);
+      if (reflection != nullptr) {
+        const Eigen::MatrixXd& reflect = (*reflection)[static_cast<std::size_t>(m)];
+        block -= reflect * values.middleRows(rows(m, out), N);
+        rhs.segment(equation, N) += reflect * beam.segment(rows(m, out), N);
       }
+      if (m == 0 && source != nullptr) rhs.segment(equation, N) += *source;
       equation += N;
     }
-  }
+  };
+  const SolvedSlab& first = solved.front();
+  outer_face(first, 0.0, 0, top ? &top->reflection : nullptr, top ? &top->source : nullptr);
   for (std::size_t l = 0; l + 1 < solved.size(); ++l) {
     const SolvedSlab &upper = solved[l], &lower = solved[l + 1];
     const Eigen::MatrixXd upper_face = upper.values(upper.tau), lower_face = lower.values(0.0);
@@ -197,21 +202,7 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
       equation += N;
     }
   }
-  if (!semi_infinite) {
-    const Eigen::MatrixXd values = last.values(last.tau);
-    const Eigen::VectorXd beam = last.particulars(last.tau);
-    for (int m = 0; m < M; ++m) {
-      auto block = B.block(equation, last.offset, N, last.count);
-      block = values.middleRows(rows(m, 1), N);
-      rhs.segment(equation, N) = -beam.segment(rows(m, 1), N);
-      if (bottom != nullptr) {
-        const Eigen::MatrixXd& reflect = bottom->reflection[static_cast<std::size_t>(m)];
-        block -= reflect * values.middleRows(rows(m, 0), N);
-        rhs.segment(equation, N) += reflect * beam.segment(rows(m, 0), N);
-      }
-      equation += N;
-    }
-  }
+  if (!semi_infinite) outer_face(last, last.tau, 1, bottom ? &bottom->reflection : nullptr, nullptr);
   check(equation == unknowns, "the boundary system is not square");
   const Eigen::VectorXd coefficients = B.partialPivLu().solve(rhs);
 

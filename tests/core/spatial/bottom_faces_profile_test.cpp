@@ -3,17 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <vector>
 
 #include "core/conventions.h"
 #include "core/interfaces/layer_interfaces.h"
 #include "core/material.h"
-#include "core/solve/resolution.h"
-#include "core/solver.h"
-#include "core/spatial/lateral_top_interface.h"
 #include "core/spatial/layer_profile.h"
 #include "tests/core/spatial/profile_against_walk.h"
+#include "tests/core/spatial/profile_totals.h"
 #include "tests/core/spatial/rough_top_layers.h"
 
 namespace skinlayer {
@@ -32,29 +29,13 @@ Material lambert_based_layer() {
   return m;
 }
 
-// R(0) plus the top's own multiply scattered reflection is the solver's subsurface reflectance at normal incidence,
-// T(0) its transmittance (its mode 0 alone, on the same nodes and azimuth samples).
-void expect_totals_match_the_solver(Material m) {
-  m.ordinates = 12;
-  LayerProfileOptions options = test::profile_test_options();
-  SolveOptions mode_zero;
-  mode_zero.max_modes = 1;
-  options.interface_azimuths = choose_resolution(m, mode_zero).interface_azimuths;
-  const double edges[] = {0.0, 1.0};
-  const LayerProfile profile = layer_profile(profile_layer(m), edges, options);
-  const double theta[] = {0.0};
-  const DirectionalAlbedo albedo = directional_albedo(m, theta).front();
-  const double surface = lateral_top_interface(top_interface(m), 12, 16, Incidence::Normal, options.interface_azimuths)
-                             .surface_multiple_reflectance;
-  std::printf("  R(0) %.8f  solver less the surface's %.8f   T(0) %.8f  solver %.8f\n", profile.total_reflectance,
-              albedo.reflectance_subsurface - surface, profile.total_transmittance, albedo.transmittance);
-  EXPECT_NEAR(profile.total_reflectance, albedo.reflectance_subsurface - surface, 1e-6);
-  EXPECT_NEAR(profile.total_transmittance, albedo.transmittance, 1e-6);
+TEST(BottomFacesProfile, RoughBottomTotalsAreTheSolvers) {
+  test::expect_totals_match_the_solver(rough_bottomed_layer());
 }
 
-TEST(BottomFacesProfile, RoughBottomTotalsAreTheSolvers) { expect_totals_match_the_solver(rough_bottomed_layer()); }
-
-TEST(BottomFacesProfile, LambertBaseTotalsAreTheSolvers) { expect_totals_match_the_solver(lambert_based_layer()); }
+TEST(BottomFacesProfile, LambertBaseTotalsAreTheSolvers) {
+  test::expect_totals_match_the_solver(lambert_based_layer());
+}
 
 const std::vector<double> kEdges = {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0};
 
@@ -64,29 +45,23 @@ const std::vector<double> kEdges = {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.
 // of the light is trapped by total internal reflection, that moves the profile by up to 13% against the walk's
 // facet-by-facet crossings (docs/model.md §21.17), though the totals agree. So the geometry is checked at sigma 0.2
 // under the default interfaces, and at the paper's sigma 0.5 under its own single-scattering interfaces.
-LayerProfileOptions transmitted_radiance_options() {
-  LayerProfileOptions options = test::profile_test_options();
-  options.resolution.ordinates = 24;
-  return options;
-}
-
 TEST(BottomFacesProfile, RoughBottomMatchesTheWalk) {
   Material m = rough_bottomed_layer();
   m.sigma = 0.2;
   m.bottom.sigma = 0.2;
-  test::expect_profile_matches_the_walk(profile_layer(m), m, transmitted_radiance_options(), kEdges);
+  test::expect_profile_matches_the_walk(profile_layer(m), m, test::transmitted_radiance_options(), kEdges);
 }
 
 TEST(BottomFacesProfile, PapersRoughBottomMatchesTheWalkUnderItsInterfaces) {
   Material m = rough_bottomed_layer();
   m.microfacet = MicrofacetModel::Single;
-  test::expect_profile_matches_the_walk(profile_layer(m), m, transmitted_radiance_options(), kEdges);
+  test::expect_profile_matches_the_walk(profile_layer(m), m, test::transmitted_radiance_options(), kEdges);
 }
 
 TEST(BottomFacesProfile, LambertBaseMatchesTheWalkUnderThePapersInterfaces) {
   Material m = lambert_based_layer();
   m.microfacet = MicrofacetModel::Single;
-  test::expect_profile_matches_the_walk(profile_layer(m), m, transmitted_radiance_options(), kEdges);
+  test::expect_profile_matches_the_walk(profile_layer(m), m, test::transmitted_radiance_options(), kEdges);
 }
 
 TEST(BottomFacesProfile, ACollimatedBeamOntoARoughBottomIsRefused) {

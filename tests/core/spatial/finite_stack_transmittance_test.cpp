@@ -111,15 +111,10 @@ TEST(FiniteStackTransmittance, LowOrdersInKSpaceAreTheOrdinatesOwn) {
 
 using test::rough_top_layer;
 
-// 24 nodes: the refracted lobe enters on the nodes nearest the normal, and each node's stream through the slab
-// makes a ring that the multiply scattered light keeps. At 12, 16, 20 and 24 nodes the worst annulus below is 4.7%,
-// 2.4%, 1.7% and 1.0% off the walk (sigma 0.3); the command computes such transmittance on 24.
-LayerProfileOptions transmitted_radiance_options() {
-  LayerProfileOptions options = test::profile_test_options();
-  options.resolution.ordinates = 24;
-  return options;
-}
-
+// The walk checks below take 24 nodes (test::transmitted_radiance_options): the refracted lobe enters on the nodes
+// nearest the normal, and each node's stream through the slab makes a ring that the multiply scattered light keeps. At
+// 12, 16, 20 and 24 nodes the worst annulus below is 4.7%, 2.4%, 1.7% and 1.0% off the walk (sigma 0.3); the command
+// computes such transmittance on 24.
 const std::vector<double> kSlabEdges = {0.0, 0.025, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3, 0.4,
                                         0.6, 0.8,   1.0,  1.5,   2.0, 3.0,  4.0, 6.0, 8.0};
 
@@ -127,13 +122,13 @@ const std::vector<double> kSlabEdges = {0.0, 0.025, 0.05, 0.075, 0.1, 0.15, 0.2,
 // where each photon leaves, the unscattered ones included.
 TEST(FiniteStackTransmittance, RoughTopOverAFiniteSlabMatchesTheWalk) {
   const Material m = rough_top_layer(1.0, 0.3, 0.9, 0.8);
-  test::expect_profile_matches_the_walk(profile_layer(m), m, transmitted_radiance_options(), kSlabEdges);
+  test::expect_profile_matches_the_walk(profile_layer(m), m, test::transmitted_radiance_options(), kSlabEdges);
 }
 
 // A rougher top, whose lobe spreads over more nodes, over a more absorbing slab.
 TEST(FiniteStackTransmittance, RougherTopOverAnAbsorbingSlabMatchesTheWalk) {
   const Material m = rough_top_layer(1.5, 0.8, 0.8, 0.6);
-  test::expect_profile_matches_the_walk(profile_layer(m), m, transmitted_radiance_options(), kSlabEdges);
+  test::expect_profile_matches_the_walk(profile_layer(m), m, test::transmitted_radiance_options(), kSlabEdges);
 }
 
 // A finite two-layer stack in millimetres under a rough top: 0.05 mm at mu_t 20/mm over 0.025 mm at 40/mm. Under
@@ -145,7 +140,7 @@ TEST(FiniteStackTransmittance, TwoLayerStackInMillimetresMatchesTheWalk) {
   m.microfacet = MicrofacetModel::Single;
   m.extinction = 20.0;
   m.below = {StackedLayer{1.0, 0.95, 0.5, std::nullopt, 40.0}};
-  test::expect_profile_matches_the_walk(profile_layer(m), m, transmitted_radiance_options(),
+  test::expect_profile_matches_the_walk(profile_layer(m), m, test::transmitted_radiance_options(),
                                         {0.0, 0.0025, 0.005, 0.01, 0.02, 0.03, 0.05, 0.075, 0.1, 0.15, 0.2, 0.3, 0.4},
                                         20.0);
 }

@@ -24,6 +24,14 @@ inline LayerProfileOptions profile_test_options() {
   return options;
 }
 
+// Light that enters spread over directions and leaves a finite stack's bottom: on 24 nodes, as the command takes it
+// (docs/model.md §21.15).
+inline LayerProfileOptions transmitted_radiance_options() {
+  LayerProfileOptions options = profile_test_options();
+  options.resolution.ordinates = 24;
+  return options;
+}
+
 // `material` is `layer` as the walk takes it. With mu_t (the first layer's extinction, 1/mm) the edges are in mm,
 // as the walk tallies a stack whose layers all have their lengths, and the profile's values become 1/mm^2.
 inline void expect_profile_matches_the_walk(const ProfileLayer& layer, const Material& material,
