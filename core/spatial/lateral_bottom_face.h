@@ -35,8 +35,9 @@ LateralBottomFace lambert_bottom_face(double albedo, int ordinates, int modes);
 
 // The exit fraction X(mu) of a face for light meeting it from inside at any cosine mu in (0, 1], continuous in angle,
 // for the transmitted light's closed forms (transmitted_low_orders.h): 1 - F(mu) for a smooth face, the rough face's
-// directional transmittance (interface_albedo_parts_along, tabulated on 257 cosines and interpolated linearly, within
-// about 1e-5), 0 for a Lambertian base, 1 where there is no face.
+// directional transmittance (interface_albedo_parts_along, tabulated on 257 cosines and interpolated linearly: within
+// 3e-5 of it for sigma >= 0.3, and 2e-4 at sigma 0.1, whose edge at the critical angle is sharper), 0 for a
+// Lambertian base, 1 where there is no face.
 using ExitFraction = std::function<double(double mu)>;
 ExitFraction smooth_exit_fraction(double eta);
 ExitFraction rough_exit_fraction(const RoughDielectric& interface);
