@@ -92,5 +92,18 @@ void BM_FiniteSlabProfile(benchmark::State& state) {
 }
 BENCHMARK(BM_FiniteSlabProfile)->Iterations(1)->Unit(benchmark::kMillisecond);
 
+// The paper's layer between two rough interfaces (tau 1.6, sigma 0.5 and eta 1.4 on both faces, Omega 0.95, g 0.8),
+// both faces in 15 annuli on 24 nodes, with the bounce's finer image (docs/model.md §21.17), one thread.
+void BM_RoughBottomProfile(benchmark::State& state) {
+  Material m;
+  m.albedo = 0.95;
+  const std::vector<double> edges = {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0};
+  LayerProfileOptions options;
+  options.resolution = {24, 16};
+  options.frequencies = 40;
+  for (auto _ : state) benchmark::DoNotOptimize(layer_profile(profile_layer(m), edges, options));
+}
+BENCHMARK(BM_RoughBottomProfile)->Iterations(1)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 }  // namespace skinlayer::bench

@@ -363,6 +363,8 @@ std::string report(const CollectingReporter& r, const std::filesystem::path& png
             r.ms("BM_SkinProfile/iterations:1/real_time"))
      << formatted("| a finite slab under a rough top, both faces, 15 annuli, 24 nodes | %.0f |\n",
                   r.ms("BM_FiniteSlabProfile/iterations:1"))
+     << formatted("| the paper's layer between two rough faces, both faces, 15 annuli, 24 nodes | %.0f |\n",
+                  r.ms("BM_RoughBottomProfile/iterations:1"))
      << "\nThe cost grows about linearly with the number of spatial frequencies: each is one solve of the coupled "
         "modes, an eigen-decomposition per slab and a dense boundary system.\n";
 
