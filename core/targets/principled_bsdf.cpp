@@ -1,0 +1,122 @@
+// docs/model.md §22.1: Blender 3.4's Principled BSDF (Cycles), its opaque lobes.
+#include "core/targets/principled_bsdf.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/color/luminance.h"
+#include "core/conventions.h"
+#include "core/interfaces/fresnel.h"
+#include "core/material.h"
+
+namespace skinlayer {
+namespace {
+
+void check(const PrincipledParameters& p) {
+  const auto unit = [](double value, const char* name) {
+    if (!(value >= 0.0 && value <= 1.0)) {
+      throw ParameterError(std::string("principled: ") + name + " must be in [0, 1]");
+    }
+  };
+  for (int c = 0; c < 3; ++c) unit(p.base_color(c), "base_color");
+  unit(p.metallic, "metallic");
+  unit(p.specular, "specular");
+  unit(p.specular_tint, "specular_tint");
+  unit(p.roughness, "roughness");
+  unit(p.sheen, "sheen");
+  unit(p.sheen_tint, "sheen_tint");
+  unit(p.clearcoat, "clearcoat");
+  unit(p.clearcoat_roughness, "clearcoat_roughness");
+  if (p.transmission != 0.0 || p.subsurface != 0.0 || p.anisotropic != 0.0) {
+    throw ParameterError("principled: transmission, subsurface and anisotropic are not built yet (give 0)");
+  }
+}
+
+double schlick_weight(double cosine) { return std::pow(std::clamp(1.0 - cosine, 0.0, 1.0), 5); }
+
+// Smith's G1 for GGX of roughness alpha along a direction of cosine mu (Walter et al. 2007, eq. 34).
+double ggx_masking(double mu, double alpha) {
+  const double tan2 = (1.0 - mu * mu) / (mu * mu);
+  return 2.0 / (1.0 + std::sqrt(1.0 + alpha * alpha * tan2));
+}
+
+// GGX (Trowbridge-Reitz) normal distribution, 1/sr: D = alpha^2 / (pi cos^4 (alpha^2 + tan^2)^2).
+double ggx_distribution(double cos_m, double alpha) {
+  const double cos2 = cos_m * cos_m, tan2 = (1.0 - cos2) / cos2, a2 = alpha * alpha;
+  return a2 / (kPi * cos2 * cos2 * (a2 + tan2) * (a2 + tan2));
+}
+
+// Berry's distribution (GTR1, Burley 2012 appendix B): (a^2 - 1) / (pi ln(a^2) (1 + (a^2 - 1) cos^2)); 1/pi at a >= 1.
+double gtr1_distribution(double cos_m, double alpha) {
+  if (alpha >= 1.0) return kInvPi;
+  const double a2 = alpha * alpha;
+  return (a2 - 1.0) / (kPi * std::log(a2) * (1.0 + (a2 - 1.0) * cos_m * cos_m));
+}
+
+// Cycles' Fresnel blend: c0 at normal incidence, rising to white as the dielectric Fresnel of eta does.
+Rgb fresnel_blend(double cos_h, double eta, const Rgb& c0) {
+  const double f0 = fresnel_dielectric(1.0, eta);
+  const double t = (fresnel_dielectric(cos_h, eta) - f0) / (1.0 - f0);
+  return c0 * (1.0 - t) + t;
+}
+
+// The colour with its luminance divided out: hue and saturation alone (white where it is black).
+Rgb tint_of(const Rgb& color, const Rgb& luminance_weights) {
+  const double luminance = (color * luminance_weights).sum();
+  return luminance > 0.0 ? Rgb(color / luminance) : Rgb::Ones();
+}
+
+}  // namespace
+
+PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, const Vec3& omega_i,
+                                                 const Vec3& omega_o) {
+  check(p);
+  PrincipledLobes lobes;
+  const double cos_i = omega_i.z(), cos_o = omega_o.z();
+  if (!(cos_i > 0.0 && cos_o > 0.0)) return lobes;
+  const Vec3 h = (omega_i + omega_o).normalized();
+  const double cos_h = h.z(), cos_ih = omega_i.dot(h);
+  const double diffuse_weight = 1.0 - p.metallic, specular_weight = 1.0;  // transmission is 0
+
+  const double F_i = schlick_weight(cos_i), F_o = schlick_weight(cos_o);
+  const double retro = p.roughness * (omega_i.dot(omega_o) + 1.0);
+  const double diffuse =
+      kInvPi * cos_i * ((1.0 - 0.5 * F_o) * (1.0 - 0.5 * F_i) + retro * (F_i + F_o + F_i * F_o * (retro - 1.0)));
+  lobes.diffuse = diffuse_weight * p.base_color * diffuse;
+
+  if (p.sheen > 0.0) {
+    const Rgb rec709(kRec709Luminance[0], kRec709Luminance[1], kRec709Luminance[2]);
+    const Rgb sheen_color = (1.0 - p.sheen_tint) + tint_of(p.base_color, rec709) * p.sheen_tint;
+    lobes.sheen = diffuse_weight * p.sheen * sheen_color * schlick_weight(cos_ih) * cos_i;
+  }
+
+  if (p.specular > 0.0 || p.metallic > 0.0) {
+    const double alpha = p.roughness * p.roughness;
+    const double eta = 2.0 / (1.0 - std::sqrt(0.08 * p.specular)) - 1.0;
+    const Rgb tint = (1.0 - p.specular_tint) + tint_of(p.base_color, Rgb(0.3, 0.6, 0.1)) * p.specular_tint;
+    const Rgb c0 = (p.specular * 0.08 * tint * (1.0 - p.metallic) + p.base_color * p.metallic).min(1.0).max(0.0);
+    const double G = ggx_masking(cos_i, alpha) * ggx_masking(cos_o, alpha);
+    lobes.specular =
+        specular_weight * fresnel_blend(cos_ih, eta, c0) * G * ggx_distribution(cos_h, alpha) / (4.0 * cos_o);
+  }
+
+  if (p.clearcoat > 0.0) {
+    const double alpha = p.clearcoat_roughness * p.clearcoat_roughness;
+    const double G = ggx_masking(cos_i, 0.25) * ggx_masking(cos_o, 0.25);
+    lobes.clearcoat = 0.25 * p.clearcoat * fresnel_blend(cos_ih, 1.5, Rgb::Constant(0.04)) * G *
+                      gtr1_distribution(cos_h, alpha) / (4.0 * cos_o);
+  }
+  return lobes;
+}
+
+Rgb principled_brdf_cosine_weighted(const PrincipledParameters& p, const Vec3& omega_i, const Vec3& omega_o) {
+  return principled_lobes_cosine_weighted(p, omega_i, omega_o).sum();
+}
+
+Rgb principled_brdf(const PrincipledParameters& p, const Vec3& omega_i, const Vec3& omega_o) {
+  const Rgb weighted = principled_brdf_cosine_weighted(p, omega_i, omega_o);
+  return omega_i.z() > 0.0 ? Rgb(weighted / omega_i.z()) : Rgb::Zero();
+}
+
+}  // namespace skinlayer

@@ -1,0 +1,138 @@
+// Blender 3.4's Principled BSDF (docs/model.md §22.1): reciprocity, closed-form albedos of its lobes, the normalization
+// of its distributions, and how its weights split the light.
+#include "core/targets/principled_bsdf.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/conventions.h"
+#include "core/material.h"
+#include "core/series/quadrature.h"
+
+namespace skinlayer {
+namespace {
+
+Vec3 direction(double theta, double phi) {
+  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
+}
+
+// The directional albedo of light from omega_i: int f cos(theta_o) d omega_o, by Gauss-Legendre in cos(theta_o) and
+// in phi; by reciprocity that is the cosine-weighted BRDF integrated over the light's directions.
+Rgb albedo(const PrincipledParameters& p, const Vec3& omega_i, int nodes = 192) {
+  const QuadratureRule mu = gauss_legendre(nodes, 0.0, 1.0), phi = gauss_legendre(2 * nodes, 0.0, 2.0 * kPi);
+  Rgb total = Rgb::Zero();
+  for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
+    const double theta = std::acos(mu.nodes[a]);
+    for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
+      total +=
+          mu.weights[a] * phi.weights[b] * principled_brdf_cosine_weighted(p, direction(theta, phi.nodes[b]), omega_i);
+    }
+  }
+  return total;
+}
+
+TEST(PrincipledBsdf, IsReciprocal) {
+  PrincipledParameters p;
+  p.base_color = Rgb(0.9, 0.4, 0.2);
+  p.sheen = 0.6;
+  p.clearcoat = 0.7;
+  p.clearcoat_roughness = 0.2;
+  p.specular_tint = 0.4;
+  p.metallic = 0.3;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> theta(0.0, 1.5), phi(0.0, 2.0 * kPi);
+  for (int n = 0; n < 200; ++n) {
+    const Vec3 a = direction(theta(random), phi(random)), b = direction(theta(random), phi(random));
+    const Rgb ab = principled_brdf(p, a, b), ba = principled_brdf(p, b, a);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(ab(c), ba(c), 1e-12 * std::max(1.0, ab(c)));
+  }
+}
+
+// Seen from the normal (F_o = 0), the diffuse lobe is (1/pi)[(1 - F_i/2) + r (1 + mu) F_i], so its albedo is
+//   2 int_0^1 [1 - (1 - mu)^5 / 2 + r (1 + mu)(1 - mu)^5] mu d mu = 41/42 + 5 r / 84,
+// from B(2, 6) = 1/42 and B(3, 6) = 1/168. At roughness 1 that is 1.036: Burley's diffuse is not energy-conserving.
+TEST(PrincipledBsdf, DiffuseAlbedoFromTheNormalIsTheClosedForm) {
+  PrincipledParameters p;
+  p.base_color = Rgb::Ones();
+  p.specular = 0.0;
+  for (const double roughness : {0.0, 0.5, 1.0}) {
+    p.roughness = roughness;
+    EXPECT_NEAR(albedo(p, Vec3::UnitZ())(0), 41.0 / 42.0 + 5.0 * roughness / 84.0, 1e-6) << roughness;
+  }
+}
+
+// A white metal's specular is GGX with F = 1: its albedo is 1 less what the masking removes, which vanishes as the
+// surface turns smooth. At the specular parameter s a smooth dielectric reflects F_eta(1) = 0.08 s at normal incidence:
+// Cycles' eta = 2 / (1 - sqrt(0.08 s)) - 1 is that reflectance's index.
+TEST(PrincipledBsdf, SpecularLobeIsNormalizedAndItsIndexGivesItsReflectance) {
+  PrincipledParameters metal;
+  metal.base_color = Rgb::Ones();
+  metal.metallic = 1.0;
+  metal.roughness = 0.1;
+  EXPECT_NEAR(albedo(metal, Vec3::UnitZ(), 384)(0), 1.0, 2e-3);
+  metal.roughness = 0.7;
+  const double rough = albedo(metal, direction(1.2, 0.0))(0);
+  EXPECT_LT(rough, 0.97);  // single scattering loses light at grazing incidence on a rough surface
+  EXPECT_GT(rough, 0.5);
+  PrincipledParameters dielectric;
+  dielectric.base_color = Rgb::Zero();
+  dielectric.roughness = 0.1;
+  for (const double specular : {0.25, 0.5, 1.0}) {
+    dielectric.specular = specular;
+    EXPECT_NEAR(albedo(dielectric, Vec3::UnitZ(), 384)(0), 0.08 * specular, 2e-3 * specular) << specular;
+  }
+}
+
+// The clearcoat's GTR1 distribution (Berry) is normalized but heavy-tailed: of its microfacets, the fraction tilted
+// less than 45 degrees, which reflect light from the normal back above the horizon, is
+//   int_{cos^2 > 1/2} D cos(theta_m) d omega_m = 1 - ln((1 + a^2) / 2) / ln(a^2),
+// 92.5% at a = 0.01. So a smooth coat seen from the normal reflects about 0.25 clearcoat times its 0.04 times that,
+// within 2% (masking, and the Fresnel's rise on the tilted facets), and twice the coat reflects twice the light.
+TEST(PrincipledBsdf, ClearcoatReflectsItsFresnelTimesAQuarterOfItsUpperFacets) {
+  PrincipledParameters p;
+  p.base_color = Rgb::Zero();
+  p.specular = 0.0;
+  p.clearcoat = 1.0;
+  p.clearcoat_roughness = 0.1;
+  const PrincipledLobes coat_only = principled_lobes_cosine_weighted(p, Vec3::UnitZ(), direction(0.3, 1.0));
+  EXPECT_EQ(coat_only.diffuse.maxCoeff(), 0.0);
+  const double a2 = 1e-4, upper = 1.0 - std::log(0.5 * (1.0 + a2)) / std::log(a2);
+  const double coat = albedo(p, Vec3::UnitZ(), 384)(0);
+  EXPECT_NEAR(coat, 0.25 * 0.04 * upper, 0.02 * 0.25 * 0.04 * upper);
+  p.clearcoat = 0.5;
+  EXPECT_NEAR(albedo(p, Vec3::UnitZ(), 384)(0), 0.5 * coat, 1e-12);
+}
+
+// Metal removes the diffuse and sheen lobes; the specular tint and the sheen tint colour their lobes by the base
+// colour's hue.
+TEST(PrincipledBsdf, WeightsAndTintsSplitTheLight) {
+  PrincipledParameters p;
+  p.base_color = Rgb(0.8, 0.2, 0.1);
+  p.sheen = 1.0;
+  p.sheen_tint = 1.0;
+  p.specular_tint = 1.0;
+  const Vec3 in = direction(0.7, 0.0), out = direction(1.1, 2.0);
+  const PrincipledLobes dielectric = principled_lobes_cosine_weighted(p, in, out);
+  EXPECT_GT(dielectric.sheen(0), dielectric.sheen(1));
+  EXPECT_GT(dielectric.specular(0), dielectric.specular(1));
+  p.metallic = 1.0;
+  const PrincipledLobes metal = principled_lobes_cosine_weighted(p, in, out);
+  EXPECT_EQ(metal.diffuse.maxCoeff(), 0.0);
+  EXPECT_EQ(metal.sheen.maxCoeff(), 0.0);
+  EXPECT_GT(metal.specular(0), dielectric.specular(0));
+  EXPECT_EQ(principled_brdf(p, in, direction(1.0, 0.0) * -1.0).maxCoeff(), 0.0);  // below the surface: nothing
+}
+
+TEST(PrincipledBsdf, RefusesWhatItCannotTake) {
+  PrincipledParameters p;
+  p.roughness = 1.5;
+  EXPECT_THROW(principled_brdf(p, Vec3::UnitZ(), Vec3::UnitZ()), ParameterError);
+  p.roughness = 0.5;
+  p.transmission = 0.5;
+  EXPECT_THROW(principled_brdf(p, Vec3::UnitZ(), Vec3::UnitZ()), ParameterError);
+}
+
+}  // namespace
+}  // namespace skinlayer
