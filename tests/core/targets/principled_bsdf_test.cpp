@@ -34,13 +34,12 @@ Rgb albedo(const PrincipledParameters& p, const Vec3& omega_i, int nodes = 192) 
 }
 
 TEST(PrincipledBsdf, IsReciprocal) {
-  PrincipledParameters p;
-  p.base_color = Rgb(0.9, 0.4, 0.2);
-  p.sheen = 0.6;
-  p.clearcoat = 0.7;
-  p.clearcoat_roughness = 0.2;
-  p.specular_tint = 0.4;
-  p.metallic = 0.3;
+  const PrincipledParameters p{.base_color = Rgb(0.9, 0.4, 0.2),
+                               .metallic = 0.3,
+                               .specular_tint = 0.4,
+                               .sheen = 0.6,
+                               .clearcoat = 0.7,
+                               .clearcoat_roughness = 0.2};
   std::mt19937 random(7);
   std::uniform_real_distribution<double> theta(0.0, 1.5), phi(0.0, 2.0 * kPi);
   for (int n = 0; n < 200; ++n) {
@@ -108,11 +107,7 @@ TEST(PrincipledBsdf, ClearcoatReflectsItsFresnelTimesAQuarterOfItsUpperFacets) {
 // Metal removes the diffuse and sheen lobes; the specular tint and the sheen tint colour their lobes by the base
 // colour's hue.
 TEST(PrincipledBsdf, WeightsAndTintsSplitTheLight) {
-  PrincipledParameters p;
-  p.base_color = Rgb(0.8, 0.2, 0.1);
-  p.sheen = 1.0;
-  p.sheen_tint = 1.0;
-  p.specular_tint = 1.0;
+  PrincipledParameters p{.base_color = Rgb(0.8, 0.2, 0.1), .specular_tint = 1.0, .sheen = 1.0, .sheen_tint = 1.0};
   const Vec3 in = direction(0.7, 0.0), out = direction(1.1, 2.0);
   const PrincipledLobes dielectric = principled_lobes_cosine_weighted(p, in, out);
   EXPECT_GT(dielectric.sheen(0), dielectric.sheen(1));
