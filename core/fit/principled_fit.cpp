@@ -1,0 +1,136 @@
+// docs/model.md §22.2: the Principled BSDF fitted to samples of a BRDF, its albedo at normal incidence matched.
+#include "core/fit/principled_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/conventions.h"
+#include "core/fit/bounded_least_squares.h"
+#include "core/series/quadrature.h"
+
+namespace skinlayer {
+namespace {
+
+Vec3 direction(double cos_theta, double phi) {
+  const double sine = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+  return {sine * std::cos(phi), sine * std::sin(phi), cos_theta};
+}
+
+// The albedo for light from omega_i split into the diffuse lobe and the rest: with the diffuse lobe linear in the
+// base colour C, A = C a + b.
+struct AlbedoParts {
+  Rgb diffuse = Rgb::Zero(), rest = Rgb::Zero();
+};
+AlbedoParts albedo_parts(const PrincipledParameters& p, const Vec3& omega_i, int polar) {
+  const QuadratureRule mu = gauss_legendre(polar, 0.0, 1.0), phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi);
+  AlbedoParts parts;
+  for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
+    for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
+      // By reciprocity, f cos(theta_o) for light from omega_i is the cosine-weighted BRDF with the two swapped.
+      const PrincipledLobes lobes = principled_lobes_cosine_weighted(p, direction(mu.nodes[a], phi.nodes[b]), omega_i);
+      const double w = mu.weights[a] * phi.weights[b];
+      parts.diffuse += w * lobes.diffuse;
+      parts.rest += w * (lobes.sheen + lobes.specular + lobes.clearcoat);
+    }
+  }
+  return parts;
+}
+
+// The fitted parameters: roughness, specular, sheen, clearcoat, clearcoat roughness. Metal and the tints stay 0, so
+// that only the diffuse lobe depends on the base colour.
+PrincipledParameters with_shape(const Eigen::VectorXd& x) {
+  PrincipledParameters p;
+  p.roughness = x(0);
+  p.specular = x(1);
+  p.sheen = x(2);
+  p.sheen_tint = 0.0;
+  p.clearcoat = x(3);
+  p.clearcoat_roughness = x(4);
+  return p;
+}
+
+// The base colour that gives the target albedo at normal incidence, clamped to [0, 1]; whether it needed no clamp.
+bool solve_base_color(PrincipledParameters& p, const Rgb& target) {
+  p.base_color = Rgb::Ones();
+  const AlbedoParts parts = albedo_parts(p, Vec3::UnitZ(), 48);
+  const Rgb exact = (target - parts.rest) / parts.diffuse;
+  p.base_color = exact.max(0.0).min(1.0);
+  return (p.base_color == exact).all();
+}
+
+}  // namespace
+
+std::vector<DirectionPair> principled_fit_pairs(int polar) {
+  const QuadratureRule mu = gauss_legendre(polar, 0.0, 1.0), phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi);
+  std::vector<DirectionPair> pairs;
+  for (int degrees = 0; degrees <= 80; degrees += 10) {
+    const Vec3 light = direction(std::cos(degrees_to_radians(degrees)), 0.0);
+    for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
+      for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
+        pairs.push_back({light, direction(mu.nodes[a], phi.nodes[b]), mu.weights[a] * phi.weights[b]});
+      }
+    }
+  }
+  return pairs;
+}
+
+Rgb principled_albedo(const PrincipledParameters& p, const Vec3& omega_i, int polar) {
+  const AlbedoParts parts = albedo_parts(p, omega_i, polar);
+  return parts.diffuse + parts.rest;
+}
+
+PrincipledFit fit_principled(const PrincipledFitTarget& target) {
+  const std::size_t n = target.pairs.size();
+  if (n == 0 || target.brdf_cosine.size() != n || target.albedo.empty() ||
+      target.albedo.size() != target.albedo_angles.size() || target.albedo_angles.front() != 0.0) {
+    throw std::invalid_argument(
+        "fit_principled: needs one target value per pair and albedos at angles starting from normal incidence");
+  }
+  const auto residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+    PrincipledParameters p = with_shape(x);
+    solve_base_color(p, target.albedo.front());
+    for (std::size_t k = 0; k < n; ++k) {
+      const DirectionPair& pair = target.pairs[k];
+      const Rgb difference = principled_brdf_cosine_weighted(p, pair.omega_i, pair.omega_o) - target.brdf_cosine[k];
+      r.segment<3>(static_cast<Eigen::Index>(3 * k)) = std::sqrt(pair.weight) * difference.matrix();
+    }
+  };
+  const Eigen::VectorXd lo = Eigen::VectorXd::Zero(5), hi = Eigen::VectorXd::Ones(5);
+  const int count = static_cast<int>(3 * n);
+  // Two starts, a glossy and a matte one, as the least squares find the nearest minimum.
+  BoundedFit best = fit_in_box(residuals, count, (Eigen::VectorXd(5) << 0.5, 0.5, 0.0, 0.0, 0.1).finished(), lo, hi);
+  const BoundedFit matte =
+      fit_in_box(residuals, count, (Eigen::VectorXd(5) << 0.9, 0.2, 0.2, 0.0, 0.1).finished(), lo, hi);
+  if (matte.norm() < best.norm()) best = matte;
+
+  PrincipledFit fit;
+  fit.parameters = with_shape(best.parameters);
+  fit.albedo_matched = solve_base_color(fit.parameters, target.albedo.front());
+  Rgb peak = Rgb::Zero(), squared = Rgb::Zero();
+  double weights = 0.0;
+  for (std::size_t k = 0; k < n; ++k) peak = peak.max(target.brdf_cosine[k].abs());
+  for (std::size_t k = 0; k < n; ++k) {
+    const DirectionPair& pair = target.pairs[k];
+    const Rgb difference =
+        (principled_brdf_cosine_weighted(fit.parameters, pair.omega_i, pair.omega_o) - target.brdf_cosine[k]).abs();
+    squared += pair.weight * difference.square();
+    weights += pair.weight;
+    fit.lobe_worst = fit.lobe_worst.max(difference);
+  }
+  fit.lobe_rms = (squared / weights).sqrt() / peak;
+  fit.lobe_worst /= peak;
+  Rgb albedo_squared = Rgb::Zero();
+  for (std::size_t a = 0; a < target.albedo.size(); ++a) {
+    const Rgb relative =
+        (principled_albedo(fit.parameters, direction(std::cos(target.albedo_angles[a]), 0.0)) - target.albedo[a])
+            .abs() /
+        target.albedo[a];
+    albedo_squared += relative.square();
+    fit.albedo_worst = fit.albedo_worst.max(relative);
+  }
+  fit.albedo_rms = (albedo_squared / static_cast<double>(target.albedo.size())).sqrt();
+  return fit;
+}
+
+}  // namespace skinlayer

@@ -1,0 +1,51 @@
+// The Principled BSDF (core/targets/principled_bsdf.h) that best reproduces a reflectance (docs/model.md §22.2): the
+// first half of `skinlayer fit --target principled` (issue 44), on samples the caller takes from its BRDF.
+//
+// The metric: the cosine-weighted BRDF, f cos(theta_i), on a fixed set of direction pairs (principled_fit_pairs):
+// light from 0 to 80 degrees in steps of 10, the view on a Gauss-Legendre grid of the hemisphere, each pair weighted
+// by its quadrature weight, so that the sum of squares is the integral over the view's hemisphere of the squared
+// difference, summed over the light's angles. That is the error in the light a surface sends to each direction,
+// which is what a picture shows. The directional albedo at normal incidence is matched exactly: per channel the base
+// colour enters the albedo linearly, A = a C + b, and is solved for at every step, so the least squares choose the
+// rest (roughness, specular, sheen, clearcoat and its roughness) within the node's ranges.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/targets/principled_bsdf.h"
+
+namespace skinlayer {
+
+struct DirectionPair {
+  Vec3 omega_i, omega_o;  // toward the light and toward the viewer, graphics convention
+  double weight = 0.0;    // the quadrature weight of the view (sr)
+};
+
+// The fixed pairs: light at 0, 10, ..., 80 degrees (azimuth 0), the view on `polar` Gauss-Legendre cosines times
+// 2 x `polar` azimuths.
+std::vector<DirectionPair> principled_fit_pairs(int polar = 12);
+
+struct PrincipledFitTarget {
+  std::vector<DirectionPair> pairs;   // principled_fit_pairs()
+  std::vector<Rgb> brdf_cosine;       // the target's f cos(theta_i) on each pair
+  std::vector<double> albedo_angles;  // light angles (radians) of the directional albedos below; the first is 0
+  std::vector<Rgb> albedo;            // the target's directional albedo at each
+};
+
+struct PrincipledFit {
+  PrincipledParameters parameters;
+  bool albedo_matched = true;  // false where a channel's colour had to be clamped to [0, 1]
+  // The errors, per channel: of the lobe, RMS and worst over the pairs relative to the target's largest value there
+  // (so that near-zero values do not blow up the ratio); of the albedo over albedo_angles, RMS and worst relative.
+  Rgb lobe_rms = Rgb::Zero(), lobe_worst = Rgb::Zero(), albedo_rms = Rgb::Zero(), albedo_worst = Rgb::Zero();
+};
+
+// The Principled BSDF's directional albedo for light from omega_i, int f cos(theta_o) d omega_o (by reciprocity the
+// cosine-weighted BRDF integrated over the light's hemisphere), on `polar` x 2 `polar` Gauss-Legendre nodes.
+Rgb principled_albedo(const PrincipledParameters& parameters, const Vec3& omega_i, int polar = 48);
+
+// Throws std::invalid_argument for a target whose sizes disagree or whose first albedo angle is not 0.
+PrincipledFit fit_principled(const PrincipledFitTarget& target);
+
+}  // namespace skinlayer
