@@ -4,9 +4,8 @@
 // Writes, per annulus, r_inner_U,r_outer_U,reflectance,transmittance (the mean over it), or per radius
 // r_U,reflectance,transmittance (the value there): the scattered light leaving the top and the bottom per unit area
 // and unit incident power, in 1/U^2. U is mm when the layer has its extinction (--mu-t), and mfp, the layer's mean
-// free path, when it has none. An RGB albedo writes _r, _g and _b columns. So far the layer must be open: one layer
-// with no interface at the top (--eta 1) and an index-matched half-space or nothing below; anything else is one line
-// saying so.
+// free path, when it has none. An RGB albedo writes _r, _g and _b columns. What it cannot take yet (the command's
+// help lists it) is one line saying so.
 #pragma once
 
 #include <ostream>
