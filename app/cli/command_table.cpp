@@ -7,6 +7,7 @@
 #include "app/cli/eval_command.h"
 #include "app/cli/export_command.h"
 #include "app/cli/figures_command.h"
+#include "app/cli/fit_command.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/match_command.h"
 #include "app/cli/material_command.h"
@@ -39,6 +40,8 @@ const std::array kCommands{
             [](Arguments arguments, const CommandStreams& s) { return run_presets_command(arguments, s.out); }},
     Command{"figures", figures_usage,
             [](Arguments arguments, const CommandStreams& s) { return run_figures_command(arguments, s.out); }},
+    Command{"fit", fit_usage,
+            [](Arguments arguments, const CommandStreams& s) { return run_fit_command(arguments, s.out); }},
     Command{"export", export_usage,
             [](Arguments arguments, const CommandStreams& s) { return run_export_command(arguments, s.out, s.err); }},
     Command{"validate", validate_usage,

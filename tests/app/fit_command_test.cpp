@@ -1,0 +1,83 @@
+// `skinlayer fit` on the real executable: Principled parameters within their ranges whose albedo at normal incidence
+// is the material's, the errors it reports, the file it writes, and one line for what it cannot take.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "core/fit/principled_fit.h"
+#include "core/material.h"
+#include "core/solver.h"
+#include "tests/app/error_expectations.h"
+#include "tests/app/process_runner.h"
+
+namespace skinlayer::test {
+namespace {
+
+ProcessResult fit(std::vector<std::string> flags) {
+  flags.insert(flags.begin(), "fit");
+  return run_skinlayer(flags);
+}
+
+PrincipledParameters parameters_of(const nlohmann::json& json) {
+  const nlohmann::json& p = json.at("parameters");
+  PrincipledParameters parameters;
+  for (int c = 0; c < 3; ++c) parameters.base_color(c) = p.at("base_color").at(c).get<double>();
+  parameters.specular = p.at("specular");
+  parameters.roughness = p.at("roughness");
+  parameters.sheen = p.at("sheen");
+  parameters.sheen_tint = p.at("sheen_tint");
+  parameters.clearcoat = p.at("clearcoat");
+  parameters.clearcoat_roughness = p.at("clearcoat_roughness");
+  return parameters;
+}
+
+// A grey layer: the fitted Principled BSDF reflects at normal incidence what the material does (surface and
+// subsurface), and its errors are finite fractions.
+TEST(FitCommand, ThePrincipledFitKeepsTheMaterialsAlbedoAtNormalIncidence) {
+  const ProcessResult result = fit({"--target", "principled", "--albedo", "0.9", "--T", "0"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json json = nlohmann::json::parse(result.out);
+  EXPECT_EQ(json.at("target"), "principled");
+  EXPECT_TRUE(json.at("albedo_matched_at_normal_incidence").get<bool>());
+  const PrincipledParameters parameters = parameters_of(json);
+  Material m;
+  m.albedo = 0.9;
+  m.tau = std::numeric_limits<double>::infinity();
+  const double theta[] = {0.0};
+  const double material = directional_albedo(m, theta).front().reflectance();
+  const Rgb fitted = principled_albedo(parameters, Vec3::UnitZ());
+  std::printf("  material %.6f  fitted %.6f  roughness %.3f  lobe rms %.4f\n", material, fitted(0),
+              parameters.roughness, json.at("errors").at("lobe_rms").at(0).get<double>());
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(fitted(c), material, 1e-6);
+  for (const char* error : {"lobe_rms", "lobe_worst", "albedo_rms", "albedo_worst"}) {
+    const double value = json.at("errors").at(error).at(0);
+    EXPECT_GE(value, 0.0) << error;
+    EXPECT_LT(value, 1.0) << error;
+  }
+}
+
+TEST(FitCommand, WritesTheFileItIsGiven) {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "skinlayer_fit_test.json";
+  std::filesystem::remove(path);
+  const ProcessResult result = fit({"--target", "principled", "--preset", "wax", "-o", path.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::ifstream in(path);
+  ASSERT_TRUE(in);
+  const nlohmann::json json = nlohmann::json::parse(in);
+  EXPECT_GT(json.at("parameters").at("base_color").at(0).get<double>(), 0.5);  // wax is nearly white
+  std::filesystem::remove(path);
+}
+
+TEST(FitCommand, WhatItCannotTakeIsOneLine) {
+  EXPECT_TRUE(failed_with_one_line(fit({"--target", "openpbr"}), 2, {"openpbr", "not built yet"}));
+  EXPECT_TRUE(failed_with_one_line(fit({"--target", "disney"}), 2, {"'disney'", "principled"}));
+  EXPECT_TRUE(failed_with_one_line(fit({}), 2, {"--target"}));
+}
+
+}  // namespace
+}  // namespace skinlayer::test
