@@ -33,8 +33,9 @@ std::string fit_usage() {
          "directional albedo at normal incidence is matched exactly, through the base colour. Fitted: base colour,\n"
          "roughness, specular, sheen, clearcoat and clearcoat roughness; metallic and the tints stay 0, and\n"
          "transmission and subsurface scattering are not fitted yet.\n"
-         "Writes JSON: the parameters, whether the albedo could be matched (a base colour clamped to [0, 1] could\n"
-         "not), and the errors per channel (red, green, blue): the lobe's RMS and worst difference relative to its\n"
+         "Writes JSON: the parameters, whether the albedo could be matched and by how much it misses where not (a\n"
+         "dark channel whose specular alone reflects more than it does), and the errors per channel (red, green,\n"
+         "blue): the lobe's RMS and worst difference relative to its\n"
          "largest value, and the directional albedo's RMS and worst relative error at 0, 20, 40, 60 and 80 degrees.\n"
          "\n"
          "  --target T\n"
@@ -120,6 +121,7 @@ int run_fit_command(std::span<const std::string_view> arguments, std::ostream& o
                                    {"transmission", p.transmission},
                                    {"subsurface", p.subsurface}}},
                                  {"albedo_matched_at_normal_incidence", fit.albedo_matched},
+                                 {"albedo_miss_at_normal_incidence", channels(fit.albedo_miss)},
                                  {"errors",
                                   {{"lobe_rms", channels(fit.lobe_rms)},
                                    {"lobe_worst", channels(fit.lobe_worst)},

@@ -50,14 +50,19 @@ PrincipledParameters with_shape(const Eigen::VectorXd& x) {
   return p;
 }
 
-// The base colour that gives the target albedo at normal incidence, clamped to [0, 1]; whether it needed no clamp.
-bool solve_base_color(PrincipledParameters& p, const Rgb& target) {
+// The base colour that gives the target albedo at normal incidence, clamped to [0, 1]; returns what the albedo then
+// misses (zero where no clamp was needed): the other lobes alone reflect too much, or the brightest colour too little.
+Rgb solve_base_color(PrincipledParameters& p, const Rgb& target) {
   p.base_color = Rgb::Ones();
   const AlbedoParts parts = albedo_parts(p, Vec3::UnitZ(), 48);
   const Rgb exact = (target - parts.rest) / parts.diffuse;
   p.base_color = exact.max(0.0).min(1.0);
-  return (p.base_color == exact).all();
+  return parts.diffuse * p.base_color + parts.rest - target;
 }
+
+// The weight of the albedo's miss among the residuals: large enough that the fit leaves a region where the colour
+// cannot match it (against lobe residuals of about sqrt(weight) f cos, ~0.1 each).
+constexpr double kAlbedoMissWeight = 30.0;
 
 }  // namespace
 
@@ -89,7 +94,7 @@ PrincipledFit fit_principled(const PrincipledFitTarget& target) {
   }
   const auto residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
     PrincipledParameters p = with_shape(x);
-    solve_base_color(p, target.albedo.front());
+    r.tail<3>() = kAlbedoMissWeight * solve_base_color(p, target.albedo.front()).matrix();
     for (std::size_t k = 0; k < n; ++k) {
       const DirectionPair& pair = target.pairs[k];
       const Rgb difference = principled_brdf_cosine_weighted(p, pair.omega_i, pair.omega_o) - target.brdf_cosine[k];
@@ -97,7 +102,7 @@ PrincipledFit fit_principled(const PrincipledFitTarget& target) {
     }
   };
   const Eigen::VectorXd lo = Eigen::VectorXd::Zero(5), hi = Eigen::VectorXd::Ones(5);
-  const int count = static_cast<int>(3 * n);
+  const int count = static_cast<int>(3 * n + 3);
   // Two starts, a glossy and a matte one, as the least squares find the nearest minimum.
   BoundedFit best = fit_in_box(residuals, count, (Eigen::VectorXd(5) << 0.5, 0.5, 0.0, 0.0, 0.1).finished(), lo, hi);
   const BoundedFit matte =
@@ -106,7 +111,8 @@ PrincipledFit fit_principled(const PrincipledFitTarget& target) {
 
   PrincipledFit fit;
   fit.parameters = with_shape(best.parameters);
-  fit.albedo_matched = solve_base_color(fit.parameters, target.albedo.front());
+  fit.albedo_miss = solve_base_color(fit.parameters, target.albedo.front());
+  fit.albedo_matched = (fit.albedo_miss.abs() < 1e-12).all();
   Rgb peak = Rgb::Zero(), squared = Rgb::Zero();
   double weights = 0.0;
   for (std::size_t k = 0; k < n; ++k) peak = peak.max(target.brdf_cosine[k].abs());

@@ -7,7 +7,9 @@
 // difference, summed over the light's angles. That is the error in the light a surface sends to each direction,
 // which is what a picture shows. The directional albedo at normal incidence is matched exactly: per channel the base
 // colour enters the albedo linearly, A = a C + b, and is solved for at every step, so the least squares choose the
-// rest (roughness, specular, sheen, clearcoat and its roughness) within the node's ranges.
+// rest (roughness, specular, sheen, clearcoat and its roughness) within the node's ranges. Where the colour would
+// leave [0, 1] (the other lobes alone reflect more than the target), what the albedo then misses joins the
+// residuals, heavily weighted, so that the fit moves back to where it can match.
 #pragma once
 
 #include <Eigen/Core>
@@ -36,6 +38,7 @@ struct PrincipledFitTarget {
 struct PrincipledFit {
   PrincipledParameters parameters;
   bool albedo_matched = true;  // false where a channel's colour had to be clamped to [0, 1]
+  Rgb albedo_miss = Rgb::Zero();  // the fitted albedo at normal incidence less the target's (0 where matched)
   // The errors, per channel: of the lobe, RMS and worst over the pairs relative to the target's largest value there
   // (so that near-zero values do not blow up the ratio); of the albedo over albedo_angles, RMS and worst relative.
   Rgb lobe_rms = Rgb::Zero(), lobe_worst = Rgb::Zero(), albedo_rms = Rgb::Zero(), albedo_worst = Rgb::Zero();

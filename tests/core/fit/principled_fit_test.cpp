@@ -69,6 +69,25 @@ TEST(PrincipledFit, MatchesTheAlbedoAtNormalIncidenceExactly) {
   EXPECT_LT(fit.lobe_rms.maxCoeff(), 0.1);
 }
 
+// A channel darker at normal incidence than the specular alone can be: the colour is clamped at 0, the fit lowers the
+// specular as far as the other channels let it, and it reports the albedo it then misses rather than hiding it.
+TEST(PrincipledFit, SaysWhereTheAlbedoCannotBeMatched) {
+  const PrincipledParameters glossy{.base_color = Rgb(0.6, 0.5, 0.0), .specular = 1.0, .roughness = 0.2};
+  PrincipledFitTarget target =
+      target_of([&](const Vec3& i, const Vec3& o) { return principled_brdf_cosine_weighted(glossy, i, o); },
+                [&](double angle) { return principled_albedo(glossy, light_at(angle)); });
+  target.albedo.front()(2) = 0.01;  // below the specular's own 0.08 and what the others' lobes let it go down to
+  const PrincipledFit fit = fit_principled(target);
+  std::printf("  miss %.2e %.2e %.2e  specular %.3f\n", fit.albedo_miss(0), fit.albedo_miss(1), fit.albedo_miss(2),
+              fit.parameters.specular);
+  EXPECT_FALSE(fit.albedo_matched);
+  EXPECT_EQ(fit.parameters.base_color(2), 0.0);
+  EXPECT_GT(fit.albedo_miss(2), 0.0);
+  EXPECT_NEAR(fit.albedo_miss(0), 0.0, 1e-12);
+  const Rgb at_normal = principled_albedo(fit.parameters, Vec3::UnitZ());
+  EXPECT_NEAR(at_normal(2) - 0.01, fit.albedo_miss(2), 1e-12);
+}
+
 TEST(PrincipledFit, RefusesAMalformedTarget) {
   PrincipledFitTarget target;
   target.pairs = principled_fit_pairs(4);
