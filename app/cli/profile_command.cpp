@@ -74,14 +74,13 @@ std::string profile_usage() {
          "Each layer needs its mu_t when there are several. Below: an index-matched bottom (--bottom matched), a\n"
          "half-space (--T 0, or a last layer's tau=inf), a rough bottom interface (--bottom air) or a Lambertian\n"
          "base, the last two under a rough top or in diffuse light. Interfaces between layers are taken under a\n"
-         "rough top (or diffuse light) over a half-space. A skin is such a stack: its columns are linear sRGB from 31 "
-         "wavelengths (400-700 nm), or\n"
-         "one wavelength's with --wavelength NM. Under a rough top the reflectance leaves out the interface's own\n"
-         "reflection, which leaves at the entry point. Light that crosses unscattered or is scattered once,\n"
-         "singular at the beam, is exact; the rest comes from the discrete ordinates in the lateral frequency\n"
-         "(docs/model.md section 21): about 0.2 s per channel for one layer, 0.5 s per wavelength for a skin, on\n"
-         "both cores. A finite layer lit through a rough top or diffusely has its transmittance computed on 24\n"
-         "nodes, about 2 s per channel.\n"
+         "rough top (or diffuse light) over a half-space. A skin is such a stack: its columns are linear sRGB\n"
+         "from 31 wavelengths (400-700 nm), or one wavelength's with --wavelength NM. Under a rough top the\n"
+         "reflectance leaves out the interface's own reflection, which leaves at the entry point. Light that\n"
+         "crosses unscattered or is scattered once, singular at the beam, is exact; the rest comes from the\n"
+         "discrete ordinates in the lateral frequency (docs/model.md section 21): about 0.2 s per channel for one\n"
+         "layer, 0.5 s per wavelength for a skin, on both cores. A finite layer lit through a rough top or\n"
+         "diffusely has its transmittance computed on 24 nodes, about 2 s per channel.\n"
          "\n"
          "  --incidence normal|diffuse\n"
          "      a pencil beam along the normal (the default), or light of the same power arriving at the entry\n"
@@ -123,13 +122,13 @@ int run_profile_command(std::span<const std::string_view> arguments, std::ostrea
   ProfileRequest request;
   request.incidence = incidence;
   request.options.parallel_for = parallel_for_threads;
-  if (document.skin) {  // a skin's 31 wavelengths take about 40 s: a line every tenth of them
+  if (document.skin) {  // a skin's 31 wavelengths take about 18 s: a line every tenth of them
     request.progress = [&](int done, int total) {
       if (done * 10 / total != (done - 1) * 10 / total) {
         progress << "profile: " << done << " of " << total << " wavelengths\n" << std::flush;
       }
     };
-  } else {  // an RGB albedo's distinct channels take 1-6 s each (a finite layer's transmittance: 24 nodes)
+  } else {  // an RGB albedo's distinct channels take 0.2-2 s each (a finite layer's transmittance: 24 nodes)
     request.progress = [&](int done, int total) {
       if (total > 1) progress << "profile: " << done << " of " << total << " distinct channels\n" << std::flush;
     };

@@ -38,7 +38,7 @@ struct ProfileRequest {
   LayerProfileOptions options = document_profile_options();  // the resolution and the parallel-for
   bool preview = false;  // a skin on its 7 preview wavelengths (color_channels' preview grid) instead of 31
   // Called after each of the document's solves (a skin's wavelengths), with how many are done of how many; empty:
-  // none. The command prints it: a skin's profile takes about 40 s.
+  // none. The command prints it: a skin's profile takes about 18 s.
   std::function<void(int done, int total)> progress = {};
 };
 
