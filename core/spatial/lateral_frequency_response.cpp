@@ -225,6 +225,17 @@ LateralFrequencyResponse stack_response(std::span<const LateralSlab> slabs, doub
 
 }  // namespace
 
+StackDepths stack_depths(std::span<const LateralSlab> slabs) {
+  StackDepths depths;
+  for (const LateralSlab& slab : slabs) {
+    depths.optical.push_back(depths.tau);
+    depths.geometric.push_back(depths.height);
+    depths.tau += slab.tau;
+    depths.height += slab.tau / slab.relative_extinction;
+  }
+  return depths;
+}
+
 LateralFrequencyResponse lateral_stack_response(std::span<const LateralSlab> slabs, const LateralTopInterface* top,
                                                 double k, const LateralFrequencyResolution& resolution,
                                                 const LateralBottomFace* bottom,

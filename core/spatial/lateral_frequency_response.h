@@ -17,6 +17,7 @@
 
 #include <optional>
 #include <span>
+#include <vector>
 
 #include "core/spatial/lateral_internal_face.h"
 
@@ -44,6 +45,14 @@ struct LateralSlab {
   double g = 0.0;                    // Henyey-Greenstein asymmetry
   double relative_extinction = 1.0;  // mu_t / the first slab's mu_t
 };
+
+// A stack's depths, in the first slab's mean free paths: the optical depth T_l and the geometric depth G_l above each
+// slab, and the totals tau and H (infinite when the last slab is).
+struct StackDepths {
+  std::vector<double> optical, geometric;
+  double tau = 0.0, height = 0.0;
+};
+StackDepths stack_depths(std::span<const LateralSlab> slabs);
 
 // The stack's response at k (1 / the first slab's mean free path) under an open top (top null: a collimated beam
 // scattered in each slab with its own albedo), a rough one, diffuse light, or a smooth top (lateral_top_interface.h,

@@ -35,22 +35,6 @@ void check(std::span<const LateralSlab> slabs, const LateralTopInterface& top, i
   }
 }
 
-// The slabs' depths: optical depth T_l above slab l and geometric depth G_l (first slab's mean free paths).
-struct SlabDepths {
-  std::vector<double> optical, geometric;
-};
-SlabDepths slab_depths(std::span<const LateralSlab> slabs) {
-  SlabDepths depths;
-  double optical = 0.0, geometric = 0.0;
-  for (const LateralSlab& s : slabs) {
-    depths.optical.push_back(optical);
-    depths.geometric.push_back(geometric);
-    optical += s.tau;
-    geometric += s.tau / s.relative_extinction;
-  }
-  return depths;
-}
-
 // sum over node pairs (i up, j down) and slabs l of
 //   2 pi a_i T_i a_j mu_j t_j Omega_l e_l e^{-T_l a / mu_j} int_0^{2 pi} p_l(d.o) along(rate, s_l, s_l + ds_l, rho)
 // with rate = e_l a: along gives the path integral int e^{-rate (s - s_l)} [...] ds over the slab.
@@ -59,7 +43,7 @@ double over_node_pairs(std::span<const LateralSlab> slabs, const LateralTopInter
                        const Along& along) {
   check(slabs, top, ordinates);
   const QuadratureRule q = double_gauss_half_range(ordinates);
-  const SlabDepths depths = slab_depths(slabs);
+  const StackDepths depths = stack_depths(slabs);
   // Panels in dphi on [0, pi] (the integrand is even), closer towards pi, where rho is least.
   const QuadratureRule azimuth = gauss_legendre_panels(
       std::array{std::pair{0.0, 0.5 * kPi}, std::pair{0.5 * kPi, 0.85 * kPi}, std::pair{0.85 * kPi, kPi}}, 24);
@@ -135,9 +119,8 @@ RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const
   }
   const auto leaving_bottom = [&](int node) { return bottom_exit.size() == 0 ? 1.0 : bottom_exit(node); };
   const QuadratureRule q = double_gauss_half_range(N);
-  const SlabDepths depths = slab_depths(slabs);
-  const double total_optical = depths.optical.back() + slabs.back().tau;
-  const double total_geometric = depths.geometric.back() + slabs.back().tau / slabs.back().relative_extinction;
+  const StackDepths depths = stack_depths(slabs);
+  const double total_optical = depths.tau, total_geometric = depths.height;
   const bool transmits = std::isfinite(total_optical);
   const Eigen::EigenSolver<Eigen::MatrixXd> eigen(lateral_mode_coupling(M));
   if (eigen.info() != Eigen::Success) throw std::runtime_error("rough-top single scattering: eigen-solve failed");

@@ -15,13 +15,9 @@
 namespace skinlayer {
 namespace {
 
-// The stack's depths: optical T_l and geometric G_l above each slab, and the totals tau and H.
-struct StackDepths {
-  std::vector<double> optical, geometric;
-  double tau = 0.0, height = 0.0;
-};
-StackDepths stack_depths(std::span<const LateralSlab> slabs) {
-  StackDepths d;
+// The depths of a stack whose slabs must all be finite (stack_depths).
+StackDepths finite_stack_depths(std::span<const LateralSlab> slabs) {
+  if (slabs.empty()) throw std::invalid_argument("transmitted light: needs at least one slab");
   for (const LateralSlab& s : slabs) {
     if (!(s.tau >= 0.0 && std::isfinite(s.tau)) || !(s.albedo >= 0.0 && s.albedo <= 1.0) || !(std::abs(s.g) <= 0.95) ||
         !(s.relative_extinction > 0.0 && std::isfinite(s.relative_extinction))) {
@@ -29,13 +25,8 @@ StackDepths stack_depths(std::span<const LateralSlab> slabs) {
           "transmitted light: finite tau >= 0, albedo in [0, 1], g in [-0.95, 0.95] and a finite relative extinction "
           "> 0");
     }
-    d.optical.push_back(d.tau);
-    d.geometric.push_back(d.height);
-    d.tau += s.tau;
-    d.height += s.tau / s.relative_extinction;
   }
-  if (slabs.empty()) throw std::invalid_argument("transmitted light: needs at least one slab");
-  return d;
+  return stack_depths(slabs);
 }
 
 double exit_fraction(const ExitFraction& exit, double mu) { return exit ? exit(mu) : 1.0; }
@@ -93,7 +84,7 @@ struct Displacement {
 template <class Along>
 double over_scattering_paths(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
                              const ExitFraction& exit, std::initializer_list<double> radii, const Along& along) {
-  const StackDepths depths = stack_depths(slabs);
+  const StackDepths depths = finite_stack_depths(slabs);
   const double H = depths.height;
   std::vector<std::pair<double, double>> panels;
   std::vector<double> breaks = {0.0, 0.5 * kPi};
@@ -176,7 +167,7 @@ void check_annulus(double r0, double r1) {
 double unscattered_transmitted_power(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
                                      const ExitFraction& exit, double r0, double r1) {
   check_annulus(r0, r1);
-  const StackDepths depths = stack_depths(slabs);
+  const StackDepths depths = finite_stack_depths(slabs);
   if (entering.directions().nodes.empty() || r1 == r0) return 0.0;
   const double theta0 = std::atan2(r0, depths.height), theta1 = std::atan2(r1, depths.height);
   return over_polar_angle(entering, theta0, theta1, [&](double theta) {
@@ -189,7 +180,7 @@ double unscattered_transmitted_power(std::span<const LateralSlab> slabs, const E
 double unscattered_transmitted_density(std::span<const LateralSlab> slabs, const EnteringRadiance& entering,
                                        const ExitFraction& exit, double r) {
   if (!(r > 0.0 && std::isfinite(r))) throw std::invalid_argument("transmitted light: r must be finite and > 0");
-  const StackDepths depths = stack_depths(slabs);
+  const StackDepths depths = finite_stack_depths(slabs);
   if (entering.directions().nodes.empty()) return 0.0;
   const double H = depths.height, mu = H / std::hypot(H, r);
   return entering(mu) * exit_fraction(exit, mu) * std::exp(-depths.tau / mu) * std::pow(mu, 4) / (H * H);

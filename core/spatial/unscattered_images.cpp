@@ -12,10 +12,8 @@ constexpr int kFinerOrdinates = 96;
 UnscatteredImages::UnscatteredImages(const ProfileLayer& layer, std::span<const LateralSlab> slabs,
                                      const LateralTopInterface& entry, const LateralBottomFace& bottom,
                                      const LayerProfileOptions& options) {
-  for (const LateralSlab& slab : slabs) {
-    stack_.tau += slab.tau;
-    stack_.height += slab.tau / slab.relative_extinction;
-  }
+  const StackDepths depths = stack_depths(slabs);
+  stack_ = {depths.tau, depths.height};
   const int M = options.resolution.azimuth_modes;
   coarse_ = Operators{entry.source, entry.exit, bottom.reflection};
   const LateralTopInterface fine_entry = *entry_interface(layer, kFinerOrdinates, M, options.interface_azimuths);
