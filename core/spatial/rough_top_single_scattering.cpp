@@ -15,6 +15,7 @@
 #include "core/medium/henyey_greenstein.h"
 #include "core/series/quadrature.h"
 #include "core/spatial/lateral_slab_modes.h"
+#include "core/spatial/unscattered_path_transform.h"
 
 namespace skinlayer {
 namespace {
@@ -139,14 +140,11 @@ RoughTopLowOrders rough_top_low_orders(std::span<const LateralSlab> slabs, const
   }
 
   RoughTopLowOrders orders;
-  // Unscattered: node j's radiance streamed through the whole stack, mode 0 in and out.
+  // Unscattered: the top's node radiance streamed through the whole stack, one leg with no face on it.
   if (transmits) {
-    for (int j = 0; j < N; ++j) {
-      std::complex<double> streamed = 0.0;
-      for (int b = 0; b < M; ++b) streamed += in(0, b) * std::exp(-total_geometric * lateral(b, j));
-      orders.transmitted_unscattered += 2.0 * kPi * q.weights[j] * q.nodes[j] * top.source(j) * leaving_bottom(j) *
-                                        std::exp(-total_optical / q.nodes[j]) * streamed.real();
-    }
+    const UnscatteredLeg stack{total_optical, total_geometric};
+    const Eigen::VectorXd exit = bottom_exit.size() == 0 ? Eigen::VectorXd::Ones(N) : bottom_exit;
+    orders.transmitted_unscattered = unscattered_path_transform(top.source, {&stack, 1}, {}, exit, k, M);
   }
   Eigen::MatrixXcd depth(M, M), through(M, M);
   for (std::size_t l = 0; l < slabs.size(); ++l) {
