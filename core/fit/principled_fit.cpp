@@ -17,26 +17,6 @@ Vec3 direction(double cos_theta, double phi) {
   return {sine * std::cos(phi), sine * std::sin(phi), cos_theta};
 }
 
-// The albedo for light from omega_i split into the diffuse lobe and the rest: with the diffuse lobe linear in the
-// base colour C, A = C a + b.
-struct AlbedoParts {
-  Rgb diffuse = Rgb::Zero(), rest = Rgb::Zero();
-};
-AlbedoParts albedo_parts(const PrincipledParameters& p, const Vec3& omega_i, int polar) {
-  const QuadratureRule mu = gauss_legendre(polar, 0.0, 1.0), phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi);
-  AlbedoParts parts;
-  for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
-    for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
-      // By reciprocity, f cos(theta_o) for light from omega_i is the cosine-weighted BRDF with the two swapped.
-      const PrincipledLobes lobes = principled_lobes_cosine_weighted(p, direction(mu.nodes[a], phi.nodes[b]), omega_i);
-      const double w = mu.weights[a] * phi.weights[b];
-      parts.diffuse += w * lobes.diffuse;
-      parts.rest += w * (lobes.sheen + lobes.specular + lobes.clearcoat);
-    }
-  }
-  return parts;
-}
-
 // The fitted parameters: roughness, specular, sheen, clearcoat, clearcoat roughness. Metal and the tints stay 0, so
 // that only the diffuse lobe depends on the base colour.
 PrincipledParameters with_shape(const Eigen::VectorXd& x) {
@@ -54,10 +34,11 @@ PrincipledParameters with_shape(const Eigen::VectorXd& x) {
 // misses (zero where no clamp was needed): the other lobes alone reflect too much, or the brightest colour too little.
 Rgb solve_base_color(PrincipledParameters& p, const Rgb& target) {
   p.base_color = Rgb::Ones();
-  const AlbedoParts parts = albedo_parts(p, Vec3::UnitZ(), 48);
-  const Rgb exact = (target - parts.rest) / parts.diffuse;
+  const PrincipledLobes albedos = principled_lobe_albedos(p, Vec3::UnitZ());
+  const Rgb rest = albedos.sheen + albedos.specular + albedos.clearcoat;
+  const Rgb exact = (target - rest) / albedos.diffuse;
   p.base_color = exact.max(0.0).min(1.0);
-  return parts.diffuse * p.base_color + parts.rest - target;
+  return albedos.diffuse * p.base_color + rest - target;
 }
 
 // The weight of the albedo's miss among the residuals: large enough that the fit leaves a region where the colour
@@ -78,11 +59,6 @@ std::vector<DirectionPair> principled_fit_pairs(int polar) {
     }
   }
   return pairs;
-}
-
-Rgb principled_albedo(const PrincipledParameters& p, const Vec3& omega_i, int polar) {
-  const AlbedoParts parts = albedo_parts(p, omega_i, polar);
-  return parts.diffuse + parts.rest;
 }
 
 PrincipledFit fit_principled(const PrincipledFitTarget& target) {

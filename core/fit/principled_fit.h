@@ -44,10 +44,6 @@ struct PrincipledFit {
   Rgb lobe_rms = Rgb::Zero(), lobe_worst = Rgb::Zero(), albedo_rms = Rgb::Zero(), albedo_worst = Rgb::Zero();
 };
 
-// The Principled BSDF's directional albedo for light from omega_i, int f cos(theta_o) d omega_o (by reciprocity the
-// cosine-weighted BRDF integrated over the light's hemisphere), on `polar` x 2 `polar` Gauss-Legendre nodes.
-Rgb principled_albedo(const PrincipledParameters& parameters, const Vec3& omega_i, int polar = 48);
-
 // Throws std::invalid_argument for a target whose sizes disagree or whose first albedo angle is not 0.
 PrincipledFit fit_principled(const PrincipledFitTarget& target);
 

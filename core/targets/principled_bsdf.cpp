@@ -9,6 +9,7 @@
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
 #include "core/material.h"
+#include "core/series/quadrature.h"
 
 namespace skinlayer {
 namespace {
@@ -108,6 +109,28 @@ PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, 
                       gtr1_distribution(cos_h, alpha) / (4.0 * cos_o);
   }
   return lobes;
+}
+
+PrincipledLobes principled_lobe_albedos(const PrincipledParameters& p, const Vec3& omega_i, int polar) {
+  const QuadratureRule mu = gauss_legendre(polar, 0.0, 1.0), phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi);
+  PrincipledLobes albedos;
+  for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
+    const double sine = std::sqrt(std::max(0.0, 1.0 - mu.nodes[a] * mu.nodes[a]));
+    for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
+      const Vec3 omega_o(sine * std::cos(phi.nodes[b]), sine * std::sin(phi.nodes[b]), mu.nodes[a]);
+      const PrincipledLobes lobes = principled_lobes_cosine_weighted(p, omega_o, omega_i);
+      const double w = mu.weights[a] * phi.weights[b];
+      albedos.diffuse += w * lobes.diffuse;
+      albedos.sheen += w * lobes.sheen;
+      albedos.specular += w * lobes.specular;
+      albedos.clearcoat += w * lobes.clearcoat;
+    }
+  }
+  return albedos;
+}
+
+Rgb principled_albedo(const PrincipledParameters& p, const Vec3& omega_i, int polar) {
+  return principled_lobe_albedos(p, omega_i, polar).sum();
 }
 
 Rgb principled_brdf_cosine_weighted(const PrincipledParameters& p, const Vec3& omega_i, const Vec3& omega_o) {

@@ -55,6 +55,12 @@ struct PrincipledLobes {
 PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& parameters, const Vec3& omega_i,
                                                  const Vec3& omega_o);
 
+// The directional albedo of each lobe for light from omega_i, int f cos(theta_o) d omega_o (by reciprocity the
+// cosine-weighted lobe with the two directions swapped, integrated over omega_o), on `polar` Gauss-Legendre cosines
+// times 2 `polar` azimuths; and their sum, the BRDF's.
+PrincipledLobes principled_lobe_albedos(const PrincipledParameters& parameters, const Vec3& omega_i, int polar = 48);
+Rgb principled_albedo(const PrincipledParameters& parameters, const Vec3& omega_i, int polar = 48);
+
 // The whole BRDF, f (1/sr, not cosine-weighted), and f cos(theta_i). Throws ParameterError for a parameter outside
 // [0, 1] (the node's ranges) or for the parts not built yet (transmission, subsurface, anisotropy).
 Rgb principled_brdf(const PrincipledParameters& parameters, const Vec3& omega_i, const Vec3& omega_o);
