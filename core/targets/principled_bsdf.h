@@ -56,8 +56,10 @@ PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& par
                                                  const Vec3& omega_o);
 
 // The directional albedo of each lobe for light from omega_i, int f cos(theta_o) d omega_o (by reciprocity the
-// cosine-weighted lobe with the two directions swapped, integrated over omega_o), on `polar` Gauss-Legendre cosines
-// times 2 `polar` azimuths; and their sum, the BRDF's.
+// cosine-weighted lobe with the two directions swapped, integrated over omega_o); and their sum, the BRDF's. The
+// diffuse and sheen lobes on `polar` Gauss-Legendre cosines times 2 `polar` azimuths of the view; the specular and
+// clearcoat lobes over their half vectors, `polar` nodes following the lobe's width up to the horizon times 2 `polar`
+// azimuths, so that sharp lobes converge as fast as rough ones.
 PrincipledLobes principled_lobe_albedos(const PrincipledParameters& parameters, const Vec3& omega_i, int polar = 48);
 Rgb principled_albedo(const PrincipledParameters& parameters, const Vec3& omega_i, int polar = 48);
 
