@@ -1,6 +1,7 @@
 // docs/model.md §22.2: the Principled BSDF fitted to samples of a BRDF, its albedo at normal incidence matched.
 #include "core/fit/principled_fit.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -49,12 +50,28 @@ constexpr double kAlbedoMissWeight = 30.0;
 
 std::vector<DirectionPair> principled_fit_pairs(int polar) {
   const QuadratureRule mu = gauss_legendre(polar, 0.0, 1.0), phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi);
+  // The cap about the mirror direction: psi = psi_max u^2 from it, on Gauss-Legendre u, so that the nodes crowd
+  // where a sharp lobe peaks; the weight is sin(psi) d psi d phi with d psi = 2 psi_max u du.
+  const double psi_max = degrees_to_radians(kMirrorCapDegrees);
+  const QuadratureRule u = gauss_legendre(polar, 0.0, 1.0);
   std::vector<DirectionPair> pairs;
   for (int degrees = 0; degrees <= 80; degrees += 10) {
     const Vec3 light = direction(std::cos(degrees_to_radians(degrees)), 0.0);
     for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
       for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
         pairs.push_back({light, direction(mu.nodes[a], phi.nodes[b]), mu.weights[a] * phi.weights[b]});
+      }
+    }
+    const Vec3 mirror(-light.x(), 0.0, light.z());
+    const Vec3 across = Vec3::UnitY(), along = across.cross(mirror);  // a frame about the mirror direction
+    for (std::size_t a = 0; a < u.nodes.size(); ++a) {
+      const double psi = psi_max * u.nodes[a] * u.nodes[a];
+      for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
+        const Vec3 view =
+            std::cos(psi) * mirror + std::sin(psi) * (std::cos(phi.nodes[b]) * along + std::sin(phi.nodes[b]) * across);
+        if (view.z() <= 0.0) continue;
+        const double weight = u.weights[a] * 2.0 * psi_max * u.nodes[a] * std::sin(psi) * phi.weights[b];
+        pairs.push_back({light, view, weight});
       }
     }
   }
@@ -77,7 +94,8 @@ PrincipledFit fit_principled(const PrincipledFitTarget& target) {
       r.segment<3>(static_cast<Eigen::Index>(3 * k)) = std::sqrt(pair.weight) * difference.matrix();
     }
   };
-  const Eigen::VectorXd lo = Eigen::VectorXd::Zero(5), hi = Eigen::VectorXd::Ones(5);
+  Eigen::VectorXd lo = Eigen::VectorXd::Zero(5), hi = Eigen::VectorXd::Ones(5);
+  lo(0) = lo(4) = kMinFittedRoughness;
   const int count = static_cast<int>(3 * n + 3);
   // Two starts, a glossy and a matte one, as the least squares find the nearest minimum.
   BoundedFit best = fit_in_box(residuals, count, (Eigen::VectorXd(5) << 0.5, 0.5, 0.0, 0.0, 0.1).finished(), lo, hi);
