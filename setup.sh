@@ -24,6 +24,7 @@ readonly packages=(
   libgtest-dev libbenchmark-dev xvfb xauth fonts-dejavu-core python3-jsonschema
   clang libclang-rt-14-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
+  blender  # Blender 3.4: the exported Principled BSDF rendered in headless Cycles (tests/app/export, label blender)
 )
 readonly build_dir=build
 readonly sanitize_dir=build-sanitize

@@ -5,6 +5,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "app/cli/errors.h"
@@ -20,10 +21,11 @@
 
 namespace skinlayer::cli {
 std::string export_usage() {
-  return "Usage: skinlayer export --format bsdf|merl|rgl [material flags] [--albedo A | r,g,b] [--model M]\n"
-         "                        -o FILE [--nodes N | --rgb --resolution N]\n"
+  return "Usage: skinlayer export --format bsdf|merl|rgl|blender [material flags] [--albedo A | r,g,b] [--model M]\n"
+         "                        -o FILE [--nodes N | --rgb --resolution N | --scene]\n"
          "\n"
-         "Writes the solved material in a tabulated format that other programs read.\n"
+         "Writes the solved material in a tabulated format that other programs read, or as a renderer's own\n"
+         "shader with fitted parameters.\n"
          "  --format bsdf        the tabulated Fourier BSDF (\"SCATFUN\" v1) that layerlab writes and pbrt-v3's\n"
          "                       \"fourier\" material reads: light from above and from below, reflection and\n"
          "                       transmission, grey or RGB (Y, R, B); the material file's JSON rides along, so\n"
@@ -44,10 +46,16 @@ std::string export_usage() {
          "                       of direction pairs up to 80 degrees, and within 5% at all, for every preset\n"
          "  --rgb                rgl: the rgb form instead, for Mitsuba 3's RGB variants (5 MB)\n"
          "  --resolution N       rgl: sample nodes per side of each slice, a whole number in [" +
-         std::to_string(RglOptions::kMinSamples) + ", " + std::to_string(RglOptions::kMaxSamples) +
-         "] (default " + std::to_string(RglOptions{}.samples) +
+         std::to_string(RglOptions::kMinSamples) + ", " + std::to_string(RglOptions::kMaxSamples) + "] (default " +
+         std::to_string(RglOptions{}.samples) +
          "); the\n"
-         "                       file grows as N^2\n" +
+         "                       file grows as N^2\n"
+         "  --format blender     a Python script for Blender 3.4 (blender -b --python FILE.py) that builds the\n"
+         "                       Principled BSDF `skinlayer fit --target principled` finds, distribution GGX,\n"
+         "                       with the material's JSON and the fit's errors as data and as custom properties\n"
+         "                       of the Blender material (docs/examples/blender)\n"
+         "  --scene              blender: also replace the scene by a preview: a unit sphere, an orthographic\n"
+         "                       camera on +z, a sun from the upper left, Cycles on the CPU\n" +
          rgb_albedo_usage() +
          "  --model M            subsurface model: stam (default), lambert or hk\n"
          "  -o, --output FILE    the file to write (required; written whole or not at all)\n"
@@ -61,7 +69,7 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   std::vector<std::string_view> known = material_flags_and({kModelFlag, kSkinFlag, kWavelengthFlag, "output"});
   known.insert(known.end(), export_flag_names().begin(), export_flag_names().end());
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer export", export_switch_names());
-  ExportSettings settings = export_settings_from_flags(flags);
+  const ExportRequest request = export_request_from_flags(flags);
   const std::optional<std::string_view> output = flags.value("output");
   if (!output || output->empty()) throw UsageError("export needs -o FILE (the file to write)");
   if (const std::optional<std::string> missing = missing_output_folder(std::string(*output))) {
@@ -71,11 +79,27 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   if (const std::optional<double> wavelength = wavelength_from_flags(flags)) {
     document = document_at_wavelength(document, *wavelength);
   }
+  const auto start = std::chrono::steady_clock::now();
+  const auto wrote = [&](std::string_view label, std::size_t bytes) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out << "wrote " << *output << " (" << label << ", " << bytes << " bytes, " << std::round(seconds * 10.0) / 10.0
+        << " s)\n";
+  };
+  if (const auto* fitted = std::get_if<FittedExportSettings>(&request)) {
+    if (model_from_flags(flags, SubsurfaceModel::Stam) != SubsurfaceModel::Stam) {
+      throw UsageError("--model is for the tabulated formats: --format blender fits the layer model (stam)");
+    }
+    progress << "export: fitting " << fitted_format_label(fitted->format) << "\n" << std::flush;
+    const std::string text = fitted_export_text(document, *fitted, parallel_for_threads);
+    write_file_atomically(std::string(*output), text);
+    wrote(fitted_format_label(fitted->format), text.size());
+    return kExitSuccess;
+  }
+  ExportSettings settings = std::get<ExportSettings>(request);
   ColorMaterial material = color_material(document);
   material.model = model_from_flags(flags, document.model);
   settings.description = rgl_description(document);
 
-  const auto start = std::chrono::steady_clock::now();
   SolveOptions options;
   options.parallel_for = parallel_for_threads;
   if (settings.format == TabulatedFormat::RglSpectral && material.skin) {
@@ -92,9 +116,7 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   };
   const std::string bytes = export_bytes(material, settings, options, report);
   write_file_atomically(std::string(*output), bytes);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  out << "wrote " << *output << " (" << tabulated_format_label(settings.format) << ", " << bytes.size() << " bytes, "
-      << std::round(seconds * 10.0) / 10.0 << " s)\n";
+  wrote(tabulated_format_label(settings.format), bytes.size());
   return kExitSuccess;
 }
 

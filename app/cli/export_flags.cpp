@@ -14,7 +14,7 @@ namespace skinlayer::cli {
 namespace {
 
 constexpr std::array<std::string_view, 3> kExportFlags = {"format", "nodes", "resolution"};
-constexpr std::array<std::string_view, 1> kExportSwitches = {"rgb"};
+constexpr std::array<std::string_view, 2> kExportSwitches = {"rgb", "scene"};
 
 int parse_nodes(std::optional<std::string_view> text) {
   if (!text) return kDefaultScatfunNodes;
@@ -42,12 +42,24 @@ int parse_resolution(std::optional<std::string_view> text) {
 std::span<const std::string_view> export_flag_names() { return kExportFlags; }
 std::span<const std::string_view> export_switch_names() { return kExportSwitches; }
 
-ExportSettings export_settings_from_flags(const ParsedFlags& flags) {
+ExportRequest export_request_from_flags(const ParsedFlags& flags) {
   const std::optional<std::string_view> format = flags.value("format");
-  if (!format) throw UsageError("export needs --format bsdf, merl or rgl (the format to write)");
-  if (*format != "merl" && *format != "bsdf" && *format != "rgl")
-    throw UsageError("format = " + quoted(*format) + " is not one of: bsdf, merl, rgl");
-  const bool bsdf = *format == "bsdf", rgl = *format == "rgl";
+  if (!format) throw UsageError("export needs --format bsdf, merl, rgl or blender (the format to write)");
+  if (*format != "merl" && *format != "bsdf" && *format != "rgl" && *format != "blender")
+    throw UsageError("format = " + quoted(*format) + " is not one of: bsdf, merl, rgl, blender");
+  const bool bsdf = *format == "bsdf", rgl = *format == "rgl", blender = *format == "blender";
+  if (!blender && flags.has("scene")) throw UsageError("--scene is for --format blender");
+  if (blender) {
+    for (const std::string_view tabulated : {"nodes", "resolution", "rgb"}) {
+      if (flags.has(tabulated)) {
+        throw UsageError("--" + std::string(tabulated) + " is for the tabulated formats, not --format blender");
+      }
+    }
+    FittedExportSettings fitted;
+    fitted.format = FittedFormat::BlenderScript;
+    fitted.scene = flags.has("scene");
+    return fitted;
+  }
   if (!rgl && flags.has("rgb")) throw UsageError("--rgb is for --format rgl");
   if (!rgl && flags.has("resolution")) throw UsageError("--resolution is for --format rgl (--nodes for bsdf)");
   ExportSettings settings;

@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "app/cli/errors.h"
@@ -20,6 +21,7 @@
 #include "app/cli/skin_flag.h"
 #include "app/cli/theta_list.h"
 #include "app/cli/unscattered_flag.h"
+#include "app/export/fitted_export.h"
 #include "app/export/material_export.h"
 #include "app/material/atomic_file.h"
 #include "app/material/material_file.h"
@@ -193,9 +195,15 @@ py::array_t<double> to_rgb(const Solution& solution) {
 std::size_t export_file(const Solution& solution, const std::string& path, const std::vector<std::string>& arguments) {
   const cli::ParsedFlags flags =
       parse(arguments, cli::export_flag_names(), "Solution.export", cli::export_switch_names());
-  ExportSettings settings = cli::export_settings_from_flags(flags);
+  const cli::ExportRequest request = cli::export_request_from_flags(flags);
   if (path.empty()) throw ParameterError("path must name the file to write");
   if (const std::optional<std::string> missing = cli::missing_output_folder(path)) throw ParameterError(*missing);
+  if (const auto* fitted = std::get_if<FittedExportSettings>(&request)) {
+    const std::string text = fitted_export_text(solution.document, *fitted, parallel_for_threads);
+    write_file_atomically(path, text);
+    return text.size();
+  }
+  ExportSettings settings = std::get<ExportSettings>(request);
   settings.description = rgl_description(solution.document);
   ColorMaterial material = color_material(solution.document);
   material.model = solution.solved.model;

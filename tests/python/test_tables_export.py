@@ -33,6 +33,7 @@ def test_an_rgb_solution_has_a_table_per_distinct_channel_and_a_skin_one_per_wav
 @pytest.mark.parametrize("format, options, cli_options", [
     ("rgl", {"rgb": True, "resolution": 16}, ["--rgb", "--resolution", "16"]),
     ("bsdf", {"nodes": 16}, ["--nodes", "16"]),
+    ("blender", {"scene": True}, ["--scene"]),
 ])
 def test_export_writes_the_same_bytes_as_the_command_line(tmp_path, format, options, cli_options):
     material = skinlayer.Material(sigma=0.3, T=0.5, albedo=(0.9, 0.7, 0.5))

@@ -359,9 +359,10 @@ class Solution:
         """A skin's wavelengths, one per solve (empty for other materials)."""
         return list(self._native.wavelengths_nm)
 
-    def export(self, path, format="rgl", *, rgb=False, nodes=None, resolution=None):
-        """Writes the material in a tabulated format, as `skinlayer export` does, and returns the file's size in
-        bytes. The file is written whole or not at all; the material's JSON rides along.
+    def export(self, path, format="rgl", *, rgb=False, nodes=None, resolution=None, scene=False):
+        """Writes the material in a tabulated format, or as a renderer's shader with fitted parameters, as
+        `skinlayer export` does, and returns the file's size in bytes. The file is written whole or not at all;
+        the material's JSON rides along.
 
         format      "rgl": the RGL tensor file of pbrt-v4's and Mitsuba 3's "measured" material (reflection only),
                     spectral, or with rgb=True the rgb form for Mitsuba 3's RGB variants; resolution sets its sample
@@ -369,6 +370,9 @@ class Solution:
                     "bsdf": the SCATFUN Fourier BSDF of pbrt-v3 (reflection and transmission); nodes sets its
                     polar nodes per hemisphere (default 64)
                     "merl": the MERL .binary table (reflection only)
+                    "blender": a Python script for Blender 3.4 that builds the fitted Principled BSDF (the
+                    material's layer model, as `skinlayer fit --target principled` finds it); with scene=True it
+                    also builds a preview scene
         ValueError names a bad option.
         """
         arguments = ["--format", str(format)]
@@ -378,4 +382,6 @@ class Solution:
             arguments += ["--nodes", str(nodes)]
         if resolution is not None:
             arguments += ["--resolution", str(resolution)]
+        if scene:
+            arguments.append("--scene")
         return self._native.export(str(path), arguments)

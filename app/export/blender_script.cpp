@@ -1,0 +1,150 @@
+#include "app/export/blender_script.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/export/principled_fit_json.h"
+#include "app/material/material_json.h"
+
+namespace skinlayer {
+namespace {
+
+// A number as Python reads it back to the last bit.
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+std::string percent_triple(const Rgb& values) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f%% %.1f%% %.1f%%", 100.0 * values(0), 100.0 * values(1), 100.0 * values(2));
+  return text;
+}
+
+// JSON in a Python raw string. JSON cannot hold three quotes in a row outside a string, and inside one each quote is
+// escaped as \", which a raw string keeps for json.loads; ensure_ascii keeps the file ASCII.
+std::string python_json(const nlohmann::ordered_json& json) {
+  return "json.loads(r\"\"\"\n" + json.dump(2, ' ', true) + "\n\"\"\")";
+}
+
+// The node's inputs by the names Blender 3.4 gives them (node_shader_bsdf_principled.cc).
+std::string principled_inputs(const PrincipledParameters& p) {
+  std::ostringstream out;
+  out << "PRINCIPLED_INPUTS = {\n"
+      << "    \"Base Color\": (" << number(p.base_color(0)) << ", " << number(p.base_color(1)) << ", "
+      << number(p.base_color(2)) << ", 1.0),\n"
+      << "    \"Subsurface\": " << number(p.subsurface) << ",\n"
+      << "    \"Metallic\": " << number(p.metallic) << ",\n"
+      << "    \"Specular\": " << number(p.specular) << ",\n"
+      << "    \"Specular Tint\": " << number(p.specular_tint) << ",\n"
+      << "    \"Roughness\": " << number(p.roughness) << ",\n"
+      << "    \"Anisotropic\": " << number(p.anisotropic) << ",\n"
+      << "    \"Sheen\": " << number(p.sheen) << ",\n"
+      << "    \"Sheen Tint\": " << number(p.sheen_tint) << ",\n"
+      << "    \"Clearcoat\": " << number(p.clearcoat) << ",\n"
+      << "    \"Clearcoat Roughness\": " << number(p.clearcoat_roughness) << ",\n"
+      << "    \"Transmission\": " << number(p.transmission) << ",\n"
+      << "}\n";
+  return out.str();
+}
+
+constexpr const char* kBuildMaterial = R"(
+
+def build_material(name=MATERIAL_NAME):
+    """The fitted Principled BSDF as a new material; returns it."""
+    material = bpy.data.materials.new(name)
+    material.use_nodes = True
+    nodes = material.node_tree.nodes
+    nodes.clear()
+    output = nodes.new("ShaderNodeOutputMaterial")
+    output.location = (300, 0)
+    principled = nodes.new("ShaderNodeBsdfPrincipled")
+    principled.distribution = "GGX"  # single scattering, as fitted
+    for socket, value in PRINCIPLED_INPUTS.items():
+        principled.inputs[socket].default_value = value
+    material.node_tree.links.new(principled.outputs["BSDF"], output.inputs["Surface"])
+    material["skinlayer_material"] = json.dumps(SKINLAYER_MATERIAL)
+    material["skinlayer_fit"] = json.dumps(SKINLAYER_FIT)
+    return material
+
+
+def build_preview_scene(material):
+    """Replaces the scene's objects with a unit sphere wearing `material`, an orthographic camera on +z looking
+    down -z, a sun from the upper left and a dim grey world; Cycles on the CPU, linear Standard view."""
+    scene = bpy.context.scene
+    for obj in list(scene.objects):
+        bpy.data.objects.remove(obj, do_unlink=True)
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=256, ring_count=128, radius=1.0, location=(0.0, 0.0, 0.0))
+    sphere = bpy.context.object
+    sphere.name = "skinlayer sphere"
+    for polygon in sphere.data.polygons:
+        polygon.use_smooth = True
+    sphere.data.materials.append(material)
+
+    camera = bpy.data.objects.new("skinlayer camera", bpy.data.cameras.new("skinlayer camera"))
+    camera.data.type = "ORTHO"
+    camera.data.ortho_scale = 2.2
+    camera.location = (0.0, 0.0, 10.0)
+    scene.collection.objects.link(camera)
+    scene.camera = camera
+
+    sun = bpy.data.objects.new("skinlayer sun", bpy.data.lights.new("skinlayer sun", type="SUN"))
+    sun.data.energy = 3.0  # irradiance on a face turned to it, W/m^2
+    sun.data.angle = 0.0
+    sun.rotation_euler = (math.radians(-35.0), math.radians(-35.0), 0.0)  # from the upper left, toward the viewer
+    scene.collection.objects.link(sun)
+
+    world = scene.world or bpy.data.worlds.new("skinlayer world")
+    scene.world = world
+    world.use_nodes = True
+    world.node_tree.nodes["Background"].inputs["Color"].default_value = (0.05, 0.05, 0.05, 1.0)
+    world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
+
+    scene.render.engine = "CYCLES"
+    scene.cycles.device = "CPU"
+    scene.cycles.samples = 128
+    scene.render.resolution_x = scene.render.resolution_y = 512
+    scene.render.resolution_percentage = 100
+    scene.view_settings.view_transform = "Standard"
+    scene.view_settings.look = "None"
+    return sphere
+
+
+material = build_material()
+if BUILD_SCENE:
+    build_preview_scene(material)
+)";
+
+}  // namespace
+
+std::string blender_script(const MaterialDocument& document, const PrincipledFit& fit,
+                           const BlenderScriptSettings& settings) {
+  const std::string name = document.name.empty() ? "skinlayer material" : "skinlayer " + document.name;
+  std::ostringstream out;
+  out << "# Blender 3.4's Principled BSDF fitted by skinlayer to the material "
+      << nlohmann::json(name).dump(-1, ' ', true) << ".\n"
+      << "# Run: blender -b --python THIS.py  (add -o //preview_#### -f 1 to render, with --scene's preview)\n"
+      << "#\n"
+      << "# The fit's error, red green blue, relative to the material's own values (skinlayer fit --help):\n"
+      << "#   cosine-weighted BRDF, light 0-80 degrees   RMS " << percent_triple(fit.lobe_rms) << "   worst "
+      << percent_triple(fit.lobe_worst) << "\n"
+      << "#   directional albedo, 0-80 degrees           RMS " << percent_triple(fit.albedo_rms) << "   worst "
+      << percent_triple(fit.albedo_worst) << "\n"
+      << "# The albedo at normal incidence is the material's"
+      << (fit.albedo_matched ? "" : ", but where it could not be") << ".\n"
+      << "# Lost in the fit: the subsurface lobe's shape beyond Burley's diffuse, sheen and retro-reflection; a rough\n"
+      << "# interface's Beckmann tail (GGX's is longer); light through the layer (the material is opaque here).\n"
+      << "import json\n"
+      << "import math\n\n"
+      << "import bpy\n\n"
+      << "MATERIAL_NAME = " << nlohmann::json(name).dump(-1, ' ', true) << "\n"
+      << "BUILD_SCENE = " << (settings.scene ? "True" : "False") << "\n"
+      << "SKINLAYER_MATERIAL = " << python_json(material_json(document)) << "\n"
+      << "SKINLAYER_FIT = " << python_json(principled_fit_json(fit)) << "\n"
+      << principled_inputs(fit.parameters) << kBuildMaterial;
+  return out.str();
+}
+
+}  // namespace skinlayer

@@ -1,0 +1,25 @@
+#include "app/export/fitted_export.h"
+
+#include "app/export/blender_script.h"
+#include "app/solution/shader_fit.h"
+
+namespace skinlayer {
+
+std::string_view fitted_format_label(FittedFormat format) {
+  switch (format) {
+    case FittedFormat::BlenderScript:
+      return "Blender script, Principled BSDF";
+  }
+  return "";
+}
+
+std::string fitted_export_text(const MaterialDocument& document, const FittedExportSettings& settings,
+                               const ParallelFor& parallel_for) {
+  MaterialDocument fitted = document;
+  fitted.model = SubsurfaceModel::Stam;  // the fit is of the layer model, as the file's material then says
+  BlenderScriptSettings script;
+  script.scene = settings.scene;
+  return blender_script(fitted, fit_principled(fitted, parallel_for), script);
+}
+
+}  // namespace skinlayer

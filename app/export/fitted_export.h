@@ -1,0 +1,29 @@
+// A material exported as a renderer's own shader, with fitted parameters instead of tables: the one path that
+// `skinlayer export --format blender|mtlx` and the previewer's buttons take.
+//   Blender (.py): a script that builds Blender 3.4's Principled BSDF (app/export/blender_script.h).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "app/material/material_document.h"
+#include "core/parallel_for.h"
+
+namespace skinlayer {
+
+enum class FittedFormat { BlenderScript };
+
+struct FittedExportSettings {
+  FittedFormat format = FittedFormat::BlenderScript;
+  bool scene = false;  // Blender: also build a preview scene
+};
+
+// "Blender script (Principled BSDF)".
+std::string_view fitted_format_label(FittedFormat format);
+
+// Fits the document's layer model (Stam's, whatever model it names; app/solution/shader_fit.h) and writes the
+// file's text, whose material names that model. Throws ParameterError for a material out of range.
+std::string fitted_export_text(const MaterialDocument& document, const FittedExportSettings& settings,
+                               const ParallelFor& parallel_for);
+
+}  // namespace skinlayer
