@@ -10,6 +10,7 @@
 #include "core/interfaces/fresnel.h"
 #include "core/material.h"
 #include "core/series/quadrature.h"
+#include "core/targets/ggx_lobe.h"
 
 namespace skinlayer {
 namespace {
@@ -35,18 +36,6 @@ void check(const PrincipledParameters& p) {
 }
 
 double schlick_weight(double cosine) { return std::pow(std::clamp(1.0 - cosine, 0.0, 1.0), 5); }
-
-// Smith's G1 for GGX of roughness alpha along a direction of cosine mu (Walter et al. 2007, eq. 34).
-double ggx_masking(double mu, double alpha) {
-  const double tan2 = (1.0 - mu * mu) / (mu * mu);
-  return 2.0 / (1.0 + std::sqrt(1.0 + alpha * alpha * tan2));
-}
-
-// GGX (Trowbridge-Reitz) normal distribution, 1/sr: D = alpha^2 / (pi cos^4 (alpha^2 + tan^2)^2).
-double ggx_distribution(double cos_m, double alpha) {
-  const double cos2 = cos_m * cos_m, tan2 = (1.0 - cos2) / cos2, a2 = alpha * alpha;
-  return a2 / (kPi * cos2 * cos2 * (a2 + tan2) * (a2 + tan2));
-}
 
 // Berry's distribution (GTR1, Burley 2012 appendix B): (a^2 - 1) / (pi ln(a^2) (1 + (a^2 - 1) cos^2)); 1/pi at a >= 1.
 double gtr1_distribution(double cos_m, double alpha) {
@@ -125,40 +114,15 @@ PrincipledLobes principled_lobe_albedos(const PrincipledParameters& p, const Vec
       albedos.sheen += w * lobes.sheen;
     }
   }
-  // The microfacet lobes: over the half vector h, where their distributions put them, however sharp. With
-  // omega_o = 2 (omega_i.h) h - omega_i, d omega_o = 4 (omega_i.h) d omega_h (Walter et al. 2007, eq. 14). At each
-  // azimuth phi_h the view stays above the horizon while omega_o.z = a sin(2 theta_h) + b cos(2 theta_h) > 0, with
-  // a = sin(theta_i) cos(phi_h - phi_i) and b = cos(theta_i): up to theta_max = (pi/2 + atan2(a, b)) / 2, where the
-  // integrand drops to zero; the polar nodes stop there, so that they meet no kink. Between, theta_h =
-  // atan(s tan(v pi / 2)) on Gauss-Legendre v spreads them as a distribution of width s in tan(theta_h) does: GGX's
-  // falls as a Cauchy's, and s = alpha; GTR1's tail, 1 / tan^2, is heavier, and s = sqrt(alpha) takes it.
-  const double sin_i = std::sqrt(std::max(0.0, 1.0 - omega_i.z() * omega_i.z())),
-               phi_i = std::atan2(omega_i.y(), omega_i.x());
-  const auto over_half_vectors = [&](double width, auto&& lobe_of) {
-    Rgb sum = Rgb::Zero();
-    for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
-      const double theta_max = 0.5 * (0.5 * kPi + std::atan2(sin_i * std::cos(phi.nodes[b] - phi_i), omega_i.z()));
-      const double v_max = 2.0 * kInvPi * std::atan(std::tan(theta_max) / width);
-      const QuadratureRule v = gauss_legendre(polar, 0.0, v_max);
-      for (std::size_t a = 0; a < v.nodes.size(); ++a) {
-        const double t = std::tan(0.5 * kPi * v.nodes[a]), theta = std::atan(width * t);
-        const double dtheta_dv = width * 0.5 * kPi * (1.0 + t * t) / (1.0 + width * width * t * t);
-        const Vec3 h(std::sin(theta) * std::cos(phi.nodes[b]), std::sin(theta) * std::sin(phi.nodes[b]),
-                     std::cos(theta));
-        const double cos_ih = omega_i.dot(h);
-        if (cos_ih <= 0.0) continue;
-        const Vec3 omega_o = 2.0 * cos_ih * h - omega_i;
-        const double w = v.weights[a] * dtheta_dv * std::sin(theta) * phi.weights[b] * 4.0 * cos_ih;
-        sum += w * lobe_of(principled_lobes_cosine_weighted(p, omega_o, omega_i));
-      }
-    }
-    return sum;
-  };
+  // The microfacet lobes over their half vectors (ggx_lobe.h): GTR1's tail, 1 / tan^2, is heavier than GGX's, and
+  // its nodes spread over sqrt(alpha), the clearcoat roughness.
   const double floor = 1e-3;  // the nodes' least width; the lobes themselves are exact at any roughness
-  albedos.specular = over_half_vectors(std::max(floor, p.roughness * p.roughness),
-                                       [](const PrincipledLobes& lobes) { return lobes.specular; });
-  albedos.clearcoat = over_half_vectors(std::max(floor, p.clearcoat_roughness),
-                                        [](const PrincipledLobes& lobes) { return lobes.clearcoat; });
+  albedos.specular = microfacet_lobe_albedo(
+      [&](const Vec3& omega_o) { return principled_lobes_cosine_weighted(p, omega_o, omega_i).specular; }, omega_i,
+      std::max(floor, p.roughness * p.roughness), polar);
+  albedos.clearcoat = microfacet_lobe_albedo(
+      [&](const Vec3& omega_o) { return principled_lobes_cosine_weighted(p, omega_o, omega_i).clearcoat; }, omega_i,
+      std::max(floor, p.clearcoat_roughness), polar);
   return albedos;
 }
 
