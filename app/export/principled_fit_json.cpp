@@ -22,10 +22,10 @@ nlohmann::ordered_json principled_fit_json(const PrincipledFit& fit) {
   parameters["transmission"] = p.transmission;
   parameters["subsurface"] = p.subsurface;
   nlohmann::ordered_json errors;
-  errors["lobe_rms"] = channels(fit.lobe_rms);
-  errors["lobe_worst"] = channels(fit.lobe_worst);
-  errors["albedo_rms"] = channels(fit.albedo_rms);
-  errors["albedo_worst"] = channels(fit.albedo_worst);
+  errors["lobe_rms"] = channels(fit.errors.lobe_rms);
+  errors["lobe_worst"] = channels(fit.errors.lobe_worst);
+  errors["albedo_rms"] = channels(fit.errors.albedo_rms);
+  errors["albedo_worst"] = channels(fit.errors.albedo_worst);
   nlohmann::ordered_json json;
   json["target"] = "principled";
   json["renderer"] = "Blender 3.4 (Cycles), Principled BSDF, distribution GGX";

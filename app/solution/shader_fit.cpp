@@ -10,9 +10,9 @@
 
 namespace skinlayer {
 
-PrincipledFitTarget principled_fit_target(const MaterialDocument& document, const ParallelFor& parallel_for) {
-  PrincipledFitTarget target;
-  target.pairs = principled_fit_pairs();
+BrdfFitTarget principled_fit_target(const MaterialDocument& document, const ParallelFor& parallel_for) {
+  BrdfFitTarget target;
+  target.pairs = fit_pairs();
   std::vector<double> theta_i, theta_o, phi;
   for (const DirectionPair& pair : target.pairs) {
     theta_i.push_back(radians_to_degrees(std::acos(pair.omega_i.z())));

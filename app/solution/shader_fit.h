@@ -9,10 +9,10 @@
 
 namespace skinlayer {
 
-// The document's BRDF (surface and subsurface, Stam's model), cosine-weighted, on principled_fit_pairs(), and its
+// The document's BRDF (surface and subsurface, Stam's model), cosine-weighted, on fit_pairs(), and its
 // directional albedo at 0, 20, 40, 60 and 80 degrees, in linear sRGB (a skin's spectrum through
 // app/material/color_channels.h). Throws ParameterError for a material out of range.
-PrincipledFitTarget principled_fit_target(const MaterialDocument& document, const ParallelFor& parallel_for);
+BrdfFitTarget principled_fit_target(const MaterialDocument& document, const ParallelFor& parallel_for);
 
 // fit_principled(principled_fit_target(document)).
 PrincipledFit fit_principled(const MaterialDocument& document, const ParallelFor& parallel_for);

@@ -1,14 +1,11 @@
 // docs/model.md §22.2: the Principled BSDF fitted to samples of a BRDF, its albedo at normal incidence matched.
 #include "core/fit/principled_fit.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "core/conventions.h"
 #include "core/fit/bounded_least_squares.h"
-#include "core/series/quadrature.h"
 
 namespace skinlayer {
 namespace {
@@ -48,43 +45,9 @@ constexpr double kAlbedoMissWeight = 30.0;
 
 }  // namespace
 
-std::vector<DirectionPair> principled_fit_pairs(int polar) {
-  const QuadratureRule mu = gauss_legendre(polar, 0.0, 1.0), phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi);
-  // The cap about the mirror direction: psi = psi_max u^2 from it, on Gauss-Legendre u, so that the nodes crowd
-  // where a sharp lobe peaks; the weight is sin(psi) d psi d phi with d psi = 2 psi_max u du.
-  const double psi_max = degrees_to_radians(kMirrorCapDegrees);
-  const QuadratureRule u = gauss_legendre(polar, 0.0, 1.0);
-  std::vector<DirectionPair> pairs;
-  for (int degrees = 0; degrees <= 80; degrees += 10) {
-    const Vec3 light = direction(std::cos(degrees_to_radians(degrees)), 0.0);
-    for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
-      for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
-        pairs.push_back({light, direction(mu.nodes[a], phi.nodes[b]), mu.weights[a] * phi.weights[b]});
-      }
-    }
-    const Vec3 mirror(-light.x(), 0.0, light.z());
-    const Vec3 across = Vec3::UnitY(), along = across.cross(mirror);  // a frame about the mirror direction
-    for (std::size_t a = 0; a < u.nodes.size(); ++a) {
-      const double psi = psi_max * u.nodes[a] * u.nodes[a];
-      for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
-        const Vec3 view =
-            std::cos(psi) * mirror + std::sin(psi) * (std::cos(phi.nodes[b]) * along + std::sin(phi.nodes[b]) * across);
-        if (view.z() <= 0.0) continue;
-        const double weight = u.weights[a] * 2.0 * psi_max * u.nodes[a] * std::sin(psi) * phi.weights[b];
-        pairs.push_back({light, view, weight});
-      }
-    }
-  }
-  return pairs;
-}
-
-PrincipledFit fit_principled(const PrincipledFitTarget& target) {
+PrincipledFit fit_principled(const BrdfFitTarget& target) {
+  check_fit_target(target);
   const std::size_t n = target.pairs.size();
-  if (n == 0 || target.brdf_cosine.size() != n || target.albedo.empty() ||
-      target.albedo.size() != target.albedo_angles.size() || target.albedo_angles.front() != 0.0) {
-    throw std::invalid_argument(
-        "fit_principled: needs one target value per pair and albedos at angles starting from normal incidence");
-  }
   const auto residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
     PrincipledParameters p = with_shape(x);
     r.tail<3>() = kAlbedoMissWeight * solve_base_color(p, target.albedo.front()).matrix();
@@ -107,29 +70,12 @@ PrincipledFit fit_principled(const PrincipledFitTarget& target) {
   fit.parameters = with_shape(best.parameters);
   fit.albedo_miss = solve_base_color(fit.parameters, target.albedo.front());
   fit.albedo_matched = (fit.albedo_miss.abs() < 1e-12).all();
-  Rgb peak = Rgb::Zero(), squared = Rgb::Zero();
-  double weights = 0.0;
-  for (std::size_t k = 0; k < n; ++k) peak = peak.max(target.brdf_cosine[k].abs());
-  for (std::size_t k = 0; k < n; ++k) {
-    const DirectionPair& pair = target.pairs[k];
-    const Rgb difference =
-        (principled_brdf_cosine_weighted(fit.parameters, pair.omega_i, pair.omega_o) - target.brdf_cosine[k]).abs();
-    squared += pair.weight * difference.square();
-    weights += pair.weight;
-    fit.lobe_worst = fit.lobe_worst.max(difference);
-  }
-  fit.lobe_rms = (squared / weights).sqrt() / peak;
-  fit.lobe_worst /= peak;
-  Rgb albedo_squared = Rgb::Zero();
-  for (std::size_t a = 0; a < target.albedo.size(); ++a) {
-    const Rgb relative =
-        (principled_albedo(fit.parameters, direction(std::cos(target.albedo_angles[a]), 0.0)) - target.albedo[a])
-            .abs() /
-        target.albedo[a];
-    albedo_squared += relative.square();
-    fit.albedo_worst = fit.albedo_worst.max(relative);
-  }
-  fit.albedo_rms = (albedo_squared / static_cast<double>(target.albedo.size())).sqrt();
+  fit.errors = fit_errors(
+      target,
+      [&](const Vec3& omega_i, const Vec3& omega_o) {
+        return principled_brdf_cosine_weighted(fit.parameters, omega_i, omega_o);
+      },
+      [&](double theta) { return principled_albedo(fit.parameters, direction(std::cos(theta), 0.0)); });
   return fit;
 }
 

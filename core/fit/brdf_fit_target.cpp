@@ -1,0 +1,86 @@
+// docs/model.md §22.2: the pairs a shader fit samples, and the errors it reports.
+#include "core/fit/brdf_fit_target.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/conventions.h"
+#include "core/series/quadrature.h"
+
+namespace skinlayer {
+namespace {
+
+Vec3 direction(double cos_theta, double phi) {
+  const double sine = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+  return {sine * std::cos(phi), sine * std::sin(phi), cos_theta};
+}
+
+}  // namespace
+
+std::vector<DirectionPair> fit_pairs(int polar) {
+  const QuadratureRule mu = gauss_legendre(polar, 0.0, 1.0), phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi);
+  // The cap about the mirror direction: psi = psi_max u^2 from it, on Gauss-Legendre u, so that the nodes crowd
+  // where a sharp lobe peaks; the weight is sin(psi) d psi d phi with d psi = 2 psi_max u du.
+  const double psi_max = degrees_to_radians(kMirrorCapDegrees);
+  const QuadratureRule u = gauss_legendre(polar, 0.0, 1.0);
+  std::vector<DirectionPair> pairs;
+  for (int degrees = 0; degrees <= 80; degrees += 10) {
+    const Vec3 light = direction(std::cos(degrees_to_radians(degrees)), 0.0);
+    for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
+      for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
+        pairs.push_back({light, direction(mu.nodes[a], phi.nodes[b]), mu.weights[a] * phi.weights[b]});
+      }
+    }
+    const Vec3 mirror(-light.x(), 0.0, light.z());
+    const Vec3 across = Vec3::UnitY(), along = across.cross(mirror);  // a frame about the mirror direction
+    for (std::size_t a = 0; a < u.nodes.size(); ++a) {
+      const double psi = psi_max * u.nodes[a] * u.nodes[a];
+      for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
+        const Vec3 view =
+            std::cos(psi) * mirror + std::sin(psi) * (std::cos(phi.nodes[b]) * along + std::sin(phi.nodes[b]) * across);
+        if (view.z() <= 0.0) continue;
+        const double weight = u.weights[a] * 2.0 * psi_max * u.nodes[a] * std::sin(psi) * phi.weights[b];
+        pairs.push_back({light, view, weight});
+      }
+    }
+  }
+  return pairs;
+}
+
+void check_fit_target(const BrdfFitTarget& target) {
+  const std::size_t n = target.pairs.size();
+  if (n == 0 || target.brdf_cosine.size() != n || target.albedo.empty() ||
+      target.albedo.size() != target.albedo_angles.size() || target.albedo_angles.front() != 0.0) {
+    throw std::invalid_argument(
+        "shader fit: needs one target value per pair and albedos at angles starting from normal incidence");
+  }
+}
+
+FitErrors fit_errors(const BrdfFitTarget& target, const std::function<Rgb(const Vec3&, const Vec3&)>& brdf_cosine,
+                     const std::function<Rgb(double theta)>& albedo) {
+  FitErrors errors;
+  Rgb peak = Rgb::Zero(), squared = Rgb::Zero();
+  double weights = 0.0;
+  for (const Rgb& value : target.brdf_cosine) peak = peak.max(value.abs());
+  for (std::size_t k = 0; k < target.pairs.size(); ++k) {
+    const DirectionPair& pair = target.pairs[k];
+    const Rgb difference = (brdf_cosine(pair.omega_i, pair.omega_o) - target.brdf_cosine[k]).abs();
+    squared += pair.weight * difference.square();
+    weights += pair.weight;
+    errors.lobe_worst = errors.lobe_worst.max(difference);
+  }
+  errors.lobe_rms = (squared / weights).sqrt() / peak;
+  errors.lobe_worst /= peak;
+  Rgb albedo_squared = Rgb::Zero();
+  for (std::size_t a = 0; a < target.albedo.size(); ++a) {
+    const Rgb relative = (albedo(target.albedo_angles[a]) - target.albedo[a]).abs() / target.albedo[a];
+    albedo_squared += relative.square();
+    errors.albedo_worst = errors.albedo_worst.max(relative);
+  }
+  errors.albedo_rms = (albedo_squared / static_cast<double>(target.albedo.size())).sqrt();
+  return errors;
+}
+
+}  // namespace skinlayer
