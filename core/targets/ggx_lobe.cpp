@@ -14,6 +14,13 @@ double ggx_masking(double mu, double alpha) {
   return 2.0 / (1.0 + std::sqrt(1.0 + alpha * alpha * tan2));
 }
 
+double ggx_height_correlated_masking(double mu_i, double mu_o, double alpha) {
+  const auto lambda = [alpha](double mu) {
+    return 0.5 * (std::sqrt(1.0 + alpha * alpha * (1.0 - mu * mu) / (mu * mu)) - 1.0);
+  };
+  return 1.0 / (1.0 + lambda(mu_i) + lambda(mu_o));
+}
+
 double ggx_distribution(double cos_m, double alpha) {
   const double cos2 = cos_m * cos_m, tan2 = (1.0 - cos2) / cos2, a2 = alpha * alpha;
   return a2 / (kPi * cos2 * cos2 * (a2 + tan2) * (a2 + tan2));

@@ -18,6 +18,10 @@ double ggx_distribution(double cos_m, double alpha);
 // Smith's G1 along a direction of cosine mu (Walter et al. 2007, eq. 34): 2 / (1 + sqrt(1 + alpha^2 tan^2)).
 double ggx_masking(double mu, double alpha);
 
+// Smith's height-correlated masking-shadowing (Heitz 2014, eq. 99): 1 / (1 + Lambda(mu_i) + Lambda(mu_o)), with
+// Lambda(mu) = (sqrt(1 + alpha^2 tan^2) - 1) / 2.
+double ggx_height_correlated_masking(double mu_i, double mu_o, double alpha);
+
 // The directional albedo of a microfacet lobe for light from omega_i, int lobe(omega_o) d omega_o, where `lobe`
 // gives f cos(theta_o) (1/sr times the cosine). Integrated over the half vector h, with omega_o = 2 (omega_i.h) h -
 // omega_i and d omega_o = 4 (omega_i.h) d omega_h (Walter et al. 2007, eq. 14): at each of 2 `polar` azimuths of h the

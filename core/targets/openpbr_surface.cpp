@@ -1,0 +1,174 @@
+// docs/model.md §22.3: OpenPBR Surface's opaque dielectric lobes, layered by albedo scaling.
+#include "core/targets/openpbr_surface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/conventions.h"
+#include "core/interfaces/fresnel.h"
+#include "core/material.h"
+#include "core/series/quadrature.h"
+#include "core/targets/eon_diffuse.h"
+#include "core/targets/zeltner_fuzz.h"
+
+namespace skinlayer {
+namespace {
+
+double lerp(double a, double b, double t) { return a + (b - a) * t; }
+
+void check(const OpenPbrParameters& p) {
+  const auto in = [](double value, double lo, double hi, const char* name) {
+    if (!(value >= lo && value <= hi)) {
+      throw ParameterError(std::string("openpbr: ") + name + " must be in [" + std::to_string(lo).substr(0, 4) + ", " +
+                           (std::isinf(hi) ? std::string("inf") : std::to_string(hi).substr(0, 4)) + "]");
+    }
+  };
+  const auto unit = [&](double value, const char* name) { in(value, 0.0, 1.0, name); };
+  const auto unit_color = [&](const Rgb& value, const char* name) {
+    for (int c = 0; c < 3; ++c) unit(value(c), name);
+  };
+  const double infinity = std::numeric_limits<double>::infinity();
+  unit(p.base_weight, "base_weight");
+  unit_color(p.base_color, "base_color");
+  unit(p.base_diffuse_roughness, "base_diffuse_roughness");
+  in(p.specular_weight, 0.0, infinity, "specular_weight");
+  unit_color(p.specular_color, "specular_color");
+  unit(p.specular_roughness, "specular_roughness");
+  unit(p.subsurface_weight, "subsurface_weight");
+  unit_color(p.subsurface_color, "subsurface_color");
+  in(p.subsurface_radius, 0.0, infinity, "subsurface_radius");
+  unit_color(p.subsurface_radius_scale, "subsurface_radius_scale");
+  in(p.subsurface_scatter_anisotropy, -1.0, 1.0, "subsurface_scatter_anisotropy");
+  unit(p.fuzz_weight, "fuzz_weight");
+  unit_color(p.fuzz_color, "fuzz_color");
+  unit(p.fuzz_roughness, "fuzz_roughness");
+  unit(p.coat_weight, "coat_weight");
+  unit_color(p.coat_color, "coat_color");
+  unit(p.coat_roughness, "coat_roughness");
+  unit(p.coat_darkening, "coat_darkening");
+  if (!(p.specular_ior > 0.0) || !std::isfinite(p.specular_ior))
+    throw ParameterError("openpbr: specular_ior must be > 0");
+  if (!(p.coat_ior > 0.0) || !std::isfinite(p.coat_ior)) throw ParameterError("openpbr: coat_ior must be > 0");
+  if (p.base_metalness != 0.0 || p.transmission_weight != 0.0) {
+    throw ParameterError("openpbr: base_metalness and transmission_weight are not built yet (give 0)");
+  }
+}
+
+double normal_reflectance(double eta) { return (eta - 1.0) * (eta - 1.0) / ((eta + 1.0) * (eta + 1.0)); }
+
+// eta_s: the base's index over what lies above it, the coat where there is one; inverted where the coat is denser
+// (the specification's guard against total internal reflection in the coat, after Kutz 2021).
+double specular_relative_index(const OpenPbrParameters& p) {
+  const double ratio = p.specular_ior / p.coat_ior;
+  return lerp(p.specular_ior, ratio >= 1.0 ? ratio : 1.0 / ratio, p.coat_weight);
+}
+
+// eta': the index whose normal reflectance is specular_weight times eta_s's.
+double modulated_index(const OpenPbrParameters& p) {
+  const double eta = specular_relative_index(p);
+  const double root = std::sqrt(std::clamp(p.specular_weight * normal_reflectance(eta), 0.0, 0.99999));
+  const double e = eta >= 1.0 ? root : -root;
+  return (1.0 + e) / (1.0 - e);
+}
+
+double specular_alpha(const OpenPbrParameters& p) {
+  const double r = p.specular_roughness, rc = p.coat_roughness;
+  const double roughened = std::pow(std::min(1.0, r * r * r * r + 2.0 * rc * rc * rc * rc), 0.25);
+  const double r_coated = lerp(r, roughened, p.coat_weight);
+  return r_coated * r_coated;
+}
+
+const OpenPbrParameters& checked(const OpenPbrParameters& p) {
+  check(p);
+  return p;
+}
+
+}  // namespace
+
+OpenPbrSurface::OpenPbrSurface(const OpenPbrParameters& parameters)
+    : parameters_(checked(parameters)),
+      specular_(modulated_index(parameters), specular_alpha(parameters)),
+      coat_(parameters.coat_ior, parameters.coat_roughness * parameters.coat_roughness) {
+  specular_f0_ = normal_reflectance(specular_relative_index(parameters));
+  // E_F: the coat's hemispherical Fresnel albedo from outside, 2 int F(mu) mu d mu.
+  const QuadratureRule mu = gauss_legendre(64, 0.0, 1.0);
+  double hemispherical = 0.0;
+  for (std::size_t k = 0; k < mu.nodes.size(); ++k) {
+    hemispherical += 2.0 * mu.weights[k] * mu.nodes[k] * fresnel_dielectric(mu.nodes[k], parameters.coat_ior);
+  }
+  coat_internal_ = 1.0 - (1.0 - hemispherical) / (parameters.coat_ior * parameters.coat_ior);
+}
+
+Rgb OpenPbrSurface::darkening(double mu_o, const Rgb& base_albedo) const {
+  const OpenPbrParameters& p = parameters_;
+  const double amount = p.coat_weight * p.coat_darkening;
+  if (amount == 0.0) return Rgb::Ones();
+  const double base_roughness = lerp(1.0, p.specular_roughness, std::min(1.0, p.specular_weight * specular_f0_));
+  const double K = lerp(fresnel_dielectric(mu_o, p.coat_ior), coat_internal_, base_roughness);
+  const Rgb delta = (1.0 - K) / (1.0 - base_albedo * K);
+  return 1.0 + (delta - 1.0) * amount;
+}
+
+OpenPbrLobes OpenPbrSurface::lobes_cosine_weighted(const Vec3& omega_i, const Vec3& omega_o) const {
+  const OpenPbrParameters& p = parameters_;
+  OpenPbrLobes lobes;
+  const double mu_o = omega_o.z();
+  if (!(omega_i.z() > 0.0 && mu_o > 0.0)) return lobes;
+  double outer = 1.0;
+  if (p.fuzz_weight > 0.0) {
+    outer = 1.0 - p.fuzz_weight * zeltner_fuzz_albedo(mu_o, p.fuzz_roughness);
+    lobes.fuzz = p.fuzz_weight * p.fuzz_color * zeltner_fuzz_cosine_weighted(p.fuzz_roughness, omega_i, omega_o);
+  }
+  Rgb under_coat = Rgb::Ones();
+  if (p.coat_weight > 0.0) {
+    lobes.coat = Rgb::Constant(outer * p.coat_weight * coat_.cosine_weighted(omega_i, omega_o));
+    const Rgb transmitted = 1.0 + (p.coat_color * (1.0 - coat_.albedo(mu_o)) - 1.0) * p.coat_weight;
+    under_coat = transmitted * darkening(mu_o, p.base_weight * p.base_color * (1.0 - p.subsurface_weight) +
+                                                   p.subsurface_color * p.subsurface_weight);  // E_b
+  }
+  const Rgb base = outer * under_coat;
+  lobes.specular = base * p.specular_color * specular_.cosine_weighted(omega_i, omega_o);
+  const double sigma = p.base_diffuse_roughness;
+  Rgb diffuse = eon_diffuse_cosine_weighted(p.base_weight * p.base_color, sigma, omega_i, omega_o);
+  if (p.subsurface_weight > 0.0) {
+    diffuse = diffuse * (1.0 - p.subsurface_weight) +
+              p.subsurface_weight * eon_diffuse_cosine_weighted(p.subsurface_color, sigma, omega_i, omega_o);
+  }
+  lobes.diffuse = base * (1.0 - specular_.albedo(mu_o)) * diffuse;
+  return lobes;
+}
+
+Rgb OpenPbrSurface::brdf_cosine_weighted(const Vec3& omega_i, const Vec3& omega_o) const {
+  return lobes_cosine_weighted(omega_i, omega_o).sum();
+}
+
+Rgb OpenPbrSurface::assembled_albedo(double mu_o, const Rgb& base_albedo, const Rgb& diffuse_albedo) const {
+  const OpenPbrParameters& p = parameters_;
+  double fuzz = 0.0, coat = 0.0;
+  if (p.fuzz_weight > 0.0) fuzz = p.fuzz_weight * zeltner_fuzz_albedo(mu_o, p.fuzz_roughness);
+  Rgb under_coat = Rgb::Ones();
+  if (p.coat_weight > 0.0) {
+    const double coat_albedo = coat_.albedo(mu_o);
+    coat = p.coat_weight * coat_albedo;
+    under_coat = (1.0 + (p.coat_color * (1.0 - coat_albedo) - 1.0) * p.coat_weight) * darkening(mu_o, base_albedo);
+  }
+  const double specular = specular_.albedo(mu_o);
+  const Rgb base = p.specular_color * specular + (1.0 - specular) * diffuse_albedo;
+  return fuzz * p.fuzz_color + (1.0 - fuzz) * (coat + under_coat * base);
+}
+
+Rgb OpenPbrSurface::albedo_with_diffuse_color(double mu_o, const Rgb& diffuse) const {
+  return assembled_albedo(mu_o, diffuse, eon_diffuse_albedo(diffuse, parameters_.base_diffuse_roughness, mu_o));
+}
+
+Rgb OpenPbrSurface::albedo(double mu_o) const {
+  const OpenPbrParameters& p = parameters_;
+  const double S = p.subsurface_weight, sigma = p.base_diffuse_roughness;
+  const Rgb base_color = p.base_weight * p.base_color;
+  return assembled_albedo(mu_o, base_color * (1.0 - S) + p.subsurface_color * S,
+                          eon_diffuse_albedo(base_color, sigma, mu_o) * (1.0 - S) +
+                              eon_diffuse_albedo(p.subsurface_color, sigma, mu_o) * S);
+}
+
+}  // namespace skinlayer

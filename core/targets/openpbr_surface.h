@@ -1,0 +1,97 @@
+// OpenPBR Surface 1.1 (Academy Software Foundation), the parts that shape an opaque dielectric's BRDF (docs/model.md
+// §22.3): the target whose parameters `skinlayer fit --target openpbr` chooses. Written from the specification's
+// "reduction to a mixture of lobes", which layers by albedo scaling at the view direction omega_o (so the BRDF is
+// not reciprocal), with its lobes:
+//   fuzz      Zeltner 2022's LTC sheen (zeltner_fuzz.h), weight F, colour C_f;
+//   coat      a GGX dielectric of index coat_ior (ggx_dielectric_reflection.h), weight C, colour T_c (its
+//             transmittance in and out), roughness r_c;
+//   specular  a GGX dielectric of index eta', tinted by specular_color, roughness r_s' = lerp(r_s, min(1, r_s^4 +
+//             2 r_c^4)^(1/4), C) (the coat roughens it); eta_s = lerp(n_b, max(n_b/n_c, n_c/n_b), C) and
+//             specular_weight xi moves it to eta' = (1 + e) / (1 - e), e = sgn(eta_s - 1) sqrt(xi F0(eta_s));
+//   diffuse   EON (eon_diffuse.h) of albedo base_weight base_color and roughness base_diffuse_roughness, mixed by
+//             subsurface_weight S with the subsurface lobe, which at the BRDF's scale (a flat surface, light
+//             leaving where it entered) is the same EON of albedo subsurface_color: the specification's
+//             "multiple-scattering albedo" (1 - E_spec) subsurface_color at normal incidence.
+// Assembled, with E_x(mu_o) each lobe's albedo at the view:
+//   f = F C_f f_fuzz + (1 - F E_fuzz) [C f_coat + lerp(1, T_c (1 - E_coat), C) lerp(1, Delta, C delta) f_base],
+//   f_base = specular_color f_spec + (1 - E_spec) lerp(f_diffuse, f_subsurface, S),
+// where Delta = (1 - K) / (1 - E_b K) darkens the base under the coat (light reflected back down by the coat's
+// underside): E_b = lerp(base_weight base_color, subsurface_color, S), K = lerp(K_s, K_r, r_b), K_s = F(mu_o, n_c),
+// K_r = 1 - (1 - E_F(n_c)) / n_c^2 with E_F the coat's hemispherical Fresnel albedo (integrated here, where the
+// specification offers a fit), r_b = lerp(1, r_s, min(1, xi F0(eta_s))), delta = coat_darkening.
+// Not here: metal, transmission, thin film, thin walls, anisotropy and emission (metalness and transmission must be
+// 0; the others are not parameters).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "core/interfaces/microfacet.h"
+#include "core/targets/ggx_dielectric_reflection.h"
+
+namespace skinlayer {
+
+using Rgb = Eigen::Array3d;
+
+// The node's inputs that enter the BRDF above, with OpenPBR 1.1's defaults (its MaterialX node definition).
+struct OpenPbrParameters {
+  double base_weight = 1.0;
+  Rgb base_color = Rgb::Constant(0.8);
+  double base_diffuse_roughness = 0.0;
+  double base_metalness = 0.0;  // must be 0 for now
+  double specular_weight = 1.0;
+  Rgb specular_color = Rgb::Ones();
+  double specular_roughness = 0.3;
+  double specular_ior = 1.5;
+  double transmission_weight = 0.0;  // must be 0 for now
+  double subsurface_weight = 0.0;
+  Rgb subsurface_color = Rgb::Constant(0.8);
+  double subsurface_radius = 1.0;                     // scene units; no part of the BRDF
+  Rgb subsurface_radius_scale = Rgb(1.0, 0.5, 0.25);  // no part of the BRDF
+  double subsurface_scatter_anisotropy = 0.0;         // no part of the BRDF
+  double fuzz_weight = 0.0;
+  Rgb fuzz_color = Rgb::Ones();
+  double fuzz_roughness = 0.5;
+  double coat_weight = 0.0;
+  Rgb coat_color = Rgb::Ones();
+  double coat_roughness = 0.0;
+  double coat_ior = 1.6;
+  double coat_darkening = 1.0;
+};
+
+// The lobes, each already weighted as in the sum above; f cos(theta_i) per channel.
+struct OpenPbrLobes {
+  Rgb fuzz = Rgb::Zero(), coat = Rgb::Zero(), specular = Rgb::Zero(), diffuse = Rgb::Zero();
+  Rgb sum() const { return fuzz + coat + specular + diffuse; }
+};
+
+class OpenPbrSurface {
+ public:
+  // Throws ParameterError naming the input that is out of its range (the node definition's: weights, colours and
+  // roughnesses in [0, 1], specular_weight >= 0, indices > 0, anisotropy in [-1, 1]) or not built (metalness,
+  // transmission).
+  explicit OpenPbrSurface(const OpenPbrParameters& parameters);
+
+  const OpenPbrParameters& parameters() const { return parameters_; }
+
+  OpenPbrLobes lobes_cosine_weighted(const Vec3& omega_i, const Vec3& omega_o) const;
+  Rgb brdf_cosine_weighted(const Vec3& omega_i, const Vec3& omega_o) const;
+
+  // The light the surface sends toward omega_o under a white sky, int f cos(theta_i) d omega_i: in closed form from
+  // the lobes' albedos at the view, as albedo scaling makes it.
+  Rgb albedo(double mu_o) const;
+
+  // The same with the diffuse albedos (base and subsurface alike) replaced by `diffuse`: what a fit needs to find
+  // the colour that gives an albedo.
+  Rgb albedo_with_diffuse_color(double mu_o, const Rgb& diffuse) const;
+
+ private:
+  Rgb darkening(double mu_o, const Rgb& base_albedo) const;
+  // The albedo at the view with E_b = base_albedo and the diffuse lobes' albedo (mixed) given.
+  Rgb assembled_albedo(double mu_o, const Rgb& base_albedo, const Rgb& diffuse_albedo) const;
+
+  OpenPbrParameters parameters_;
+  GgxDielectricReflection specular_, coat_;
+  double specular_f0_ = 0.0, coat_internal_ = 0.0;  // F0(eta_s); K_r
+};
+
+}  // namespace skinlayer
