@@ -34,6 +34,10 @@ std::vector<DirectionPair> fit_pairs(int polar = 12);
 // No preset's interface is sharper (Beckmann sigma 0.08 is about roughness 0.28).
 constexpr double kMinFittedRoughness = 0.1;
 
+// The weight of a fit's albedo miss among its residuals: large enough that the fit leaves a region where the colour
+// cannot match the albedo at normal incidence (against lobe residuals of about sqrt(weight) f cos, ~0.1 each).
+constexpr double kAlbedoMissWeight = 30.0;
+
 struct BrdfFitTarget {
   std::vector<DirectionPair> pairs;   // fit_pairs()
   std::vector<Rgb> brdf_cosine;       // the target's f cos(theta_i) on each pair

@@ -39,10 +39,6 @@ Rgb solve_base_color(PrincipledParameters& p, const Rgb& target) {
   return albedos.diffuse * p.base_color + rest - target;
 }
 
-// The weight of the albedo's miss among the residuals: large enough that the fit leaves a region where the colour
-// cannot match it (against lobe residuals of about sqrt(weight) f cos, ~0.1 each).
-constexpr double kAlbedoMissWeight = 30.0;
-
 }  // namespace
 
 PrincipledFit fit_principled(const BrdfFitTarget& target) {

@@ -100,6 +100,14 @@ OpenPbrSurface::OpenPbrSurface(const OpenPbrParameters& parameters)
   coat_internal_ = 1.0 - (1.0 - hemispherical) / (parameters.coat_ior * parameters.coat_ior);
 }
 
+OpenPbrSurface OpenPbrSurface::with_diffuse_colors(const Rgb& base_color, const Rgb& subsurface_color) const {
+  OpenPbrSurface surface = *this;
+  surface.parameters_.base_color = base_color;
+  surface.parameters_.subsurface_color = subsurface_color;
+  check(surface.parameters_);
+  return surface;
+}
+
 Rgb OpenPbrSurface::darkening(double mu_o, const Rgb& base_albedo) const {
   const OpenPbrParameters& p = parameters_;
   const double amount = p.coat_weight * p.coat_darkening;

@@ -73,6 +73,10 @@ class OpenPbrSurface {
 
   const OpenPbrParameters& parameters() const { return parameters_; }
 
+  // The same surface with base_color and subsurface_color replaced (each in [0, 1]): no lobe's table depends on them,
+  // so this costs a copy, not the tables.
+  OpenPbrSurface with_diffuse_colors(const Rgb& base_color, const Rgb& subsurface_color) const;
+
   OpenPbrLobes lobes_cosine_weighted(const Vec3& omega_i, const Vec3& omega_o) const;
   Rgb brdf_cosine_weighted(const Vec3& omega_i, const Vec3& omega_o) const;
 

@@ -1,0 +1,95 @@
+// docs/model.md §22.4: OpenPBR Surface fitted to samples of a BRDF, its albedo at normal incidence matched.
+#include "core/fit/openpbr_fit.h"
+
+#include <cmath>
+
+#include "core/fit/bounded_least_squares.h"
+
+namespace skinlayer {
+namespace {
+
+// The fitted vector: specular roughness and weight, diffuse roughness, fuzz weight and roughness, and with a coat
+// the coat's roughness.
+int fitted_count(const OpenPbrFitSettings& settings) { return settings.coat ? 6 : 5; }
+
+OpenPbrParameters with_shape(const Eigen::VectorXd& x, const OpenPbrFitSettings& settings) {
+  OpenPbrParameters p;
+  p.specular_ior = settings.specular_ior;
+  p.specular_roughness = x(0);
+  p.specular_weight = x(1);
+  p.base_diffuse_roughness = x(2);
+  p.fuzz_weight = x(3);
+  p.fuzz_roughness = x(4);
+  p.coat_weight = settings.coat ? 1.0 : 0.0;
+  p.coat_ior = settings.coat_ior;
+  p.coat_roughness = settings.coat ? x(5) : 0.0;
+  p.subsurface_weight = settings.subsurface_weight;
+  return p;
+}
+
+// The diffuse colour that gives the target albedo at normal incidence, by bisection on each channel, and what the
+// albedo misses where [0, 1] holds no such colour.
+OpenPbrSurface with_solved_color(const OpenPbrSurface& surface, const Rgb& target, Rgb& miss) {
+  Rgb lo = Rgb::Zero(), hi = Rgb::Ones();
+  for (int step = 0; step < 52; ++step) {
+    const Rgb middle = 0.5 * (lo + hi);
+    const Rgb albedo = surface.albedo_with_diffuse_color(1.0, middle);
+    for (int c = 0; c < 3; ++c) (albedo(c) < target(c) ? lo(c) : hi(c)) = middle(c);
+  }
+  Rgb color = 0.5 * (lo + hi);
+  const Rgb darkest = surface.albedo_with_diffuse_color(1.0, Rgb::Zero());
+  const Rgb brightest = surface.albedo_with_diffuse_color(1.0, Rgb::Ones());
+  for (int c = 0; c < 3; ++c) {
+    if (target(c) <= darkest(c)) color(c) = 0.0;
+    if (target(c) >= brightest(c)) color(c) = 1.0;
+  }
+  const Rgb off = surface.albedo_with_diffuse_color(1.0, color) - target;
+  miss = ((color > 0.0) && (color < 1.0)).select(Rgb::Zero(), off);
+  return surface.with_diffuse_colors(color, color);
+}
+
+// The surface of the shape x with its colour solved; the miss goes to `miss`.
+OpenPbrSurface solved_surface(const Eigen::VectorXd& x, const OpenPbrFitSettings& settings, const Rgb& target,
+                              Rgb& miss) {
+  return with_solved_color(OpenPbrSurface(with_shape(x, settings)), target, miss);
+}
+
+}  // namespace
+
+OpenPbrFit fit_openpbr(const BrdfFitTarget& target, const OpenPbrFitSettings& settings) {
+  check_fit_target(target);
+  const std::size_t n = target.pairs.size();
+  const Rgb& at_normal = target.albedo.front();
+  const auto residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+    Rgb miss;
+    const OpenPbrSurface surface = solved_surface(x, settings, at_normal, miss);
+    r.tail<3>() = kAlbedoMissWeight * miss.matrix();
+    for (std::size_t k = 0; k < n; ++k) {
+      const DirectionPair& pair = target.pairs[k];
+      const Rgb difference = surface.brdf_cosine_weighted(pair.omega_i, pair.omega_o) - target.brdf_cosine[k];
+      r.segment<3>(static_cast<Eigen::Index>(3 * k)) = std::sqrt(pair.weight) * difference.matrix();
+    }
+  };
+  const int fitted = fitted_count(settings);
+  Eigen::VectorXd lo = Eigen::VectorXd::Zero(fitted), hi = Eigen::VectorXd::Ones(fitted);
+  lo(0) = lo(4) = kMinFittedRoughness;
+  if (settings.coat) lo(5) = kMinFittedRoughness;
+  const int count = static_cast<int>(3 * n + 3);
+  // Two starts, a glossy and a matte one, as the least squares find the nearest minimum.
+  const Eigen::VectorXd glossy = (Eigen::VectorXd(6) << 0.4, 1.0, 0.0, 0.0, 0.5, 0.3).finished();
+  const Eigen::VectorXd matte_start = (Eigen::VectorXd(6) << 0.8, 0.5, 0.5, 0.3, 0.5, 0.3).finished();
+  BoundedFit best = fit_in_box(residuals, count, glossy.head(fitted), lo, hi);
+  const BoundedFit matte = fit_in_box(residuals, count, matte_start.head(fitted), lo, hi);
+  if (matte.norm() < best.norm()) best = matte;
+
+  OpenPbrFit fit;
+  const OpenPbrSurface surface = solved_surface(best.parameters, settings, at_normal, fit.albedo_miss);
+  fit.parameters = surface.parameters();
+  fit.albedo_matched = (fit.albedo_miss.abs() < 1e-9).all();
+  fit.errors = fit_errors(
+      target, [&](const Vec3& omega_i, const Vec3& omega_o) { return surface.brdf_cosine_weighted(omega_i, omega_o); },
+      [&](double theta) { return surface.albedo(std::cos(theta)); });
+  return fit;
+}
+
+}  // namespace skinlayer
