@@ -30,8 +30,15 @@ void check(const PrincipledParameters& p) {
   unit(p.sheen_tint, "sheen_tint");
   unit(p.clearcoat, "clearcoat");
   unit(p.clearcoat_roughness, "clearcoat_roughness");
-  if (p.transmission != 0.0 || p.subsurface != 0.0 || p.anisotropic != 0.0) {
-    throw ParameterError("principled: transmission, subsurface and anisotropic are not built yet (give 0)");
+  unit(p.subsurface, "subsurface");
+  for (int c = 0; c < 3; ++c) {
+    unit(p.subsurface_color(c), "subsurface_color");
+    if (!(p.subsurface_radius(c) >= 0.0) || !std::isfinite(p.subsurface_radius(c))) {
+      throw ParameterError("principled: subsurface_radius must be >= 0");
+    }
+  }
+  if (p.transmission != 0.0 || p.anisotropic != 0.0) {
+    throw ParameterError("principled: transmission and anisotropic are not built yet (give 0)");
   }
 }
 
@@ -73,7 +80,8 @@ PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, 
   const double retro = p.roughness * (omega_i.dot(omega_o) + 1.0);
   const double diffuse =
       kInvPi * cos_i * ((1.0 - 0.5 * F_o) * (1.0 - 0.5 * F_i) + retro * (F_i + F_o + F_i * F_o * (retro - 1.0)));
-  lobes.diffuse = diffuse_weight * p.base_color * diffuse;
+  const Rgb diffuse_color = p.base_color * (1.0 - p.subsurface) + p.subsurface_color * p.subsurface;
+  lobes.diffuse = diffuse_weight * diffuse_color * diffuse;
 
   if (p.sheen > 0.0) {
     const Rgb rec709(kRec709Luminance[0], kRec709Luminance[1], kRec709Luminance[2]);

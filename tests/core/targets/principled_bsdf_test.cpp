@@ -128,12 +128,45 @@ TEST(PrincipledBsdf, WeightsAndTintsSplitTheLight) {
   EXPECT_EQ(principled_brdf(p, in, direction(1.0, 0.0) * -1.0).maxCoeff(), 0.0);  // below the surface: nothing
 }
 
+// At the BRDF's scale subsurface scattering is the diffuse lobe in the mixed colour: a subsurface of weight 1 is the
+// base colour's diffuse with the subsurface colour, whatever its radius; half of it is the half-way colour; the
+// sheen keeps the base colour.
+TEST(PrincipledBsdf, SubsurfaceIsTheDiffuseLobeInTheMixedColour) {
+  PrincipledParameters diffuse;
+  diffuse.base_color = Rgb(0.6, 0.3, 0.1);
+  diffuse.sheen = 0.5;
+  PrincipledParameters subsurface = diffuse;
+  subsurface.base_color = Rgb(0.2, 0.2, 0.2);
+  subsurface.subsurface = 1.0;
+  subsurface.subsurface_color = Rgb(0.6, 0.3, 0.1);
+  subsurface.subsurface_radius = Rgb(5.0, 1.0, 0.1);
+  const Vec3 light = direction(0.4, 0.0), view = direction(1.1, 2.0);
+  const PrincipledLobes a = principled_lobes_cosine_weighted(diffuse, light, view);
+  const PrincipledLobes b = principled_lobes_cosine_weighted(subsurface, light, view);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.diffuse(c), b.diffuse(c), 1e-15);
+  subsurface.subsurface = 0.5;
+  PrincipledParameters halfway = diffuse;
+  halfway.base_color = Rgb(0.4, 0.25, 0.15);
+  const double mixed = principled_lobes_cosine_weighted(subsurface, light, view).diffuse(0);
+  EXPECT_NEAR(mixed, principled_lobes_cosine_weighted(halfway, light, view).diffuse(0), 1e-15);
+  PrincipledParameters no_subsurface = subsurface;
+  no_subsurface.subsurface = 0.0;
+  const Rgb sheen = principled_lobes_cosine_weighted(subsurface, light, view).sheen;
+  EXPECT_GT(sheen(0), 0.0);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(sheen(c), principled_lobes_cosine_weighted(no_subsurface, light, view).sheen(c));
+  }
+}
+
 TEST(PrincipledBsdf, RefusesWhatItCannotTake) {
   PrincipledParameters p;
   p.roughness = 1.5;
   EXPECT_THROW(principled_brdf(p, Vec3::UnitZ(), Vec3::UnitZ()), ParameterError);
   p.roughness = 0.5;
   p.transmission = 0.5;
+  EXPECT_THROW(principled_brdf(p, Vec3::UnitZ(), Vec3::UnitZ()), ParameterError);
+  p.transmission = 0.0;
+  p.subsurface_radius(1) = -1.0;
   EXPECT_THROW(principled_brdf(p, Vec3::UnitZ(), Vec3::UnitZ()), ParameterError);
 }
 
