@@ -8,7 +8,7 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
 #include "app/cli/skin_flag.h"
-#include "app/export/principled_fit_json.h"
+#include "app/export/fit_report_json.h"
 #include "app/material/atomic_file.h"
 #include "app/process/parallel_for.h"
 #include "app/solution/shader_fit.h"
@@ -16,36 +16,44 @@
 namespace skinlayer::cli {
 
 std::string fit_usage() {
-  return "Usage: skinlayer fit --target principled [material flags] [--albedo A | r,g,b] [-o FILE]\n"
+  return "Usage: skinlayer fit --target principled|openpbr [material flags] [--albedo A | r,g,b] [-o FILE]\n"
          "\n"
-         "Finds the parameters of Blender 3.4's Principled BSDF that best reproduce the material's BRDF, and says\n"
-         "how far they are from it. The metric is the cosine-weighted BRDF (surface and subsurface) on fixed pairs\n"
-         "of directions: light at 0-80 degrees, the view over the hemisphere (docs/model.md section 22.2). The\n"
-         "directional albedo at normal incidence is matched exactly, through the base colour. Fitted: base colour,\n"
-         "roughness, specular, sheen, clearcoat and clearcoat roughness; metallic and the tints stay 0, and\n"
-         "transmission and subsurface scattering are not fitted yet.\n"
-         "Writes JSON: the parameters, whether the albedo could be matched and by how much it misses where not (a\n"
-         "dark channel whose specular alone reflects more than it does), and the errors per channel (red, green,\n"
-         "blue): the lobe's RMS and worst difference relative to its largest value, and the directional albedo's\n"
-         "RMS and worst relative error at 0, 20, 40, 60 and 80 degrees.\n"
+         "Finds the parameters of a renderer's shader that best reproduce the material's BRDF (its layer model), and\n"
+         "says how far they are from it. The metric is the cosine-weighted BRDF (surface and subsurface) on fixed\n"
+         "pairs of directions: light at 0-80 degrees, the view over the hemisphere and again about the mirror\n"
+         "direction (docs/model.md section 22.2). The directional albedo at normal incidence is matched exactly,\n"
+         "through the diffuse colour.\n"
+         "  principled  Blender 3.4's Principled BSDF, its \"GGX\" distribution (section 22.1): fitted base colour,\n"
+         "              roughness, specular, sheen, clearcoat and its roughness; metallic, the tints and\n"
+         "              transmission stay 0. Subsurface stays 0 as fitted, with its colour and radius set.\n"
+         "  openpbr     OpenPBR Surface 1.1 (section 22.3): the material's own indices (specular_ior; a clear top\n"
+         "              layer over a refracting interface becomes a coat of the top's index), fitted diffuse colour\n"
+         "              and roughness, specular roughness and weight, fuzz weight and roughness, coat roughness.\n"
+         "              Where the radius is known, subsurface_weight is 1 (at the BRDF's scale the same lobe).\n"
+         "The subsurface radius is the material's mean free path 1/mu_t (its deepest layer's; a skin's dermis, per\n"
+         "channel through its spectrum); a material without a physical length has none, and the output says so.\n"
+         "Writes JSON: the parameters, where the radius came from, whether the albedo could be matched and by how\n"
+         "much it misses where not, and the errors per channel (red, green, blue): the lobe's RMS and worst\n"
+         "difference relative to its largest value, and the directional albedo's RMS and worst relative error at\n"
+         "0, 20, 40, 60 and 80 degrees.\n"
          "\n"
          "  --target T\n"
-         "      principled (Blender 3.4's Principled BSDF, its \"GGX\" distribution); openpbr is not built yet.\n"
+         "      principled or openpbr.\n"
          "  -o, --output FILE\n"
          "      write the JSON there instead of to standard output.\n" +
          rgb_albedo_usage() + "\n" + skin_flags_usage() + "\n" + material_flags_usage() +
          "\n"
          "Example:\n"
-         "  skinlayer fit --target principled --preset jade\n";
+         "  skinlayer fit --target principled --preset jade\n"
+         "  skinlayer fit --target openpbr --preset skin-fair -o skin-fair.openpbr.json\n";
 }
 
 int run_fit_command(std::span<const std::string_view> arguments, std::ostream& out) {
   const ParsedFlags flags = ParsedFlags::parse(
       arguments, material_flags_and({kSkinFlag, kWavelengthFlag, "target", "output"}), "skinlayer fit");
   const std::optional<std::string_view> target_name = flags.value("target");
-  if (!target_name) throw UsageError("fit needs --target principled (the shader whose parameters to find)");
-  if (*target_name == "openpbr") throw ParameterError("fit: --target openpbr is not built yet; principled is");
-  if (*target_name != "principled") {
+  if (!target_name) throw UsageError("fit needs --target principled or openpbr (the shader whose parameters to find)");
+  if (*target_name != "principled" && *target_name != "openpbr") {
     throw ParameterError("--target '" + std::string(*target_name) + "' is not one of principled, openpbr");
   }
   const std::optional<std::string_view> output = flags.value("output");
@@ -58,7 +66,11 @@ int run_fit_command(std::span<const std::string_view> arguments, std::ostream& o
   if (const std::optional<double> wavelength = wavelength_from_flags(flags)) {
     document = document_at_wavelength(document, *wavelength);
   }
-  const std::string text = principled_fit_json(fit_principled(document, parallel_for_threads)).dump(2) + "\n";
+  const std::string text =
+      (*target_name == "principled" ? principled_fit_json(fit_principled(document, parallel_for_threads))
+                                    : openpbr_fit_json(fit_openpbr(document, parallel_for_threads)))
+          .dump(2) +
+      "\n";
   if (output) {
     write_file_atomically(std::string(*output), text);
     out << "wrote " << *output << "\n";

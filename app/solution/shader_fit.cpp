@@ -6,11 +6,12 @@
 #include "app/solution/document_albedo.h"
 #include "app/solution/pair_evaluation.h"
 #include "app/solution/solved_document.h"
+#include "app/solution/subsurface_radius.h"
 #include "core/conventions.h"
 
 namespace skinlayer {
 
-BrdfFitTarget principled_fit_target(const MaterialDocument& document, const ParallelFor& parallel_for) {
+BrdfFitTarget brdf_fit_target(const MaterialDocument& document, const ParallelFor& parallel_for) {
   BrdfFitTarget target;
   target.pairs = fit_pairs();
   std::vector<double> theta_i, theta_o, phi;
@@ -40,8 +41,41 @@ BrdfFitTarget principled_fit_target(const MaterialDocument& document, const Para
   return target;
 }
 
-PrincipledFit fit_principled(const MaterialDocument& document, const ParallelFor& parallel_for) {
-  return fit_principled(principled_fit_target(document, parallel_for));
+DocumentFit<PrincipledFit> fit_principled(const MaterialDocument& document, const ParallelFor& parallel_for) {
+  DocumentFit<PrincipledFit> result{fit_principled(brdf_fit_target(document, parallel_for)), ""};
+  const SubsurfaceRadius radius = subsurface_radius(document);
+  result.radius_source = radius.source;
+  PrincipledParameters& p = result.fit.parameters;
+  p.subsurface_color = p.base_color;
+  if (radius.millimetres) p.subsurface_radius = *radius.millimetres / 1000.0;
+  return result;
+}
+
+OpenPbrFitSettings openpbr_fit_settings(const MaterialDocument& document) {
+  const Material& m = document.layer;
+  OpenPbrFitSettings settings;
+  settings.specular_ior = m.eta;
+  const bool clear_top =
+      !m.below.empty() && m.transparency() >= 0.9 && m.below.front().interface && m.below.front().interface->eta != 1.0;
+  if (clear_top) {
+    settings.coat = true;
+    settings.coat_ior = m.eta;
+    settings.specular_ior = m.eta * m.below.front().interface->eta;
+  }
+  return settings;
+}
+
+DocumentFit<OpenPbrFit> fit_openpbr(const MaterialDocument& document, const ParallelFor& parallel_for) {
+  const SubsurfaceRadius radius = subsurface_radius(document);
+  OpenPbrFitSettings settings = openpbr_fit_settings(document);
+  settings.subsurface_weight = radius.millimetres ? 1.0 : 0.0;
+  DocumentFit<OpenPbrFit> result{fit_openpbr(brdf_fit_target(document, parallel_for), settings), radius.source};
+  if (radius.millimetres) {
+    OpenPbrParameters& p = result.fit.parameters;
+    p.subsurface_radius = radius.millimetres->maxCoeff();
+    p.subsurface_radius_scale = *radius.millimetres / p.subsurface_radius;
+  }
+  return result;
 }
 
 }  // namespace skinlayer

@@ -74,9 +74,41 @@ TEST(FitCommand, WritesTheFileItIsGiven) {
 }
 
 TEST(FitCommand, WhatItCannotTakeIsOneLine) {
-  EXPECT_TRUE(failed_with_one_line(fit({"--target", "openpbr"}), 2, {"openpbr", "not built yet"}));
   EXPECT_TRUE(failed_with_one_line(fit({"--target", "disney"}), 2, {"'disney'", "principled"}));
   EXPECT_TRUE(failed_with_one_line(fit({}), 2, {"--target"}));
+}
+
+// OpenPBR: the fitted surface reflects at normal incidence what the material does, its interfaces are the
+// material's (a clear top layer over a refracting interface is a coat of the top's index), and a skin, which has a
+// physical length, carries its mean free path as the subsurface radius with subsurface_weight 1.
+TEST(FitCommand, TheOpenPbrFitKeepsTheMaterialsAlbedoAndInterfaces) {
+  const ProcessResult wax = fit({"--target", "openpbr", "--preset", "wax"});
+  ASSERT_EQ(wax.exit_code, 0) << wax.err;
+  const nlohmann::json json = nlohmann::json::parse(wax.out);
+  EXPECT_EQ(json.at("target"), "openpbr");
+  EXPECT_TRUE(json.at("albedo_matched_at_normal_incidence").get<bool>());
+  const nlohmann::json& p = json.at("parameters");
+  EXPECT_EQ(p.at("specular_ior"), 1.45);
+  EXPECT_EQ(p.at("coat_weight"), 0.0);
+  EXPECT_EQ(p.at("subsurface_weight"), 0.0);
+  EXPECT_NE(json.at("subsurface_radius_source").get<std::string>().find("no physical length"), std::string::npos);
+
+  const ProcessResult coat = fit({"--target", "openpbr", "--preset", "clear-coat-red"});
+  ASSERT_EQ(coat.exit_code, 0) << coat.err;
+  const nlohmann::json coat_json = nlohmann::json::parse(coat.out);
+  const nlohmann::json& c = coat_json.at("parameters");
+  EXPECT_EQ(c.at("coat_weight"), 1.0);
+  EXPECT_GE(c.at("coat_roughness").get<double>(), 0.1);
+
+  const ProcessResult skin = fit({"--target", "openpbr", "--preset", "skin-fair"});
+  ASSERT_EQ(skin.exit_code, 0) << skin.err;
+  const nlohmann::json skin_json = nlohmann::json::parse(skin.out);
+  const nlohmann::json& s = skin_json.at("parameters");
+  EXPECT_EQ(s.at("subsurface_weight"), 1.0);
+  EXPECT_GT(s.at("subsurface_radius").get<double>(), 0.005);  // millimetres: a dermis's mean free path
+  EXPECT_LT(s.at("subsurface_radius").get<double>(), 0.5);
+  EXPECT_EQ(s.at("subsurface_color"), s.at("base_color"));
+  EXPECT_NE(skin_json.at("subsurface_radius_source").get<std::string>().find("dermis"), std::string::npos);
 }
 
 }  // namespace

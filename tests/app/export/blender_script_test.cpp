@@ -51,6 +51,10 @@ TEST_F(BlenderScript, CarriesTheMaterialTheFitAndTheFittedInputs) {
   const nlohmann::json& parameters = fitted.at("parameters");
   for (int c = 0; c < 3; ++c) EXPECT_EQ(inputs.at("Base Color").at(c), parameters.at("base_color").at(c));
   EXPECT_EQ(inputs.at("Base Color").at(3), 1.0);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(inputs.at("Subsurface Color").at(c), parameters.at("subsurface_color").at(c));
+    EXPECT_EQ(inputs.at("Subsurface Radius").at(c), parameters.at("subsurface_radius").at(c));
+  }
   const std::pair<const char*, const char*> names[] = {{"Metallic", "metallic"},
                                                        {"Specular", "specular"},
                                                        {"Specular Tint", "specular_tint"},

@@ -1,0 +1,77 @@
+#include "app/export/fit_report_json.h"
+
+namespace skinlayer {
+namespace {
+
+nlohmann::ordered_json channels(const Rgb& values) { return {values(0), values(1), values(2)}; }
+
+// The report around the parameters: where the radius came from, the albedo's match and the errors.
+nlohmann::ordered_json report(const char* target, const char* renderer, const nlohmann::ordered_json& parameters,
+                              const std::string& radius_source, bool albedo_matched, const Rgb& albedo_miss,
+                              const FitErrors& fit_errors) {
+  nlohmann::ordered_json errors;
+  errors["lobe_rms"] = channels(fit_errors.lobe_rms);
+  errors["lobe_worst"] = channels(fit_errors.lobe_worst);
+  errors["albedo_rms"] = channels(fit_errors.albedo_rms);
+  errors["albedo_worst"] = channels(fit_errors.albedo_worst);
+  nlohmann::ordered_json json;
+  json["target"] = target;
+  json["renderer"] = renderer;
+  json["parameters"] = parameters;
+  json["subsurface_radius_source"] = radius_source;
+  json["albedo_matched_at_normal_incidence"] = albedo_matched;
+  json["albedo_miss_at_normal_incidence"] = channels(albedo_miss);
+  json["errors"] = errors;
+  return json;
+}
+
+}  // namespace
+
+nlohmann::ordered_json principled_fit_json(const DocumentFit<PrincipledFit>& fit) {
+  const PrincipledParameters& p = fit.fit.parameters;
+  nlohmann::ordered_json parameters;
+  parameters["base_color"] = channels(p.base_color);
+  parameters["metallic"] = p.metallic;
+  parameters["specular"] = p.specular;
+  parameters["specular_tint"] = p.specular_tint;
+  parameters["roughness"] = p.roughness;
+  parameters["sheen"] = p.sheen;
+  parameters["sheen_tint"] = p.sheen_tint;
+  parameters["clearcoat"] = p.clearcoat;
+  parameters["clearcoat_roughness"] = p.clearcoat_roughness;
+  parameters["transmission"] = p.transmission;
+  parameters["subsurface"] = p.subsurface;
+  parameters["subsurface_color"] = channels(p.subsurface_color);
+  parameters["subsurface_radius"] = channels(p.subsurface_radius);
+  return report("principled", "Blender 3.4 (Cycles), Principled BSDF, distribution GGX", parameters, fit.radius_source,
+                fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
+}
+
+nlohmann::ordered_json openpbr_fit_json(const DocumentFit<OpenPbrFit>& fit) {
+  const OpenPbrParameters& p = fit.fit.parameters;
+  nlohmann::ordered_json parameters;
+  parameters["base_weight"] = p.base_weight;
+  parameters["base_color"] = channels(p.base_color);
+  parameters["base_diffuse_roughness"] = p.base_diffuse_roughness;
+  parameters["base_metalness"] = p.base_metalness;
+  parameters["specular_weight"] = p.specular_weight;
+  parameters["specular_color"] = channels(p.specular_color);
+  parameters["specular_roughness"] = p.specular_roughness;
+  parameters["specular_ior"] = p.specular_ior;
+  parameters["subsurface_weight"] = p.subsurface_weight;
+  parameters["subsurface_color"] = channels(p.subsurface_color);
+  parameters["subsurface_radius"] = p.subsurface_radius;
+  parameters["subsurface_radius_scale"] = channels(p.subsurface_radius_scale);
+  parameters["fuzz_weight"] = p.fuzz_weight;
+  parameters["fuzz_color"] = channels(p.fuzz_color);
+  parameters["fuzz_roughness"] = p.fuzz_roughness;
+  parameters["coat_weight"] = p.coat_weight;
+  parameters["coat_color"] = channels(p.coat_color);
+  parameters["coat_roughness"] = p.coat_roughness;
+  parameters["coat_ior"] = p.coat_ior;
+  parameters["coat_darkening"] = p.coat_darkening;
+  return report("openpbr", "OpenPBR Surface 1.1 (MaterialX 1.39), subsurface_radius in millimetres", parameters,
+                fit.radius_source, fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
+}
+
+}  // namespace skinlayer

@@ -1,0 +1,19 @@
+// A shader fit's report as JSON: what `skinlayer fit` writes, and what the exported Blender script and MaterialX file
+// carry beside their material. The parameters by the shader's own names; errors per channel, [red, green, blue].
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "app/solution/shader_fit.h"
+
+namespace skinlayer {
+
+// {"target": "principled", "renderer", "parameters": {base_color, ..., subsurface_color, subsurface_radius},
+//  "subsurface_radius_source", "albedo_matched_at_normal_incidence", "albedo_miss_at_normal_incidence",
+//  "errors": {lobe_rms, lobe_worst, albedo_rms, albedo_worst}}.
+nlohmann::ordered_json principled_fit_json(const DocumentFit<PrincipledFit>& fit);
+
+// The same for "openpbr", its parameters by OpenPBR Surface 1.1's input names (subsurface_radius in millimetres).
+nlohmann::ordered_json openpbr_fit_json(const DocumentFit<OpenPbrFit>& fit);
+
+}  // namespace skinlayer
