@@ -20,7 +20,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")"
 readonly packages=(
   cmake ninja-build g++ pkg-config
   libeigen3-dev libglm-dev libglfw3-dev libosmesa6-dev libimgui-dev libstb-dev
-  nlohmann-json3-dev libpng-dev
+  nlohmann-json3-dev libpng-dev libpugixml-dev
   libgtest-dev libbenchmark-dev xvfb xauth fonts-dejavu-core python3-jsonschema
   clang libclang-rt-14-dev
   pybind11-dev python3-dev python3-numpy python3-pytest

@@ -17,6 +17,8 @@ find_package(glm 0.9.9 REQUIRED CONFIG)
 if(NOT SKINLAYER_BUILD_APP)
   return()
 endif()
+# The OpenPBR export writes MaterialX through pugixml (libpugixml-dev), and its test reads the node definition with it.
+find_package(pugixml 1.13 REQUIRED CONFIG)
 find_package(glfw3 3.3 REQUIRED)
 find_package(OpenGL REQUIRED)
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)

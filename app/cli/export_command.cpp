@@ -21,8 +21,8 @@
 
 namespace skinlayer::cli {
 std::string export_usage() {
-  return "Usage: skinlayer export --format bsdf|merl|rgl|blender [material flags] [--albedo A | r,g,b] [--model M]\n"
-         "                        -o FILE [--nodes N | --rgb --resolution N | --scene]\n"
+  return "Usage: skinlayer export --format bsdf|merl|rgl|blender|mtlx [material flags] [--albedo A | r,g,b]\n"
+         "                        [--model M] -o FILE [--nodes N | --rgb --resolution N | --scene]\n"
          "\n"
          "Writes the solved material in a tabulated format that other programs read, or as a renderer's own\n"
          "shader with fitted parameters.\n"
@@ -55,7 +55,11 @@ std::string export_usage() {
          "                       with the material's JSON and the fit's errors as data and as custom properties\n"
          "                       of the Blender material (docs/examples/blender)\n"
          "  --scene              blender: also replace the scene by a preview: a unit sphere, an orthographic\n"
-         "                       camera on +z, a sun from the upper left, Cycles on the CPU\n" +
+         "                       camera on +z, a sun from the upper left, Cycles on the CPU\n"
+         "  --format mtlx        a MaterialX 1.39 document with an OpenPBR Surface 1.1 material, the one\n"
+         "                       `skinlayer fit --target openpbr` finds (Maya, Arnold, 3ds Max, Houdini, Unreal);\n"
+         "                       the fit's report and the material's JSON ride along as the nodes' doc strings\n"
+         "                       (docs/examples/openpbr)\n" +
          rgb_albedo_usage() +
          "  --model M            subsurface model: stam (default), lambert or hk\n"
          "  -o, --output FILE    the file to write (required; written whole or not at all)\n"
@@ -87,7 +91,7 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   };
   if (const auto* fitted = std::get_if<FittedExportSettings>(&request)) {
     if (model_from_flags(flags, SubsurfaceModel::Stam) != SubsurfaceModel::Stam) {
-      throw UsageError("--model is for the tabulated formats: --format blender fits the layer model (stam)");
+      throw UsageError("--model is for the tabulated formats: --format blender and mtlx fit the layer model (stam)");
     }
     progress << "export: fitting " << fitted_format_label(fitted->format) << "\n" << std::flush;
     const std::string text = fitted_export_text(document, *fitted, parallel_for_threads);

@@ -44,19 +44,20 @@ std::span<const std::string_view> export_switch_names() { return kExportSwitches
 
 ExportRequest export_request_from_flags(const ParsedFlags& flags) {
   const std::optional<std::string_view> format = flags.value("format");
-  if (!format) throw UsageError("export needs --format bsdf, merl, rgl or blender (the format to write)");
-  if (*format != "merl" && *format != "bsdf" && *format != "rgl" && *format != "blender")
-    throw UsageError("format = " + quoted(*format) + " is not one of: bsdf, merl, rgl, blender");
+  if (!format) throw UsageError("export needs --format bsdf, merl, rgl, blender or mtlx (the format to write)");
+  if (*format != "merl" && *format != "bsdf" && *format != "rgl" && *format != "blender" && *format != "mtlx")
+    throw UsageError("format = " + quoted(*format) + " is not one of: bsdf, merl, rgl, blender, mtlx");
   const bool bsdf = *format == "bsdf", rgl = *format == "rgl", blender = *format == "blender";
   if (!blender && flags.has("scene")) throw UsageError("--scene is for --format blender");
-  if (blender) {
+  if (blender || *format == "mtlx") {
     for (const std::string_view tabulated : {"nodes", "resolution", "rgb"}) {
       if (flags.has(tabulated)) {
-        throw UsageError("--" + std::string(tabulated) + " is for the tabulated formats, not --format blender");
+        throw UsageError("--" + std::string(tabulated) + " is for the tabulated formats, not --format " +
+                         std::string(*format));
       }
     }
     FittedExportSettings fitted;
-    fitted.format = FittedFormat::BlenderScript;
+    fitted.format = blender ? FittedFormat::BlenderScript : FittedFormat::MaterialX;
     fitted.scene = flags.has("scene");
     return fitted;
   }

@@ -4,18 +4,14 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "app/cli/numbers.h"
 #include "app/export/fit_report_json.h"
 #include "app/material/material_json.h"
 
 namespace skinlayer {
 namespace {
 
-// A number as Python reads it back to the last bit.
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
+std::string number(double value) { return cli::format_shortest(value); }  // reads back to the last bit
 
 std::string percent_triple(const Rgb& values) {
   char text[64];

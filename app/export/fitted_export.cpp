@@ -1,6 +1,7 @@
 #include "app/export/fitted_export.h"
 
 #include "app/export/blender_script.h"
+#include "app/export/openpbr_materialx.h"
 #include "app/solution/shader_fit.h"
 
 namespace skinlayer {
@@ -9,6 +10,8 @@ std::string_view fitted_format_label(FittedFormat format) {
   switch (format) {
     case FittedFormat::BlenderScript:
       return "Blender script, Principled BSDF";
+    case FittedFormat::MaterialX:
+      return "MaterialX, OpenPBR Surface";
   }
   return "";
 }
@@ -17,6 +20,7 @@ std::string fitted_export_text(const MaterialDocument& document, const FittedExp
                                const ParallelFor& parallel_for) {
   MaterialDocument fitted = document;
   fitted.model = SubsurfaceModel::Stam;  // the fit is of the layer model, as the file's material then says
+  if (settings.format == FittedFormat::MaterialX) return openpbr_materialx(fitted, fit_openpbr(fitted, parallel_for));
   BlenderScriptSettings script;
   script.scene = settings.scene;
   return blender_script(fitted, fit_principled(fitted, parallel_for), script);

@@ -1,6 +1,7 @@
 // A material exported as a renderer's own shader, with fitted parameters instead of tables: the one path that
 // `skinlayer export --format blender|mtlx` and the previewer's buttons take.
-//   Blender (.py): a script that builds Blender 3.4's Principled BSDF (app/export/blender_script.h).
+//   Blender (.py): a script that builds Blender 3.4's Principled BSDF (app/export/blender_script.h);
+//   MaterialX (.mtlx): an OpenPBR Surface material (app/export/openpbr_materialx.h).
 #pragma once
 
 #include <string>
@@ -11,14 +12,14 @@
 
 namespace skinlayer {
 
-enum class FittedFormat { BlenderScript };
+enum class FittedFormat { BlenderScript, MaterialX };
 
 struct FittedExportSettings {
   FittedFormat format = FittedFormat::BlenderScript;
   bool scene = false;  // Blender: also build a preview scene
 };
 
-// "Blender script (Principled BSDF)".
+// "Blender script, Principled BSDF", "MaterialX, OpenPBR Surface".
 std::string_view fitted_format_label(FittedFormat format);
 
 // Fits the document's layer model (Stam's, whatever model it names; app/solution/shader_fit.h) and writes the

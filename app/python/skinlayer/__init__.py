@@ -373,6 +373,7 @@ class Solution:
                     "blender": a Python script for Blender 3.4 that builds the fitted Principled BSDF (the
                     material's layer model, as `skinlayer fit --target principled` finds it); with scene=True it
                     also builds a preview scene
+                    "mtlx": a MaterialX 1.39 document with the fitted OpenPBR Surface material
         ValueError names a bad option.
         """
         arguments = ["--format", str(format)]
