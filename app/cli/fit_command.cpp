@@ -9,14 +9,23 @@
 #include "app/cli/material_flags.h"
 #include "app/cli/skin_flag.h"
 #include "app/export/fit_report_json.h"
+#include "app/figures/fit_comparison.h"
 #include "app/material/atomic_file.h"
+#include "app/material/picture_metadata.h"
 #include "app/process/parallel_for.h"
+#include "app/render/png_export.h"
 #include "app/solution/shader_fit.h"
 
 namespace skinlayer::cli {
+namespace {
+
+constexpr int kPictureSphere = 256;  // --picture: each sphere's side in pixels
+
+}  // namespace
 
 std::string fit_usage() {
   return "Usage: skinlayer fit --target principled|openpbr [material flags] [--albedo A | r,g,b] [-o FILE]\n"
+         "                     [--picture FILE.png]\n"
          "\n"
          "Finds the parameters of a renderer's shader that best reproduce the material's BRDF (its layer model), and\n"
          "says how far they are from it. The metric is the cosine-weighted BRDF (surface and subsurface) on fixed\n"
@@ -40,7 +49,11 @@ std::string fit_usage() {
          "  --target T\n"
          "      principled or openpbr.\n"
          "  -o, --output FILE\n"
-         "      write the JSON there instead of to standard output.\n" +
+         "      write the JSON there instead of to standard output.\n"
+         "  --picture FILE.png\n"
+         "      also draw what the fit loses: the material's sphere, the fitted shader's and the map of their\n"
+         "      luminance's relative difference (blue -25%, red +25%), under a light 45 degrees from the left;\n"
+         "      the PNG carries the material and the fit's report.\n" +
          rgb_albedo_usage() + "\n" + skin_flags_usage() + "\n" + material_flags_usage() +
          "\n"
          "Example:\n"
@@ -50,15 +63,17 @@ std::string fit_usage() {
 
 int run_fit_command(std::span<const std::string_view> arguments, std::ostream& out) {
   const ParsedFlags flags = ParsedFlags::parse(
-      arguments, material_flags_and({kSkinFlag, kWavelengthFlag, "target", "output"}), "skinlayer fit");
+      arguments, material_flags_and({kSkinFlag, kWavelengthFlag, "target", "output", "picture"}), "skinlayer fit");
   const std::optional<std::string_view> target_name = flags.value("target");
   if (!target_name) throw UsageError("fit needs --target principled or openpbr (the shader whose parameters to find)");
   if (*target_name != "principled" && *target_name != "openpbr") {
     throw ParameterError("--target '" + std::string(*target_name) + "' is not one of principled, openpbr");
   }
-  const std::optional<std::string_view> output = flags.value("output");
-  if (output) {
-    if (const std::optional<std::string> missing = missing_output_folder(std::string(*output))) {
+  const std::optional<std::string_view> output = flags.value("output"), picture = flags.value("picture");
+  for (const std::optional<std::string_view>& path : {output, picture}) {
+    if (!path) continue;
+    if (path->empty()) throw UsageError("fit: --output and --picture need a file name");
+    if (const std::optional<std::string> missing = missing_output_folder(std::string(*path))) {
       throw std::runtime_error(*missing);
     }
   }
@@ -66,17 +81,38 @@ int run_fit_command(std::span<const std::string_view> arguments, std::ostream& o
   if (const std::optional<double> wavelength = wavelength_from_flags(flags)) {
     document = document_at_wavelength(document, *wavelength);
   }
-  const std::string text =
-      (*target_name == "principled" ? principled_fit_json(fit_principled(document, parallel_for_threads))
-                                    : openpbr_fit_json(fit_openpbr(document, parallel_for_threads)))
-          .dump(2) +
-      "\n";
+  nlohmann::ordered_json report;
+  figures::FittedBrdf fitted;
+  std::string label;
+  if (*target_name == "principled") {
+    const DocumentFit<PrincipledFit> fit = fit_principled(document, parallel_for_threads);
+    report = principled_fit_json(fit);
+    fitted = [p = fit.fit.parameters](const Vec3& i, const Vec3& o) {
+      return principled_brdf_cosine_weighted(p, i, o);
+    };
+    label = "Blender Principled";
+  } else {
+    const DocumentFit<OpenPbrFit> fit = fit_openpbr(document, parallel_for_threads);
+    report = openpbr_fit_json(fit);
+    fitted = [surface = OpenPbrSurface(fit.fit.parameters)](const Vec3& i, const Vec3& o) {
+      return surface.brdf_cosine_weighted(i, o);
+    };
+    label = "OpenPBR Surface";
+  }
+  if (picture) {
+    const figures::Font font;
+    const figures::FitComparison comparison =
+        figures::draw_fit_comparison(document, fitted, label, font, kPictureSphere, parallel_for_threads);
+    write_png(comparison.image, std::string(*picture), {picture_metadata(document, report)});
+  }
+  const std::string text = report.dump(2) + "\n";
   if (output) {
     write_file_atomically(std::string(*output), text);
     out << "wrote " << *output << "\n";
   } else {
     out << text;
   }
+  if (picture) out << "wrote " << *picture << "\n";
   return kExitSuccess;
 }
 

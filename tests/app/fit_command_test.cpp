@@ -73,6 +73,21 @@ TEST(FitCommand, WritesTheFileItIsGiven) {
   std::filesystem::remove(path);
 }
 
+// --picture draws the spheres and their difference, and the PNG carries the material as every picture does.
+TEST(FitCommand, ThePictureCarriesTheMaterial) {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "skinlayer_fit_picture_test.png";
+  std::filesystem::remove(path);
+  const ProcessResult result = fit({"--target", "openpbr", "--preset", "jade", "--picture", path.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("wrote " + path.string()), std::string::npos);
+  const ProcessResult material = run_skinlayer({"material", "--material", path.string()});
+  ASSERT_EQ(material.exit_code, 0) << material.err;
+  EXPECT_NE(material.out.find("\"name\": \"jade\""), std::string::npos) << material.out;
+  std::filesystem::remove(path);
+  EXPECT_TRUE(
+      failed_with_one_line(fit({"--target", "openpbr", "--picture", "/no/such/folder/x.png"}), 1, {"no folder"}));
+}
+
 TEST(FitCommand, WhatItCannotTakeIsOneLine) {
   EXPECT_TRUE(failed_with_one_line(fit({"--target", "disney"}), 2, {"'disney'", "principled"}));
   EXPECT_TRUE(failed_with_one_line(fit({}), 2, {"--target"}));
