@@ -105,6 +105,7 @@ def build_preview_scene(material):
     scene.render.engine = "CYCLES"
     scene.cycles.device = "CPU"
     scene.cycles.samples = 128
+    scene.cycles.use_denoising = False  # Debian 12's Blender is built without OpenImageDenoise
     scene.render.resolution_x = scene.render.resolution_y = 512
     scene.render.resolution_percentage = 100
     scene.view_settings.view_transform = "Standard"

@@ -10,7 +10,8 @@
 // stores both on the material as custom properties ("skinlayer_material", "skinlayer_fit"), so they travel in the
 // .blend file. With `scene`, it also replaces the scene with a preview: a unit sphere at the origin (256 x 128 UV
 // sphere, smooth shaded) under an orthographic camera on +z looking down -z (ortho scale 2.2), a sun from the upper
-// left, a dim grey world, and Cycles on the CPU with a linear "Standard" view.
+// left, a dim grey world, and Cycles on the CPU (no denoising: Debian 12's Blender has no OpenImageDenoise) with the
+// "Standard" view.
 #pragma once
 
 #include <string>

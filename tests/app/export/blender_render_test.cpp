@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -283,6 +284,20 @@ void check_sun(BlenderRender& test, const std::string& preset) {
               (preset + ", sun").c_str());
   std::printf("  %s sun: the render against the exact material, worst ring %.1f%%\n", preset.c_str(),
               100.0 * worst_exact);
+}
+
+// The preview scene as exported renders to a file with Blender's own command line, as docs/examples/blender says
+// (shrunk to 10% and 4 samples for the test).
+TEST_F(BlenderRender, ThePreviewSceneRendersFromTheCommandLine) {
+  const std::string script = path("wax.py");
+  ASSERT_EQ(run_skinlayer({"export", "--format", "blender", "--scene", "--preset", "wax", "-o", script}).exit_code, 0);
+  const ProcessResult rendered = run_process(
+      {"blender", "-b", "--factory-startup", "--python", script, "--python-expr",
+       "import bpy; scene = bpy.context.scene; scene.render.resolution_percentage = 10; scene.cycles.samples = 4", "-o",
+       path("preview_####"), "-F", "PNG", "-f", "1"});
+  EXPECT_EQ(rendered.exit_code, 0) << rendered.err;
+  EXPECT_EQ(rendered.out.find("Error"), std::string::npos) << rendered.out;
+  EXPECT_TRUE(std::filesystem::exists(path("preview_0001.png"))) << rendered.out;
 }
 
 // Skin's fit uses the diffuse, sheen and specular lobes; the clear coat's adds Cycles' clearcoat.
