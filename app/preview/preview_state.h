@@ -42,6 +42,9 @@ struct LightingState {
 struct ComparisonState {
   std::optional<ColorMaterial> pinned;  // B; unset: no comparison
   double split = 0.5;                   // where the line crosses the sphere's view: 0 left edge .. 1 right edge
+  // What B is, as the sphere's label says it: "B (pinned)", or a fitted shader's ("B (Principled fit)"), whose
+  // tables hold the fit's BRDF under an index-matched top (app/solution/fitted_tables.h).
+  std::string label = "B (pinned)";
   bool operator==(const ComparisonState&) const = default;
 };
 

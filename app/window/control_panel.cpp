@@ -68,6 +68,27 @@ void ab_controls(ComparisonState& comparison, const PanelStatus& status, PanelAc
                   : "Keep the shown material as B and go on editing A: the sphere shows A left of a split line\n"
                     "(drag it) and B right of it, under the same light; the lobes draw B as an outline.");
     }
+    // The fitted shaders as B: what an artist's renderer would show of this material, beside it.
+    ImGui::BeginDisabled(status.shown == nullptr || preview || status.fitting);
+    const char* tooltip =
+        "Fit %s to the shown material (as skinlayer fit --target %s) and pin the fit as B:\nthe split sphere and "
+        "the lobes show what the fit keeps and loses. A second or two.";
+    ImGui::SameLine();
+    if (ImGui::Button("B: Principled fit")) actions.pin_fit = ShaderTarget::Principled;
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      ImGui::SetTooltip(tooltip, "Blender 3.4's Principled BSDF", "principled");
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("B: OpenPBR fit")) actions.pin_fit = ShaderTarget::OpenPbr;
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      ImGui::SetTooltip(tooltip, "OpenPBR Surface", "openpbr");
+    }
+    ImGui::EndDisabled();
+    if (!status.fit.empty()) {
+      ImGui::PushTextWrapPos(0.0f);
+      ImGui::TextColored(kDimColor, "%s", status.fit.c_str());
+      ImGui::PopTextWrapPos();
+    }
     return;
   }
   actions.unpin = ImGui::Button("Unpin B");
@@ -75,6 +96,11 @@ void ab_controls(ComparisonState& comparison, const PanelStatus& status, PanelAc
   float split = static_cast<float>(comparison.split);
   ImGui::SetNextItemWidth(-1.0f);
   if (ImGui::SliderFloat("##split", &split, 0.0f, 1.0f, "split %.2f")) comparison.split = split;
+  if (comparison.label != "B (pinned)" && !status.fit.empty()) {  // B is a fit: what it loses, in numbers
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(kDimColor, "%s", status.fit.c_str());
+    ImGui::PopTextWrapPos();
+  }
 }
 
 // A button that is disabled while `busy`, with its tooltip shown either way. True when pressed.
@@ -88,8 +114,7 @@ bool export_button(const char* label, bool busy, const char* tooltip) {
 
 // Target and path on one line, then the Save and Export buttons with the last export's outcome (or the running
 // export's progress) beside them.
-bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool& export_bsdf, bool& export_merl,
-                         bool& export_rgl) {
+bool screenshot_controls(ExportOptions& options, const PanelStatus& status, PanelActions& actions) {
   constexpr std::array<const char*, 3> kTargets = {"window", "sphere", "plots"};
   int target = static_cast<int>(options.target);
   ImGui::SetNextItemWidth(ImGui::CalcTextSize("window").x * 2.2f);
@@ -102,21 +127,33 @@ bool screenshot_controls(ExportOptions& options, const PanelStatus& status, bool
   const bool save = ImGui::Button("Save PNG (S)");
   ImGui::SameLine();
   const bool busy = !status.export_progress.empty() || status.shown == nullptr;
-  export_bsdf = export_button("Export BSDF", busy,
-                              "The shown material's whole BSDF (light from above and below, reflection and "
-                              "transmission, RGB)\nas a tabulated Fourier BSDF for pbrt-v3's \"fourier\" material and "
-                              "layerlab, 1-3 MB;\nto the path above with .bsdf (empty: timestamped).");
+  actions.export_bsdf =
+      export_button("Export BSDF", busy,
+                    "The shown material's whole BSDF (light from above and below, reflection and "
+                    "transmission, RGB)\nas a tabulated Fourier BSDF for pbrt-v3's \"fourier\" material and "
+                    "layerlab, 1-3 MB;\nto the path above with .bsdf (empty: timestamped).");
   ImGui::SameLine();
-  export_merl = export_button("Export MERL", busy,
-                              "The shown material's reflection (surface + subsurface, RGB) as a MERL BRDF table, 35 "
-                              "MB,\nfor BRDF viewers and fitting tools; to the path above with .binary (empty: "
-                              "timestamped).");
+  actions.export_merl =
+      export_button("Export MERL", busy,
+                    "The shown material's reflection (surface + subsurface, RGB) as a MERL BRDF table, 35 "
+                    "MB,\nfor BRDF viewers and fitting tools; to the path above with .binary (empty: "
+                    "timestamped).");
   ImGui::SameLine();
-  export_rgl = export_button("Export for pbrt-v4 / Mitsuba 3", busy,
-                             "The shown material's reflection (surface + subsurface) as an RGL measured-BSDF tensor "
-                             "file,\nspectral, for pbrt-v4's and Mitsuba 3's \"measured\" material (9 MB, a skin 34 "
-                             "MB;\nno transmission: Export BSDF keeps it); to the path above with .rgl.bsdf (empty: "
-                             "timestamped).");
+  actions.export_rgl =
+      export_button("Export for pbrt-v4 / Mitsuba 3", busy,
+                    "The shown material's reflection (surface + subsurface) as an RGL measured-BSDF tensor "
+                    "file,\nspectral, for pbrt-v4's and Mitsuba 3's \"measured\" material (9 MB, a skin 34 "
+                    "MB;\nno transmission: Export BSDF keeps it); to the path above with .rgl.bsdf (empty: "
+                    "timestamped).");
+  actions.export_blender = export_button("Export Blender", busy,
+                                         "The shown material as Blender 3.4's Principled BSDF, fitted (skinlayer fit "
+                                         "--target principled):\na Python script for blender -b --python FILE.py "
+                                         "with a preview scene; to the path above with .py (empty: timestamped).");
+  ImGui::SameLine();
+  actions.export_mtlx = export_button("Export MaterialX", busy,
+                                      "The shown material as OpenPBR Surface, fitted (skinlayer fit --target "
+                                      "openpbr),\nin a MaterialX 1.39 document for Maya, Arnold, 3ds Max, Houdini "
+                                      "and Unreal;\nto the path above with .mtlx (empty: timestamped).");
   const std::string& line = status.export_progress.empty() ? status.last_export : status.export_progress;
   if (!line.empty()) {
     ImGui::PushTextWrapPos(0.0f);
@@ -205,9 +242,7 @@ PanelActions control_panel(const Rect& rect, PreviewState& state, const PanelSta
     }
   }
   if (ImGui::CollapsingHeader("Screenshot", ImGuiTreeNodeFlags_DefaultOpen)) {
-    actions.save_screenshot =
-        screenshot_controls(state.export_options, status, actions.export_bsdf, actions.export_merl,
-                            actions.export_rgl);
+    actions.save_screenshot = screenshot_controls(state.export_options, status, actions);
   }
   ImGui::End();
   return actions;

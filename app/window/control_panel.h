@@ -9,6 +9,7 @@
 #include "app/preview/preview_state.h"
 #include "app/preview/solve_worker.h"
 #include "app/preview/view_layout.h"
+#include "app/solution/fitted_tables.h"
 #include "app/window/file_panel.h"
 
 namespace skinlayer {
@@ -25,6 +26,8 @@ struct PanelStatus {
   bool matching = false;               // a "Match colour..." runs (app/window/match_job.h)
   std::string match_outcome;           // the last match's outcome; empty: none
   std::string spread;                  // the translucency's state (app/window/spread_job.h)
+  std::string fit;                     // "fitting..." while a fit for B runs, then its summary; empty: none
+  bool fitting = false;
 };
 
 struct PanelActions {
@@ -32,9 +35,12 @@ struct PanelActions {
   bool export_bsdf = false;  // the Export BSDF button (app/window/export_job.h)
   bool export_merl = false;  // the Export MERL button
   bool export_rgl = false;   // the Export for pbrt-v4 / Mitsuba 3 button
+  bool export_blender = false;  // the Export Blender button (a fitted Principled BSDF)
+  bool export_mtlx = false;     // the Export MaterialX button (a fitted OpenPBR Surface)
   bool reset_material = false;
   bool pin = false;        // Pin as B: the shown material becomes the A/B comparison's B
   bool unpin = false;      // Unpin B
+  std::optional<ShaderTarget> pin_fit;  // "B: Principled fit" / "B: OpenPBR fit": the shown material's fit as B
   FileSectionResult file;  // the File section: open, save, presets, recent, undo, redo
   std::optional<std::array<double, 3>> match_srgb;  // "Match colour...": the target, sRGB-encoded
 };

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "app/export/fitted_export.h"
 #include "app/export/material_export.h"
 #include "app/material/atomic_file.h"
 #include "app/process/parallel_for.h"
@@ -12,10 +13,34 @@
 namespace skinlayer {
 
 const char* export_format_name(ExportFormat format) {
-  return format == ExportFormat::Merl ? "MERL" : format == ExportFormat::Bsdf ? "SCATFUN" : "RGL tensor";
+  switch (format) {
+    case ExportFormat::Merl:
+      return "MERL";
+    case ExportFormat::Bsdf:
+      return "SCATFUN";
+    case ExportFormat::Rgl:
+      return "RGL tensor";
+    case ExportFormat::Blender:
+      return "Blender script";
+    case ExportFormat::MaterialX:
+      return "MaterialX";
+  }
+  return "";
 }
 const char* export_extension(ExportFormat format) {
-  return format == ExportFormat::Merl ? ".binary" : format == ExportFormat::Bsdf ? ".bsdf" : ".rgl.bsdf";
+  switch (format) {
+    case ExportFormat::Merl:
+      return ".binary";
+    case ExportFormat::Bsdf:
+      return ".bsdf";
+    case ExportFormat::Rgl:
+      return ".rgl.bsdf";
+    case ExportFormat::Blender:
+      return ".py";
+    case ExportFormat::MaterialX:
+      return ".mtlx";
+  }
+  return "";
 }
 
 std::string with_export_extension(const std::string& path, ExportFormat format) {
@@ -51,14 +76,21 @@ bool ExportJob::start(ExportFormat format, const ColorTables& tables, std::strin
         rows_done_ = done;
         rows_total_ = total;
       };
-      SolveOptions options;  // the upside-down solve of a Fourier BSDF, a skin's wavelengths
-      options.parallel_for = parallel_for_threads;
-      ExportSettings settings;
-      settings.format = format == ExportFormat::Merl   ? TabulatedFormat::Merl
-                        : format == ExportFormat::Bsdf ? TabulatedFormat::Scatfun
-                                                       : TabulatedFormat::RglSpectral;
-      settings.description = rgl_description(material_document(tables.material));
-      const std::string bytes = export_bytes(tables, settings, options, progress);
+      std::string bytes;
+      if (format == ExportFormat::Blender || format == ExportFormat::MaterialX) {  // a fit, then a small text
+        FittedExportSettings fitted;
+        fitted.format = format == ExportFormat::Blender ? FittedFormat::BlenderScript : FittedFormat::MaterialX;
+        bytes = fitted_export_text(material_document(tables.material), fitted, parallel_for_threads);
+      } else {
+        SolveOptions options;  // the upside-down solve of a Fourier BSDF, a skin's wavelengths
+        options.parallel_for = parallel_for_threads;
+        ExportSettings settings;
+        settings.format = format == ExportFormat::Merl   ? TabulatedFormat::Merl
+                          : format == ExportFormat::Bsdf ? TabulatedFormat::Scatfun
+                                                         : TabulatedFormat::RglSpectral;
+        settings.description = rgl_description(material_document(tables.material));
+        bytes = export_bytes(tables, settings, options, progress);
+      }
       write_file_atomically(path, bytes);
       outcome = "saved " + path + " (" + export_format_name(format) + ", " + std::to_string(bytes.size()) + " bytes)";
     } catch (const std::exception& error) {
@@ -78,7 +110,8 @@ std::string ExportJob::progress() const {
   const std::lock_guard lock(mutex_);
   const int total = rows_total_.load();
   return "exporting " + path_ + " (" + export_format_name(format_) + ", " +
-         (total == 0 ? std::string("solving")
+         (total == 0 ? std::string(format_ == ExportFormat::Blender || format_ == ExportFormat::MaterialX ? "fitting"
+                                                                                                          : "solving")
                      : std::to_string(rows_done_.load()) + " of " + std::to_string(total) + " rows") +
          ")";
 }

@@ -1,4 +1,5 @@
-// The previewer's file exports that take a while (a MERL table, a Fourier BSDF or an RGL tensor: 0.5-3 s), on a
+// The previewer's file exports that take a while (a MERL table, a Fourier BSDF or an RGL tensor: 0.5-3 s; a fitted
+// shader: 0.5-3 s of fitting), on a
 // thread of their own so that the window keeps drawing: one at a time, with its progress for the panel and its
 // outcome when it ends. The thread is joined by the destructor (RAII); a job cannot be cancelled, since it only
 // writes its own file.
@@ -15,13 +16,16 @@
 namespace skinlayer {
 
 enum class ExportFormat {
-  Merl,  // the MERL BRDF .binary (app/export/merl_brdf.h)
-  Bsdf,  // the tabulated Fourier BSDF .bsdf, SCATFUN (app/export/fourier_bsdf_export.h), at the default nodes
-  Rgl,   // the RGL tensor file .rgl.bsdf in its spectral form, for pbrt-v4 and Mitsuba 3 (app/export/rgl_export.h)
+  Merl,       // the MERL BRDF .binary (app/export/merl_brdf.h)
+  Bsdf,       // the tabulated Fourier BSDF .bsdf, SCATFUN (app/export/fourier_bsdf_export.h), at the default nodes
+  Rgl,        // the RGL tensor file .rgl.bsdf in its spectral form, for pbrt-v4 and Mitsuba 3 (app/export/rgl_export.h)
+  Blender,    // a Blender 3.4 script .py building the fitted Principled BSDF (app/export/blender_script.h)
+  MaterialX,  // a MaterialX 1.39 document .mtlx with the fitted OpenPBR Surface (app/export/openpbr_materialx.h)
 };
 
-// The format's name in messages ("MERL", "SCATFUN", "RGL tensor") and its file extension (".binary", ".bsdf",
-// ".rgl.bsdf": both readers take any name, and it keeps the two .bsdf exports of one screenshot apart).
+// The format's name in messages ("MERL", "SCATFUN", "RGL tensor", "Blender script", "MaterialX") and its file
+// extension (".binary", ".bsdf", ".rgl.bsdf": both readers take any name, and it keeps the two .bsdf exports of one
+// screenshot apart; ".py", ".mtlx").
 const char* export_format_name(ExportFormat format);
 const char* export_extension(ExportFormat format);
 

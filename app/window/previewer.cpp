@@ -18,16 +18,20 @@
 #include "app/preview/solve_worker.h"
 #include "app/preview/view_layout.h"
 #include "app/process/heap_retention.h"
+#include "app/process/parallel_for.h"
 #include "app/process/resident_memory.h"
 #include "app/render/environment_preview.h"
 #include "app/render/renderer.h"
 #include "app/render/scene.h"
+#include "app/render/table_textures.h"
+#include "app/solution/fitted_tables.h"
 #include "app/window/background_jobs.h"
 #include "app/window/control_panel.h"
 #include "app/window/file_panel.h"
 #include "app/window/glfw_window.h"
 #include "app/window/help_overlay.h"
 #include "app/window/material_files.h"
+#include "app/window/one_shot_job.h"
 #include "app/window/screenshot.h"
 #include "app/window/shortcuts.h"
 #include "app/window/spread_job.h"
@@ -99,6 +103,7 @@ class Previewer final : private TestActionTarget {
   double frame() {
     bool activity = take_result();
     activity |= jobs_.take_outcomes(state_.material, out_);
+    activity |= take_fit_pin();
     const std::array<int, 2> framebuffer = window_.framebuffer_size();
     if (framebuffer[0] < 1 || framebuffer[1] < 1) return kIdleWaitSeconds;  // minimized: nothing to draw
     update_scene();
@@ -115,10 +120,13 @@ class Previewer final : private TestActionTarget {
     activity |= view_overlays(overlay, edited.light, edited.comparison);
     const PanelActions panel = control_panel(layout.panel, edited, panel_status(), file_section_input());
     if (panel.pin) pin_shown(edited);
+    if (panel.pin_fit) start_fit_pin(*panel.pin_fit);
     if (panel.unpin) unpin(edited);
     if (panel.export_bsdf) export_shown(ExportFormat::Bsdf);
     if (panel.export_merl) export_shown(ExportFormat::Merl);
     if (panel.export_rgl) export_shown(ExportFormat::Rgl);
+    if (panel.export_blender) export_shown(ExportFormat::Blender);
+    if (panel.export_mtlx) export_shown(ExportFormat::MaterialX);
     if (panel.match_srgb) jobs_.start_match(edited.material, *panel.match_srgb);
     // What the panel, the keys, drops, dialogs and the test script ask of this frame, in that order.
     ActionRequests requests{panel.save_screenshot, panel.reset_material, panel.file.undo, panel.file.redo, false, {}};
@@ -135,7 +143,8 @@ class Previewer final : private TestActionTarget {
     if (const FileCommand confirmed = file_dialogs(files_.dialog()); confirmed.kind != FileCommand::Kind::None) {
       requests.file_commands.push_back(confirmed);
     }
-    script_.step(TestActionReadiness{shown_ && !solving() && !jobs_.matching(), resting_, files_.dialog().kind},
+    script_.step(TestActionReadiness{shown_ && !solving() && !jobs_.matching() && !fit_job_.running(), resting_,
+                                     files_.dialog().kind},
                  *this, requests);
     if (requests.quit) window_.request_close();
     for (const FileCommand& command : requests.file_commands) run_file_command(command);
@@ -181,7 +190,9 @@ class Previewer final : private TestActionTarget {
   void rest_if_idle(bool activity) {
     quiet_frames_ = activity ? 0 : quiet_frames_ + 1;
     if (activity) resting_ = false;
-    if (resting_ || quiet_frames_ < kEagerFrames || worker_.settling() || jobs_.running()) return;
+    if (resting_ || quiet_frames_ < kEagerFrames || worker_.settling() || jobs_.running() || fit_job_.running()) {
+      return;
+    }
     release_freed_heap_memory();
     resting_ = true;
   }
@@ -285,17 +296,20 @@ class Previewer final : private TestActionTarget {
   }
 
   PanelStatus panel_status() const {
-    return PanelStatus{shown_ ? &*shown_ : nullptr,
-                       solving(),
-                       error_,
-                       jobs_.last_export(),
-                       jobs_.export_progress(),
-                       imgui_.unicode_labels(),
-                       environment_.samples(),
-                       environment_error_,
-                       jobs_.matching(),
-                       jobs_.match_outcome(),
-                       spread_status()};
+    return PanelStatus{
+        shown_ ? &*shown_ : nullptr,
+        solving(),
+        error_,
+        jobs_.last_export(),
+        jobs_.export_progress(),
+        imgui_.unicode_labels(),
+        environment_.samples(),
+        environment_error_,
+        jobs_.matching(),
+        jobs_.match_outcome(),
+        spread_status(),
+        fit_job_.running() ? std::string(imgui_.unicode_labels() ? "fitting…" : "fitting...") : fit_summary_,
+        fit_job_.running()};
   }
 
   // The scene of the shown result under the current light and view; the lobe scale (a CPU pass over the BSDF) is
@@ -336,6 +350,7 @@ class Previewer final : private TestActionTarget {
   void pin_shown(PreviewState& state) {
     if (!shown_ || shown_->preview) return;
     state.comparison.pinned = shown_->request.material;
+    state.comparison.label = "B (pinned)";
     pinned_tables_ = shown_->tables();
     TableTextureData copy = renderer_.table_data(static_cast<int>(shown_->request.material.model));
     renderer_.upload(std::move(copy), Renderer::kPinnedSlot);
@@ -343,6 +358,38 @@ class Previewer final : private TestActionTarget {
     environment_pinned_.reset();
     pinned_theta_ = -1.0;
   }
+  // The shown material's fit for B, on a thread of its own (a second or two); pinned when it ends.
+  void start_fit_pin(ShaderTarget target) {
+    if (!shown_ || shown_->preview) return;
+    fit_job_.start([tables = shown_->tables(), target]() -> FitPinOutcome {
+      try {
+        return {fitted_tables(tables, target, parallel_for_threads), target, ""};
+      } catch (const std::exception& error) {
+        return {std::nullopt, target, error.what()};
+      }
+    });
+  }
+  bool take_fit_pin() {
+    std::optional<FitPinOutcome> outcome = fit_job_.take_outcome();
+    if (!outcome) return false;
+    if (!outcome->fitted) {
+      fit_summary_ = "fit: " + outcome->error;
+      out_ << fit_summary_ << "\n" << std::flush;
+      return true;
+    }
+    fit_summary_ = outcome->fitted->summary;
+    const char* label = outcome->target == ShaderTarget::Principled ? "B (Principled fit)" : "B (OpenPBR fit)";
+    state_.comparison.pinned = outcome->fitted->tables.material;
+    state_.comparison.label = label;
+    pinned_tables_ = std::move(outcome->fitted->tables);
+    renderer_.upload(make_table_textures(*pinned_tables_), Renderer::kPinnedSlot);
+    ++pin_generation_;
+    environment_pinned_.reset();
+    pinned_theta_ = -1.0;
+    out_ << "pinned " << label << ": " << fit_summary_ << "\n" << std::flush;
+    return true;
+  }
+
   void unpin(PreviewState& state) {
     state.comparison.pinned.reset();
     pinned_tables_.reset();
@@ -480,6 +527,7 @@ class Previewer final : private TestActionTarget {
          << std::flush;
   }
   void pin() override { pin_shown(state_); }
+  void pin_fit(ShaderTarget target) override { start_fit_pin(target); }
   void unpin() override { unpin(state_); }
 
   // The material of the picture on screen (the shown result's; the sliders may be ahead of it).
@@ -539,6 +587,13 @@ class Previewer final : private TestActionTarget {
   EnvironmentPreview environment_;
   EnvironmentPreview environment_pinned_;     // B's estimate in the A/B comparison
   std::optional<ColorTables> pinned_tables_;  // B's tables (its textures are in Renderer::kPinnedSlot)
+  struct FitPinOutcome {
+    std::optional<FittedTables> fitted;
+    ShaderTarget target;
+    std::string error;
+  };
+  OneShotJob<FitPinOutcome> fit_job_;         // the fit for B (B: Principled fit, B: OpenPBR fit)
+  std::string fit_summary_;                   // the last fit's summary or error, for the panel
   std::uint64_t pin_generation_ = 0;          // counts pins: B's estimate restarts with each
   LobeView pinned_lobes_;                     // B's lobes, drawn as an outline in A's scale
   double pinned_theta_ = -1.0;                // the light angle pinned_lobes_ was made for

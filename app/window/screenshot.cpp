@@ -24,6 +24,7 @@ nlohmann::ordered_json drawing_settings(const PreviewState& state, bool comparin
   if (!state.lighting.environment.empty()) settings["environment"] = state.lighting.environment;
   if (comparing) {  // the A/B comparison's pinned material, as a material file
     settings["pinned"] = material_json(material_document(*state.comparison.pinned));
+    settings["pinned_label"] = state.comparison.label;  // a fit's B: the material with eta 1, the fit in its tables
     settings["split"] = state.comparison.split;
   }
   return settings;

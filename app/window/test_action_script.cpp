@@ -51,6 +51,10 @@ void TestActionScript::step(const TestActionReadiness& ready, TestActionTarget& 
     target.start_export(ExportFormat::Bsdf, argument);
   } else if (verb == "export-rgl") {
     target.start_export(ExportFormat::Rgl, argument);
+  } else if (verb == "export-blender") {
+    target.start_export(ExportFormat::Blender, argument);
+  } else if (verb == "export-mtlx") {
+    target.start_export(ExportFormat::MaterialX, argument);
   } else if (verb == "match") {
     const std::vector<std::string_view> channels = cli::split_list(argument, ',');
     if (channels.size() != 3) throw std::runtime_error("test action: match needs R,G,B");
@@ -64,6 +68,11 @@ void TestActionScript::step(const TestActionReadiness& ready, TestActionTarget& 
     target.print_memory();
   } else if (verb == "pin") {
     target.pin();
+  } else if (verb == "pin-fit") {
+    if (argument != "principled" && argument != "openpbr") {
+      throw std::runtime_error("test action: pin-fit needs principled or openpbr");
+    }
+    target.pin_fit(argument == "principled" ? ShaderTarget::Principled : ShaderTarget::OpenPbr);
   } else if (verb == "unpin") {
     target.unpin();
   } else if (!apply_scripted_edit(target.state(), verb, argument)) {

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "app/preview/preview_state.h"
+#include "app/solution/fitted_tables.h"
 #include "app/window/export_job.h"
 #include "app/window/file_panel.h"
 #include "app/window/shortcuts.h"
@@ -36,6 +37,7 @@ class TestActionTarget {
   virtual void start_match(const std::array<double, 3>& srgb) = 0;
   virtual void print_memory() = 0;
   virtual void pin() = 0;
+  virtual void pin_fit(ShaderTarget target) = 0;  // B: the shown material's fitted shader
   virtual void unpin() = 0;
 
  protected:

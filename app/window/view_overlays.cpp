@@ -190,7 +190,7 @@ bool view_overlays(const ViewOverlayInput& input, LightState& light, ComparisonS
       const float line = split_line_x(sphere, comparison.split);
       const float y = sphere.y + sphere.height - ImGui::GetTextLineHeight() - 10.0f;
       draw.AddText(ImVec2(line - ImGui::CalcTextSize("A (edited)").x - 8.0f, y), kLabelColor, "A (edited)");
-      draw.AddText(ImVec2(line + 8.0f, y), kLabelColor, "B (pinned)");
+      draw.AddText(ImVec2(line + 8.0f, y), kLabelColor, comparison.label.c_str());
     }
   }
   if (!layout.compare[0].empty()) {  // Stam's last results slide: the same light on three models

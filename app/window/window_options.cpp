@@ -73,9 +73,11 @@ std::string window_usage() {
          "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in [0, 1]\n"
          "  --test-actions LIST  for tests: ';'-separated actions (@FILE: those in FILE, one a line or\n"
          "                       ';'-separated) run once the first solve is shown\n"
-         "                       (set NAME VALUE, undo, redo, drop PATH, save PATH, preset NAME, quit, discard, title,\n"
+         "                       (set NAME VALUE, undo, redo, drop PATH, save PATH, preset NAME, quit, discard, "
+         "title,\n"
          "                       layer add, layer remove|up|down I, export-merl PATH, export-bsdf PATH,\n"
-         "                       export-rgl PATH, lighting env|env-rotate|env-ev|light VALUE, pin, unpin,\n"
+         "                       export-rgl PATH, export-blender PATH, export-mtlx PATH, lighting\n"
+         "                       env|env-rotate|env-ev|light VALUE, pin, pin-fit principled|openpbr, unpin,\n"
          "                       split FRACTION, skin on|off, match R,G,B, drag NAME V1,V2,... (a slider\n"
          "                       dragged, one value a frame), rest (waits until nothing is in flight), memory\n"
          "                       (the resident memory, at rest); with a skin, set KEY VALUE sets a skin slider)\n" +

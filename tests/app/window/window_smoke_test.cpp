@@ -424,6 +424,74 @@ TEST(WindowSmoke, PinningShowsTheEditedAndThePinnedMaterialSideBySide) {
   std::filesystem::remove(alone_png);
 }
 
+// A fitted shader as B (issue 44): "pin-fit openpbr" fits the shown jade and pins the fit, whose tables hold the
+// OpenPBR Surface's BRDF. Right of the split line the sphere is the fit: close to the material (a good fit is within
+// a few percent over most of the sphere), not the same pixels (it is not the material), and the screenshot says which
+// B it shows.
+TEST(WindowSmoke, AFittedShaderAsBSitsBesideTheMaterial) {
+  const std::optional<std::string> xvfb_run = find_in_path("xvfb-run");
+  if (!xvfb_run) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const auto capture = [&](const std::filesystem::path& png, const std::string& actions) {
+    const ProcessResult run =
+        run_process({*xvfb_run, "-a", "-s", "-screen 0 1280x720x24", SKINLAYER_EXECUTABLE, "--capture", png.string(),
+                     "--view", "sphere", "--preset", "jade", "--test-actions", actions});
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    int width = 0, height = 0, channels = 0;
+    std::unique_ptr<unsigned char, void (*)(void*)> pixels(stbi_load(png.c_str(), &width, &height, &channels, 4),
+                                                           stbi_image_free);
+    return std::tuple{std::move(pixels), width, height, run.out};
+  };
+  const std::filesystem::path fit_png = temporary_png("skinlayer-window-fit-b"),
+                              alone_png = temporary_png("skinlayer-window-jade");
+  const auto [fit, width, height, out] = capture(fit_png, "pin-fit openpbr;split 0");
+  const auto [alone, width_alone, height_alone, out_alone] = capture(alone_png, "split 0");
+  ASSERT_NE(fit, nullptr);
+  ASSERT_NE(alone, nullptr);
+  ASSERT_EQ(width, width_alone);
+  EXPECT_NE(out.find("pinned B (OpenPBR fit): OpenPBR fit: lobe RMS"), std::string::npos) << out;
+  // Split at the left edge: the whole sphere is B. Its lit pixels on the middle row against the material's.
+  const std::size_t row = static_cast<std::size_t>(height / 2) * width;
+  int lit = 0, close = 0, different = 0;
+  for (int x = width / 3; x < width; ++x) {
+    const int with_fit = fit.get()[4 * (row + x) + 1], material = alone.get()[4 * (row + x) + 1];
+    if (material < 30) continue;  // the background, or the sphere's unlit side
+    ++lit;
+    if (std::abs(with_fit - material) <= 0.1 * material) ++close;
+    if (with_fit != material) ++different;
+  }
+  std::printf("[ fit as B ] lit %d, within 10%% %d, different %d\n", lit, close, different);
+  EXPECT_GT(lit, 50);
+  EXPECT_GT(close, lit * 7 / 10) << "the fit looks like the material";
+  EXPECT_GT(different, lit / 10) << "and is not the material";
+  std::ifstream file(fit_png, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  EXPECT_NE(bytes.find("B (OpenPBR fit)"), std::string::npos) << "the screenshot's metadata says which B";
+  std::filesystem::remove(fit_png);
+  std::filesystem::remove(alone_png);
+}
+
+// Export Blender and Export MaterialX write the shown material's fits, as `skinlayer export` does.
+TEST(WindowSmoke, ExportBlenderAndMaterialXWriteTheShownMaterialsFits) {
+  if (!find_in_path("xvfb-run")) GTEST_SKIP() << "xvfb-run is not installed (apt-get install xvfb xauth)";
+  const std::filesystem::path dir = temporary_png("skinlayer-window-fits").replace_extension("");
+  std::filesystem::create_directories(dir);
+  Scripted exported = run_scripted(
+      "set g 0.55;export-blender " + (dir / "shown.png").string() + ";rest;export-mtlx " + (dir / "shown.png").string(),
+      dir / "config");
+  ASSERT_EQ(exported.run.exit_code, 0) << exported.run.err;
+  // The material rides along: indented JSON in the script, compact JSON in an XML attribute in the MaterialX file.
+  for (const auto& [name, g] : {std::pair{"shown.py", "\"g\": 0.55"}, std::pair{"shown.mtlx", "&quot;g&quot;:0.55"}}) {
+    const std::filesystem::path written = dir / name;
+    ASSERT_TRUE(std::filesystem::exists(written)) << exported.run.out;
+    std::ifstream in(written);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find(g), std::string::npos) << name << " carries the shown material";
+  }
+  EXPECT_NE(exported.run.out.find("(Blender script, "), std::string::npos) << exported.run.out;
+  EXPECT_NE(exported.run.out.find("(MaterialX, "), std::string::npos) << exported.run.out;
+  std::filesystem::remove_all(dir);
+}
+
 // Quitting with unsaved changes asks first: the window is still there (it prints its title) until the changes are
 // discarded, and then it closes by itself.
 TEST(WindowSmoke, QuittingWithUnsavedChangesAsksFirst) {
