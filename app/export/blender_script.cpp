@@ -36,6 +36,7 @@ std::string principled_inputs(const PrincipledParameters& p) {
       << number(p.subsurface_color(2)) << ", 1.0),\n"
       << "    \"Subsurface Radius\": (" << number(p.subsurface_radius(0)) << ", " << number(p.subsurface_radius(1))
       << ", " << number(p.subsurface_radius(2)) << "),\n"
+      << "    \"Subsurface Anisotropy\": " << number(p.subsurface_anisotropy) << ",\n"
       << "    \"Metallic\": " << number(p.metallic) << ",\n"
       << "    \"Specular\": " << number(p.specular) << ",\n"
       << "    \"Specular Tint\": " << number(p.specular_tint) << ",\n"

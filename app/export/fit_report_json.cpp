@@ -43,6 +43,7 @@ nlohmann::ordered_json principled_fit_json(const DocumentFit<PrincipledFit>& fit
   parameters["subsurface"] = p.subsurface;
   parameters["subsurface_color"] = channels(p.subsurface_color);
   parameters["subsurface_radius"] = channels(p.subsurface_radius);
+  parameters["subsurface_anisotropy"] = p.subsurface_anisotropy;
   return report("principled", "Blender 3.4 (Cycles), Principled BSDF, distribution GGX", parameters, fit.radius_source,
                 fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
 }
@@ -62,6 +63,7 @@ nlohmann::ordered_json openpbr_fit_json(const DocumentFit<OpenPbrFit>& fit) {
   parameters["subsurface_color"] = channels(p.subsurface_color);
   parameters["subsurface_radius"] = p.subsurface_radius;
   parameters["subsurface_radius_scale"] = channels(p.subsurface_radius_scale);
+  parameters["subsurface_scatter_anisotropy"] = p.subsurface_scatter_anisotropy;
   parameters["fuzz_weight"] = p.fuzz_weight;
   parameters["fuzz_color"] = channels(p.fuzz_color);
   parameters["fuzz_roughness"] = p.fuzz_roughness;

@@ -71,6 +71,7 @@ std::string openpbr_materialx(const MaterialDocument& document, const DocumentFi
   radius.append_attribute("unittype") = "distance";
   radius.append_attribute("unit") = "millimeter";
   input(shader, "subsurface_radius_scale", "color3", color(p.subsurface_radius_scale));
+  input(shader, "subsurface_scatter_anisotropy", "float", number(p.subsurface_scatter_anisotropy));
   input(shader, "fuzz_weight", "float", number(p.fuzz_weight));
   input(shader, "fuzz_color", "color3", color(p.fuzz_color));
   input(shader, "fuzz_roughness", "float", number(p.fuzz_roughness));

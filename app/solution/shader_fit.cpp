@@ -1,5 +1,6 @@
 #include "app/solution/shader_fit.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -43,11 +44,16 @@ BrdfFitTarget brdf_fit_target(const MaterialDocument& document, const ParallelFo
 
 DocumentFit<PrincipledFit> fit_principled(const MaterialDocument& document, const ParallelFor& parallel_for) {
   DocumentFit<PrincipledFit> result{fit_principled(brdf_fit_target(document, parallel_for)), ""};
-  const SubsurfaceRadius radius = subsurface_radius(document);
-  result.radius_source = radius.source;
+  const SubsurfaceScattering scattering = subsurface_scattering(document);
+  result.radius_source = scattering.source;
   PrincipledParameters& p = result.fit.parameters;
   p.subsurface_color = p.base_color;
-  if (radius.millimetres) p.subsurface_radius = *radius.millimetres / 1000.0;
+  if (scattering.mean_free_path_mm) {
+    // One anisotropy for the three channels (the node's input is a number), within Cycles' clamp; the radius is
+    // then the reduced mean free path that gives the material's extinction, in metres.
+    p.subsurface_anisotropy = std::clamp(scattering.anisotropy.mean(), 0.0, 0.9);
+    p.subsurface_radius = *scattering.mean_free_path_mm / (1.0 - p.subsurface_anisotropy) / 1000.0;
+  }
   return result;
 }
 
@@ -66,14 +72,15 @@ OpenPbrFitSettings openpbr_fit_settings(const MaterialDocument& document) {
 }
 
 DocumentFit<OpenPbrFit> fit_openpbr(const MaterialDocument& document, const ParallelFor& parallel_for) {
-  const SubsurfaceRadius radius = subsurface_radius(document);
+  const SubsurfaceScattering scattering = subsurface_scattering(document);
   OpenPbrFitSettings settings = openpbr_fit_settings(document);
-  settings.subsurface_weight = radius.millimetres ? 1.0 : 0.0;
-  DocumentFit<OpenPbrFit> result{fit_openpbr(brdf_fit_target(document, parallel_for), settings), radius.source};
-  if (radius.millimetres) {
+  settings.subsurface_weight = scattering.mean_free_path_mm ? 1.0 : 0.0;
+  DocumentFit<OpenPbrFit> result{fit_openpbr(brdf_fit_target(document, parallel_for), settings), scattering.source};
+  if (scattering.mean_free_path_mm) {
     OpenPbrParameters& p = result.fit.parameters;
-    p.subsurface_radius = radius.millimetres->maxCoeff();
-    p.subsurface_radius_scale = *radius.millimetres / p.subsurface_radius;
+    p.subsurface_radius = scattering.mean_free_path_mm->maxCoeff();
+    p.subsurface_radius_scale = *scattering.mean_free_path_mm / p.subsurface_radius;
+    p.subsurface_scatter_anisotropy = std::clamp(scattering.anisotropy.mean(), -1.0, 1.0);
   }
   return result;
 }

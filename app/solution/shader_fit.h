@@ -1,6 +1,6 @@
 // A material document fitted with a renderer's shader (docs/model.md §22.2, §22.4): the samples of its BRDF that the
 // fits need, taken through the same solve as `skinlayer eval` and `skinlayer albedo`, and the fits, with the
-// subsurface radius the BRDF does not show (app/solution/subsurface_radius.h). One path for `skinlayer fit`,
+// subsurface scattering the BRDF does not show (app/solution/subsurface_radius.h). One path for `skinlayer fit`,
 // `skinlayer export --format blender|mtlx` and the previewer's buttons. The fits are of the layer model (Stam's),
 // whatever model the document names.
 #pragma once
@@ -26,9 +26,11 @@ struct DocumentFit {
   std::string radius_source;
 };
 
-// The Principled fit. Its subsurface colour is the base colour and its radius the material's mean free path in
-// metres (Blender's unit), where the material has one; the subsurface weight stays 0, as fitted (Cycles' random walk
-// at weight 1 renders 2-5% brighter than the fitted BRDF, measured: the artist's choice).
+// The Principled fit. Its subsurface colour is the base colour; where the material has a length, its anisotropy the
+// layer's g (one number, in [0, 0.9]) and its radius the reduced mean free path 1 / ((1 - g) mu_t) in metres
+// (Blender's unit), which Cycles' random walk reads back as the material's extinction. The subsurface weight stays
+// 0, as fitted (the random walk at weight 1 renders 2-5% brighter than the fitted BRDF, measured: the artist's
+// choice).
 DocumentFit<PrincipledFit> fit_principled(const MaterialDocument& document, const ParallelFor& parallel_for);
 
 // The interfaces the OpenPBR fit keeps from the document: without a coat the top's index is specular_ior; a stack
@@ -37,8 +39,8 @@ DocumentFit<PrincipledFit> fit_principled(const MaterialDocument& document, cons
 OpenPbrFitSettings openpbr_fit_settings(const MaterialDocument& document);
 
 // The OpenPBR fit. Where the material has a mean free path, subsurface_weight is 1 (the same BRDF, and translucency
-// in a renderer that scatters under the surface), subsurface_radius its largest channel in millimetres and
-// subsurface_radius_scale the channels over it.
+// in a renderer that scatters under the surface), subsurface_radius its largest channel in millimetres,
+// subsurface_radius_scale the channels over it and subsurface_scatter_anisotropy the layer's g.
 DocumentFit<OpenPbrFit> fit_openpbr(const MaterialDocument& document, const ParallelFor& parallel_for);
 
 }  // namespace skinlayer

@@ -7,31 +7,42 @@
 namespace skinlayer {
 namespace {
 
-// The deepest layer's extinction, 1/mm, where the material gives it.
-std::optional<double> deepest_extinction(const Material& material) {
-  if (material.below.empty()) return material.extinction;
-  return material.below.back().extinction;
+struct Deepest {
+  std::optional<double> extinction;  // 1/mm
+  double g = 0.0;
+};
+
+Deepest deepest_layer(const Material& material) {
+  if (material.below.empty()) return {material.extinction, material.g};
+  return {material.below.back().extinction, material.below.back().g};
 }
 
 }  // namespace
 
-SubsurfaceRadius subsurface_radius(const MaterialDocument& document) {
+SubsurfaceScattering subsurface_scattering(const MaterialDocument& document) {
   const ColorChannels channels = color_channels(document);
-  Eigen::Array3d weighted = Eigen::Array3d::Zero(), weights = Eigen::Array3d::Zero();
+  Eigen::Array3d path = Eigen::Array3d::Zero(), g = Eigen::Array3d::Zero(), weights = Eigen::Array3d::Zero();
+  bool physical = true;
   for (std::size_t k = 0; k < channels.materials.size(); ++k) {
-    const std::optional<double> extinction = deepest_extinction(channels.materials[k]);
-    if (!extinction || !(*extinction > 0.0)) {
-      return {std::nullopt,
-              "none: the material has no physical length (give its deepest layer's extinction mu_t in 1/mm)"};
-    }
+    const Deepest layer = deepest_layer(channels.materials[k]);
+    if (!layer.extinction || !(*layer.extinction > 0.0)) physical = false;
     for (int c = 0; c < 3; ++c) {
       const double w = std::max(0.0, channels.to_rgb(c, static_cast<Eigen::Index>(k)));
-      weighted(c) += w / *extinction;
+      if (physical) path(c) += w / *layer.extinction;
+      g(c) += w * layer.g;
       weights(c) += w;
     }
   }
-  return {weighted / weights, document.skin ? "mean free path 1/mu_t of the dermis, per channel through the spectrum"
-                                            : "mean free path 1/mu_t of the deepest layer"};
+  SubsurfaceScattering result;
+  result.anisotropy = g / weights;
+  if (!physical) {
+    result.source = "none: the material has no physical length (give its deepest layer's extinction mu_t in 1/mm)";
+    return result;
+  }
+  result.mean_free_path_mm = path / weights;
+  result.source = document.skin ? "the dermis's mean free path 1/mu_t and g, per channel through the spectrum"
+                                : "the deepest layer's mean free path 1/mu_t and g";
+  return result;
 }
 
 }  // namespace skinlayer

@@ -31,6 +31,7 @@ void check(const PrincipledParameters& p) {
   unit(p.clearcoat, "clearcoat");
   unit(p.clearcoat_roughness, "clearcoat_roughness");
   unit(p.subsurface, "subsurface");
+  unit(p.subsurface_anisotropy, "subsurface_anisotropy");
   for (int c = 0; c < 3; ++c) {
     unit(p.subsurface_color(c), "subsurface_color");
     if (!(p.subsurface_radius(c) >= 0.0) || !std::isfinite(p.subsurface_radius(c))) {

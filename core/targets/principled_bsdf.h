@@ -50,6 +50,7 @@ struct PrincipledParameters {
   double subsurface = 0.0;
   Rgb subsurface_color = Rgb(0.8, 0.8, 0.8);
   Rgb subsurface_radius = Rgb(1.0, 0.2, 0.1);  // scene units (Blender's: metres); no part of the BRDF
+  double subsurface_anisotropy = 0.0;          // the walk's Henyey-Greenstein g; no part of the BRDF
   double anisotropic = 0.0;                    // must be 0 for now
 };
 

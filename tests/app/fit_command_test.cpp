@@ -124,6 +124,21 @@ TEST(FitCommand, TheOpenPbrFitKeepsTheMaterialsAlbedoAndInterfaces) {
   EXPECT_LT(s.at("subsurface_radius").get<double>(), 0.5);
   EXPECT_EQ(s.at("subsurface_color"), s.at("base_color"));
   EXPECT_NE(skin_json.at("subsurface_radius_source").get<std::string>().find("dermis"), std::string::npos);
+  EXPECT_GT(s.at("subsurface_scatter_anisotropy").get<double>(), 0.5);  // the dermis scatters forward
+
+  // Blender's random walk reads its radius as the reduced mean free path 1/((1 - g) mu_t), in metres: the same
+  // extinction as OpenPBR's mean free path.
+  const ProcessResult blender = fit({"--target", "principled", "--preset", "skin-fair"});
+  ASSERT_EQ(blender.exit_code, 0) << blender.err;
+  const nlohmann::json principled = nlohmann::json::parse(blender.out).at("parameters");
+  const double g = principled.at("subsurface_anisotropy");
+  EXPECT_NEAR(g, s.at("subsurface_scatter_anisotropy").get<double>(), 1e-12);
+  const double mm = s.at("subsurface_radius").get<double>();
+  for (int channel = 0; channel < 3; ++channel) {
+    const double openpbr_mm = mm * s.at("subsurface_radius_scale").at(channel).get<double>();
+    EXPECT_NEAR(principled.at("subsurface_radius").at(channel).get<double>() * 1000.0 * (1.0 - g), openpbr_mm,
+                1e-9 * openpbr_mm);
+  }
 }
 
 }  // namespace
