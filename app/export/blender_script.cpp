@@ -46,7 +46,9 @@ std::string principled_inputs(const PrincipledParameters& p) {
       << "    \"Sheen Tint\": " << number(p.sheen_tint) << ",\n"
       << "    \"Clearcoat\": " << number(p.clearcoat) << ",\n"
       << "    \"Clearcoat Roughness\": " << number(p.clearcoat_roughness) << ",\n"
+      << "    \"IOR\": " << number(p.ior) << ",\n"
       << "    \"Transmission\": " << number(p.transmission) << ",\n"
+      << "    \"Transmission Roughness\": " << number(p.transmission_roughness) << ",\n"
       << "}\n";
   return out.str();
 }

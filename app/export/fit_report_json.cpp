@@ -39,7 +39,9 @@ nlohmann::ordered_json principled_fit_json(const DocumentFit<PrincipledFit>& fit
   parameters["sheen_tint"] = p.sheen_tint;
   parameters["clearcoat"] = p.clearcoat;
   parameters["clearcoat_roughness"] = p.clearcoat_roughness;
+  parameters["ior"] = p.ior;
   parameters["transmission"] = p.transmission;
+  parameters["transmission_roughness"] = p.transmission_roughness;
   parameters["subsurface"] = p.subsurface;
   parameters["subsurface_color"] = channels(p.subsurface_color);
   parameters["subsurface_radius"] = channels(p.subsurface_radius);

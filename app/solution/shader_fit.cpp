@@ -47,6 +47,7 @@ DocumentFit<PrincipledFit> fit_principled(const MaterialDocument& document, cons
   const SubsurfaceScattering scattering = subsurface_scattering(document);
   result.radius_source = scattering.source;
   PrincipledParameters& p = result.fit.parameters;
+  p.ior = document.layer.eta;  // for transmission, which the fit leaves at 0: the layer's own index if raised
   p.subsurface_color = p.base_color;
   if (scattering.mean_free_path_mm) {
     // One anisotropy for the three channels (the node's input is a number), within Cycles' clamp; the radius is

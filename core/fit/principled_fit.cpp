@@ -33,7 +33,7 @@ PrincipledParameters with_shape(const Eigen::VectorXd& x) {
 Rgb solve_base_color(PrincipledParameters& p, const Rgb& target) {
   p.base_color = Rgb::Ones();
   const PrincipledLobes albedos = principled_lobe_albedos(p, Vec3::UnitZ());
-  const Rgb rest = albedos.sheen + albedos.specular + albedos.clearcoat;
+  const Rgb rest = albedos.sum() - albedos.diffuse;
   const Rgb exact = (target - rest) / albedos.diffuse;
   p.base_color = exact.max(0.0).min(1.0);
   return albedos.diffuse * p.base_color + rest - target;

@@ -38,9 +38,10 @@ void check(const PrincipledParameters& p) {
       throw ParameterError("principled: subsurface_radius must be >= 0");
     }
   }
-  if (p.transmission != 0.0 || p.anisotropic != 0.0) {
-    throw ParameterError("principled: transmission and anisotropic are not built yet (give 0)");
-  }
+  unit(p.transmission, "transmission");
+  unit(p.transmission_roughness, "transmission_roughness");
+  if (!(p.ior > 0.0) || !std::isfinite(p.ior)) throw ParameterError("principled: ior must be > 0");
+  if (p.anisotropic != 0.0) throw ParameterError("principled: anisotropic is not built yet (give 0)");
 }
 
 double schlick_weight(double cosine) { return std::pow(std::clamp(1.0 - cosine, 0.0, 1.0), 5); }
@@ -75,7 +76,8 @@ PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, 
   if (!(cos_i > 0.0 && cos_o > 0.0)) return lobes;
   const Vec3 h = (omega_i + omega_o).normalized();
   const double cos_h = h.z(), cos_ih = omega_i.dot(h);
-  const double diffuse_weight = 1.0 - p.metallic, specular_weight = 1.0;  // transmission is 0
+  const double glass_weight = p.transmission * (1.0 - p.metallic);
+  const double diffuse_weight = (1.0 - p.metallic) * (1.0 - p.transmission), specular_weight = 1.0 - glass_weight;
 
   const double F_i = schlick_weight(cos_i), F_o = schlick_weight(cos_o);
   const double retro = p.roughness * (omega_i.dot(omega_o) + 1.0);
@@ -98,6 +100,14 @@ PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, 
     const double G = ggx_masking(cos_i, alpha) * ggx_masking(cos_o, alpha);
     lobes.specular =
         specular_weight * fresnel_blend(cos_ih, eta, c0) * G * ggx_distribution(cos_h, alpha) / (4.0 * cos_o);
+  }
+
+  if (glass_weight > 0.0) {
+    const double alpha = p.roughness * p.roughness;
+    const Rgb c0 = p.base_color * p.specular_tint + (1.0 - p.specular_tint);
+    const double G = ggx_masking(cos_i, alpha) * ggx_masking(cos_o, alpha);
+    lobes.glass = glass_weight * fresnel_dielectric(cos_o, p.ior) * fresnel_blend(cos_ih, p.ior, c0) * G *
+                  ggx_distribution(cos_h, alpha) / (4.0 * cos_o);
   }
 
   if (p.clearcoat > 0.0) {
@@ -126,12 +136,22 @@ PrincipledLobes principled_lobe_albedos(const PrincipledParameters& p, const Vec
   // The microfacet lobes over their half vectors (ggx_lobe.h): GTR1's tail, 1 / tan^2, is heavier than GGX's, and
   // its nodes spread over sqrt(alpha), the clearcoat roughness.
   const double floor = 1e-3;  // the nodes' least width; the lobes themselves are exact at any roughness
-  albedos.specular = microfacet_lobe_albedo(
-      [&](const Vec3& omega_o) { return principled_lobes_cosine_weighted(p, omega_o, omega_i).specular; }, omega_i,
-      std::max(floor, p.roughness * p.roughness), polar);
-  albedos.clearcoat = microfacet_lobe_albedo(
-      [&](const Vec3& omega_o) { return principled_lobes_cosine_weighted(p, omega_o, omega_i).clearcoat; }, omega_i,
-      std::max(floor, p.clearcoat_roughness), polar);
+  // (A lobe of weight 0 is skipped: the fit's colour solve asks for these albedos at every step.)
+  if (p.specular > 0.0 || p.metallic > 0.0) {
+    albedos.specular = microfacet_lobe_albedo(
+        [&](const Vec3& omega_o) { return principled_lobes_cosine_weighted(p, omega_o, omega_i).specular; }, omega_i,
+        std::max(floor, p.roughness * p.roughness), polar);
+  }
+  if (p.transmission > 0.0 && p.metallic < 1.0) {
+    albedos.glass = microfacet_lobe_albedo(
+        [&](const Vec3& omega_o) { return principled_lobes_cosine_weighted(p, omega_o, omega_i).glass; }, omega_i,
+        std::max(floor, p.roughness * p.roughness), polar);
+  }
+  if (p.clearcoat > 0.0) {
+    albedos.clearcoat = microfacet_lobe_albedo(
+        [&](const Vec3& omega_o) { return principled_lobes_cosine_weighted(p, omega_o, omega_i).clearcoat; }, omega_i,
+        std::max(floor, p.clearcoat_roughness), polar);
+  }
   return albedos;
 }
 
@@ -141,6 +161,21 @@ Rgb principled_albedo(const PrincipledParameters& p, const Vec3& omega_i, int po
 
 Rgb principled_brdf_cosine_weighted(const PrincipledParameters& p, const Vec3& omega_i, const Vec3& omega_o) {
   return principled_lobes_cosine_weighted(p, omega_i, omega_o).sum();
+}
+
+Rgb principled_btdf_cosine_weighted(const PrincipledParameters& p, const Vec3& omega_i, const Vec3& omega_o) {
+  check(p);
+  const double cos_i = omega_i.z(), cos_o = omega_o.z();
+  const double glass_weight = p.transmission * (1.0 - p.metallic);
+  if (!(cos_i < 0.0 && cos_o > 0.0) || glass_weight == 0.0) return Rgb::Zero();
+  const double r = 1.0 - (1.0 - p.roughness) * (1.0 - p.transmission_roughness), alpha = r * r;
+  const Vec3 ht = -(p.ior * omega_i + omega_o);
+  const Vec3 h = ht.normalized();
+  const double cos_hi = h.dot(omega_i), cos_ho = h.dot(omega_o);
+  const double G = ggx_masking(std::abs(cos_i), alpha) * ggx_masking(cos_o, alpha);
+  const double btdf = G * std::abs(cos_hi * cos_ho) * ggx_distribution(std::abs(h.z()), alpha) * p.ior * p.ior /
+                      (cos_o * ht.squaredNorm());
+  return glass_weight * std::max(1e-4, 1.0 - fresnel_dielectric(cos_o, p.ior)) * p.base_color * btdf;
 }
 
 Rgb principled_brdf(const PrincipledParameters& p, const Vec3& omega_i, const Vec3& omega_o) {

@@ -24,7 +24,11 @@
 // (1 - F_i/2) cos_i / pi, keeps the retro-reflection as a closure of its own, and sets the walk's albedo so that a
 // flat half-space reflects the colour (svm/closure.h, closure/bssrdf.h). Its radius does not enter the BRDF.
 // Measured in Blender 3.4's random walk, a sphere of radius 500 mean free paths renders 2-5% brighter than this.
-// Transmission and anisotropy are not here yet: their parameters must be 0.
+// Transmission t (with w_t = t (1 - metallic)) is Cycles' single-scattering glass (svm/closure.h): a reflection
+//   glass      w_t F_ior(cos_o) F_c(omega_i.h) G1(omega_i) G1(omega_o) D(h) / (4 cos_o),  GGX, alpha = r^2,
+// with F_c the Fresnel blend toward white from c0 = C tint + (1 - tint) (the specular tint), weighted by the
+// dielectric Fresnel of the node's IOR at the view's angle (so the BRDF is no longer reciprocal); and a refraction,
+// the BTDF below (principled_btdf_cosine_weighted). Anisotropy is not here yet: it must be 0.
 #pragma once
 
 #include <Eigen/Core>
@@ -46,7 +50,9 @@ struct PrincipledParameters {
   double sheen_tint = 0.5;
   double clearcoat = 0.0;
   double clearcoat_roughness = 0.03;
-  double transmission = 0.0;  // must be 0 for now
+  double ior = 1.45;  // the glass's index (transmission only)
+  double transmission = 0.0;
+  double transmission_roughness = 0.0;
   double subsurface = 0.0;
   Rgb subsurface_color = Rgb(0.8, 0.8, 0.8);
   Rgb subsurface_radius = Rgb(1.0, 0.2, 0.1);  // scene units (Blender's: metres); no part of the BRDF
@@ -58,13 +64,15 @@ struct PrincipledParameters {
 // cosine: dimensionless per steradian). omega_i and omega_o are unit vectors; either below the surface gives 0.
 struct PrincipledLobes {
   Rgb diffuse = Rgb::Zero(), sheen = Rgb::Zero(), specular = Rgb::Zero(), clearcoat = Rgb::Zero();
-  Rgb sum() const { return diffuse + sheen + specular + clearcoat; }
+  Rgb glass = Rgb::Zero();  // the transmission's reflection
+  Rgb sum() const { return diffuse + sheen + specular + clearcoat + glass; }
 };
 PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& parameters, const Vec3& omega_i,
                                                  const Vec3& omega_o);
 
-// The directional albedo of each lobe for light from omega_i, int f cos(theta_o) d omega_o (by reciprocity the
-// cosine-weighted lobe with the two directions swapped, integrated over omega_o); and their sum, the BRDF's. The
+// The directional albedo of each lobe at the view omega_i: int f(omega, omega_i) cos(theta) d omega, the light sent
+// toward omega_i under a white sky (for the reciprocal lobes also the light reflected from a beam from omega_i);
+// and their sum, the BRDF's. The
 // diffuse and sheen lobes on `polar` Gauss-Legendre cosines times 2 `polar` azimuths of the view; the specular and
 // clearcoat lobes over their half vectors, `polar` nodes following the lobe's width up to the horizon times 2 `polar`
 // azimuths, so that sharp lobes converge as fast as rough ones.
@@ -72,8 +80,15 @@ PrincipledLobes principled_lobe_albedos(const PrincipledParameters& parameters, 
 Rgb principled_albedo(const PrincipledParameters& parameters, const Vec3& omega_i, int polar = 48);
 
 // The whole BRDF, f (1/sr, not cosine-weighted), and f cos(theta_i). Throws ParameterError for a parameter outside
-// [0, 1] (the node's ranges; a radius >= 0) or for the parts not built yet (transmission, anisotropy).
+// [0, 1] (the node's ranges; a radius >= 0, an IOR > 0) or for anisotropy, not built yet.
 Rgb principled_brdf(const PrincipledParameters& parameters, const Vec3& omega_i, const Vec3& omega_o);
 Rgb principled_brdf_cosine_weighted(const PrincipledParameters& parameters, const Vec3& omega_i, const Vec3& omega_o);
+
+// The transmission's refraction, as Cycles 3.4 evaluates it for light from omega_i below the surface (z < 0) seen
+// from omega_o above (Walter et al. 2007's GGX BTDF, eq. 21, without its Fresnel factor, which the closure's weight
+// carries): f |cos(theta_i)| = w_t C max(1e-4, 1 - F_ior(cos_o)) G1(omega_i) G1(omega_o) D(h) |omega_i.h| |omega_o.h|
+// ior^2 / (cos_o |ior omega_i + omega_o|^2), h = -(ior omega_i + omega_o) normalized, GGX of roughness
+// 1 - (1 - r)(1 - transmission_roughness). 0 unless omega_i is below and omega_o above.
+Rgb principled_btdf_cosine_weighted(const PrincipledParameters& parameters, const Vec3& omega_i, const Vec3& omega_o);
 
 }  // namespace skinlayer

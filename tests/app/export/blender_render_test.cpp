@@ -68,6 +68,9 @@ PrincipledParameters parameters_of(const nlohmann::json& fit) {
   parameters.sheen_tint = p.at("sheen_tint");
   parameters.clearcoat = p.at("clearcoat");
   parameters.clearcoat_roughness = p.at("clearcoat_roughness");
+  parameters.ior = p.at("ior");
+  parameters.transmission = p.at("transmission");
+  parameters.transmission_roughness = p.at("transmission_roughness");
   return parameters;
 }
 

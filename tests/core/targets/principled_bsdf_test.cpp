@@ -8,7 +8,9 @@
 #include <random>
 
 #include "core/conventions.h"
+#include "core/interfaces/fresnel.h"
 #include "core/material.h"
+#include "core/series/quadrature.h"
 
 namespace skinlayer {
 namespace {
@@ -158,14 +160,62 @@ TEST(PrincipledBsdf, SubsurfaceIsTheDiffuseLobeInTheMixedColour) {
   }
 }
 
+// Transmission: the glass reflects the Fresnel of its IOR at the view's angle and refracts the rest. A white,
+// fully transmissive node of roughness 0.3 under a white sky on both sides sends toward the view F (its reflection,
+// within 2%) plus 1 - F (its refraction from below, within 1%): all the light, as Cycles' closures weigh it. The base
+// colour tints the refraction only (tint 0), and the diffuse lobe gives way as transmission rises.
+TEST(PrincipledBsdf, GlassReflectsItsFresnelAndRefractsTheRest) {
+  PrincipledParameters glass;
+  glass.base_color = Rgb::Ones();
+  glass.transmission = 1.0;
+  glass.roughness = 0.3;
+  glass.ior = 1.45;
+  for (const double theta : {0.0, 0.8}) {
+    const Vec3 view = direction(theta, 0.0);
+    const double fresnel = fresnel_dielectric(std::cos(theta), glass.ior);
+    const PrincipledLobes reflected = principled_lobe_albedos(glass, view);
+    EXPECT_NEAR(reflected.glass(0), fresnel, 0.02 * fresnel) << theta;
+    EXPECT_EQ(reflected.diffuse(0), 0.0);
+    const QuadratureRule mu = gauss_legendre(400, 0.0, 1.0), phi = gauss_legendre(800, 0.0, 2.0 * kPi);
+    double refracted = 0.0;
+    for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
+      for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
+        const Vec3 below = direction(kPi - std::acos(mu.nodes[a]), phi.nodes[b]);
+        refracted += mu.weights[a] * phi.weights[b] * principled_btdf_cosine_weighted(glass, below, view)(0);
+      }
+    }
+    EXPECT_NEAR(refracted, 1.0 - fresnel, 0.01 * (1.0 - fresnel)) << theta;
+    EXPECT_NEAR(reflected.glass(0) + refracted, 1.0, 0.01) << theta;
+  }
+  PrincipledParameters tinted = glass;
+  tinted.base_color = Rgb(0.5, 0.25, 1.0);
+  const Vec3 below = direction(2.8, 0.3), view = direction(0.2, 0.0);
+  const Rgb white = principled_btdf_cosine_weighted(glass, below, view);
+  const Rgb colored = principled_btdf_cosine_weighted(tinted, below, view);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(colored(c), tinted.base_color(c) * white(c), 1e-15);
+  const Vec3 light = direction(0.4, 0.0), mirror = direction(0.4, kPi);
+  EXPECT_EQ(principled_lobes_cosine_weighted(tinted, light, mirror).glass(1),
+            principled_lobes_cosine_weighted(glass, light, mirror).glass(1));
+  PrincipledParameters half = tinted;
+  half.transmission = 0.5;
+  PrincipledParameters opaque = tinted;
+  opaque.transmission = 0.0;
+  EXPECT_NEAR(principled_lobes_cosine_weighted(half, light, view).diffuse(0),
+              0.5 * principled_lobes_cosine_weighted(opaque, light, view).diffuse(0), 1e-15);
+  EXPECT_EQ(principled_btdf_cosine_weighted(glass, view, light).maxCoeff(), 0.0);  // both above: no refraction
+}
+
 TEST(PrincipledBsdf, RefusesWhatItCannotTake) {
   PrincipledParameters p;
   p.roughness = 1.5;
   EXPECT_THROW(principled_brdf(p, Vec3::UnitZ(), Vec3::UnitZ()), ParameterError);
   p.roughness = 0.5;
-  p.transmission = 0.5;
+  p.anisotropic = 0.5;
   EXPECT_THROW(principled_brdf(p, Vec3::UnitZ(), Vec3::UnitZ()), ParameterError);
-  p.transmission = 0.0;
+  p.anisotropic = 0.0;
+  p.ior = 0.0;
+  EXPECT_THROW(principled_brdf(p, Vec3::UnitZ(), Vec3::UnitZ()), ParameterError);
+  p.ior = 1.45;
   p.subsurface_radius(1) = -1.0;
   EXPECT_THROW(principled_brdf(p, Vec3::UnitZ(), Vec3::UnitZ()), ParameterError);
 }
