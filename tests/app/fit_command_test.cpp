@@ -13,6 +13,7 @@
 #include "core/material.h"
 #include "core/solver.h"
 #include "tests/app/error_expectations.h"
+#include "tests/app/principled_report.h"
 #include "tests/app/process_runner.h"
 
 namespace skinlayer::test {
@@ -23,19 +24,6 @@ ProcessResult fit(std::vector<std::string> flags) {
   return run_skinlayer(flags);
 }
 
-PrincipledParameters parameters_of(const nlohmann::json& json) {
-  const nlohmann::json& p = json.at("parameters");
-  PrincipledParameters parameters;
-  for (int c = 0; c < 3; ++c) parameters.base_color(c) = p.at("base_color").at(c).get<double>();
-  parameters.specular = p.at("specular");
-  parameters.roughness = p.at("roughness");
-  parameters.sheen = p.at("sheen");
-  parameters.sheen_tint = p.at("sheen_tint");
-  parameters.clearcoat = p.at("clearcoat");
-  parameters.clearcoat_roughness = p.at("clearcoat_roughness");
-  return parameters;
-}
-
 // A grey layer: the fitted Principled BSDF reflects at normal incidence what the material does (surface and
 // subsurface), and its errors are finite fractions.
 TEST(FitCommand, ThePrincipledFitKeepsTheMaterialsAlbedoAtNormalIncidence) {
@@ -44,7 +32,7 @@ TEST(FitCommand, ThePrincipledFitKeepsTheMaterialsAlbedoAtNormalIncidence) {
   const nlohmann::json json = nlohmann::json::parse(result.out);
   EXPECT_EQ(json.at("target"), "principled");
   EXPECT_TRUE(json.at("albedo_matched_at_normal_incidence").get<bool>());
-  const PrincipledParameters parameters = parameters_of(json);
+  const PrincipledParameters parameters = principled_parameters(json);
   Material m;
   m.albedo = 0.9;
   m.tau = std::numeric_limits<double>::infinity();

@@ -31,6 +31,7 @@
 #include "app/solution/solved_document.h"
 #include "core/conventions.h"
 #include "core/targets/principled_bsdf.h"
+#include "tests/app/principled_report.h"
 #include "tests/app/process_runner.h"
 #include "tests/app/scratch_folder.h"
 
@@ -47,31 +48,13 @@ struct Pixel {
   Rgb rendered;
 };
 
-// The script's fit report, and from it the Principled parameters.
+// The script's fit report (tests/app/principled_report.h reads its Principled parameters).
 nlohmann::json fit_report(const std::string& script) {
   const std::string start = "SKINLAYER_FIT = json.loads(r\"\"\"";
   const std::size_t begin = script.find(start);
   if (begin == std::string::npos) throw std::runtime_error("the script has no SKINLAYER_FIT");
   const std::size_t end = script.find("\"\"\")", begin + start.size());
   return nlohmann::json::parse(script.substr(begin + start.size(), end - begin - start.size()));
-}
-
-PrincipledParameters parameters_of(const nlohmann::json& fit) {
-  const nlohmann::json& p = fit.at("parameters");
-  PrincipledParameters parameters;
-  for (int c = 0; c < 3; ++c) parameters.base_color(c) = p.at("base_color").at(c).get<double>();
-  parameters.metallic = p.at("metallic");
-  parameters.specular = p.at("specular");
-  parameters.specular_tint = p.at("specular_tint");
-  parameters.roughness = p.at("roughness");
-  parameters.sheen = p.at("sheen");
-  parameters.sheen_tint = p.at("sheen_tint");
-  parameters.clearcoat = p.at("clearcoat");
-  parameters.clearcoat_roughness = p.at("clearcoat_roughness");
-  parameters.ior = p.at("ior");
-  parameters.transmission = p.at("transmission");
-  parameters.transmission_roughness = p.at("transmission_roughness");
-  return parameters;
 }
 
 // The pixels on the sphere whose footprint lies inside it, up to 80 degrees from the view.
@@ -210,7 +193,7 @@ double compare(const std::vector<Ring>& ring_list, const char* what) {
 void check_furnace(BlenderRender& test, const std::string& preset) {
   const auto [script, pixels] = test.render(preset, "furnace");
   const nlohmann::json fit = fit_report(script);
-  const PrincipledParameters parameters = parameters_of(fit);
+  const PrincipledParameters parameters = principled_parameters(fit);
   // Both albedos on half-degree steps, interpolated to each pixel's view angle.
   std::vector<double> angles;
   for (int k = 0; k <= 170; ++k) angles.push_back(degrees_to_radians(0.5 * k));
@@ -249,7 +232,7 @@ void check_furnace(BlenderRender& test, const std::string& preset) {
 // Under the sun every pixel is f(l, v) cos_i: skinlayer's Principled within 2% in every ring about the light.
 void check_sun(BlenderRender& test, const std::string& preset) {
   const auto [script, pixels] = test.render(preset, "sun");
-  const PrincipledParameters parameters = parameters_of(fit_report(script));
+  const PrincipledParameters parameters = principled_parameters(fit_report(script));
   std::vector<Rgb> principled;
   std::vector<double> theta_i, theta_o, phi;
   for (const Pixel& pixel : pixels) {
