@@ -10,6 +10,7 @@
 #include "core/material.h"
 #include "core/series/quadrature.h"
 #include "core/targets/eon_diffuse.h"
+#include "core/targets/shader_inputs.h"
 #include "core/targets/zeltner_fuzz.h"
 
 namespace skinlayer {
@@ -18,41 +19,29 @@ namespace {
 double lerp(double a, double b, double t) { return a + (b - a) * t; }
 
 void check(const OpenPbrParameters& p) {
-  const auto in = [](double value, double lo, double hi, const char* name) {
-    if (!(value >= lo && value <= hi)) {
-      throw ParameterError(std::string("openpbr: ") + name + " must be in [" + std::to_string(lo).substr(0, 4) + ", " +
-                           (std::isinf(hi) ? std::string("inf") : std::to_string(hi).substr(0, 4)) + "]");
-    }
-  };
-  const auto unit = [&](double value, const char* name) { in(value, 0.0, 1.0, name); };
-  const auto unit_color = [&](const Rgb& value, const char* name) {
-    for (int c = 0; c < 3; ++c) unit(value(c), name);
-  };
-  const double infinity = std::numeric_limits<double>::infinity();
-  unit(p.base_weight, "base_weight");
-  unit_color(p.base_color, "base_color");
-  unit(p.base_diffuse_roughness, "base_diffuse_roughness");
-  in(p.specular_weight, 0.0, infinity, "specular_weight");
-  unit_color(p.specular_color, "specular_color");
-  unit(p.specular_roughness, "specular_roughness");
-  unit(p.subsurface_weight, "subsurface_weight");
-  unit_color(p.subsurface_color, "subsurface_color");
-  in(p.subsurface_radius, 0.0, infinity, "subsurface_radius");
-  unit_color(p.subsurface_radius_scale, "subsurface_radius_scale");
-  in(p.subsurface_scatter_anisotropy, -1.0, 1.0, "subsurface_scatter_anisotropy");
-  unit(p.fuzz_weight, "fuzz_weight");
-  unit_color(p.fuzz_color, "fuzz_color");
-  unit(p.fuzz_roughness, "fuzz_roughness");
-  unit(p.coat_weight, "coat_weight");
-  unit_color(p.coat_color, "coat_color");
-  unit(p.coat_roughness, "coat_roughness");
-  unit(p.coat_darkening, "coat_darkening");
-  if (!(p.specular_ior > 0.0) || !std::isfinite(p.specular_ior))
-    throw ParameterError("openpbr: specular_ior must be > 0");
-  if (!(p.coat_ior > 0.0) || !std::isfinite(p.coat_ior)) throw ParameterError("openpbr: coat_ior must be > 0");
-  if (p.base_metalness != 0.0 || p.transmission_weight != 0.0) {
-    throw ParameterError("openpbr: base_metalness and transmission_weight are not built yet (give 0)");
-  }
+  const ShaderInputs inputs("openpbr");
+  inputs.unit(p.base_weight, "base_weight");
+  inputs.unit(p.base_color, "base_color");
+  inputs.unit(p.base_diffuse_roughness, "base_diffuse_roughness");
+  inputs.non_negative(p.specular_weight, "specular_weight");
+  inputs.unit(p.specular_color, "specular_color");
+  inputs.unit(p.specular_roughness, "specular_roughness");
+  inputs.positive(p.specular_ior, "specular_ior");
+  inputs.unit(p.subsurface_weight, "subsurface_weight");
+  inputs.unit(p.subsurface_color, "subsurface_color");
+  inputs.non_negative(p.subsurface_radius, "subsurface_radius");
+  inputs.unit(p.subsurface_radius_scale, "subsurface_radius_scale");
+  inputs.in_range(p.subsurface_scatter_anisotropy, -1.0, 1.0, "subsurface_scatter_anisotropy");
+  inputs.unit(p.fuzz_weight, "fuzz_weight");
+  inputs.unit(p.fuzz_color, "fuzz_color");
+  inputs.unit(p.fuzz_roughness, "fuzz_roughness");
+  inputs.unit(p.coat_weight, "coat_weight");
+  inputs.unit(p.coat_color, "coat_color");
+  inputs.unit(p.coat_roughness, "coat_roughness");
+  inputs.positive(p.coat_ior, "coat_ior");
+  inputs.unit(p.coat_darkening, "coat_darkening");
+  inputs.not_built(p.base_metalness, "base_metalness");
+  inputs.not_built(p.transmission_weight, "transmission_weight");
 }
 
 double normal_reflectance(double eta) { return (eta - 1.0) * (eta - 1.0) / ((eta + 1.0) * (eta + 1.0)); }

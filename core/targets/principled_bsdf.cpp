@@ -11,37 +11,30 @@
 #include "core/material.h"
 #include "core/series/quadrature.h"
 #include "core/targets/ggx_lobe.h"
+#include "core/targets/shader_inputs.h"
 
 namespace skinlayer {
 namespace {
 
 void check(const PrincipledParameters& p) {
-  const auto unit = [](double value, const char* name) {
-    if (!(value >= 0.0 && value <= 1.0)) {
-      throw ParameterError(std::string("principled: ") + name + " must be in [0, 1]");
-    }
-  };
-  for (int c = 0; c < 3; ++c) unit(p.base_color(c), "base_color");
-  unit(p.metallic, "metallic");
-  unit(p.specular, "specular");
-  unit(p.specular_tint, "specular_tint");
-  unit(p.roughness, "roughness");
-  unit(p.sheen, "sheen");
-  unit(p.sheen_tint, "sheen_tint");
-  unit(p.clearcoat, "clearcoat");
-  unit(p.clearcoat_roughness, "clearcoat_roughness");
-  unit(p.subsurface, "subsurface");
-  unit(p.subsurface_anisotropy, "subsurface_anisotropy");
-  for (int c = 0; c < 3; ++c) {
-    unit(p.subsurface_color(c), "subsurface_color");
-    if (!(p.subsurface_radius(c) >= 0.0) || !std::isfinite(p.subsurface_radius(c))) {
-      throw ParameterError("principled: subsurface_radius must be >= 0");
-    }
-  }
-  unit(p.transmission, "transmission");
-  unit(p.transmission_roughness, "transmission_roughness");
-  if (!(p.ior > 0.0) || !std::isfinite(p.ior)) throw ParameterError("principled: ior must be > 0");
-  if (p.anisotropic != 0.0) throw ParameterError("principled: anisotropic is not built yet (give 0)");
+  const ShaderInputs inputs("principled");
+  inputs.unit(p.base_color, "base_color");
+  inputs.unit(p.metallic, "metallic");
+  inputs.unit(p.specular, "specular");
+  inputs.unit(p.specular_tint, "specular_tint");
+  inputs.unit(p.roughness, "roughness");
+  inputs.unit(p.sheen, "sheen");
+  inputs.unit(p.sheen_tint, "sheen_tint");
+  inputs.unit(p.clearcoat, "clearcoat");
+  inputs.unit(p.clearcoat_roughness, "clearcoat_roughness");
+  inputs.unit(p.subsurface, "subsurface");
+  inputs.unit(p.subsurface_anisotropy, "subsurface_anisotropy");
+  inputs.unit(p.subsurface_color, "subsurface_color");
+  for (int c = 0; c < 3; ++c) inputs.non_negative(p.subsurface_radius(c), "subsurface_radius");
+  inputs.unit(p.transmission, "transmission");
+  inputs.unit(p.transmission_roughness, "transmission_roughness");
+  inputs.positive(p.ior, "ior");
+  inputs.not_built(p.anisotropic, "anisotropic");
 }
 
 double schlick_weight(double cosine) { return std::pow(std::clamp(1.0 - cosine, 0.0, 1.0), 5); }
