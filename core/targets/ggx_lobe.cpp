@@ -28,22 +28,22 @@ double ggx_distribution(double cos_m, double alpha) {
 
 Rgb microfacet_lobe_albedo(const std::function<Rgb(const Vec3& omega_o)>& lobe, const Vec3& omega_i, double width,
                            int polar) {
-  const QuadratureRule phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi);
+  // The polar rule is computed once on [0, 1] and mapped onto each azimuth's [0, v_max] (as integrate_mapped does).
+  const QuadratureRule phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi), unit = gauss_legendre(polar, 0.0, 1.0);
   const double sin_i = std::sqrt(std::max(0.0, 1.0 - omega_i.z() * omega_i.z()));
   const double phi_i = std::atan2(omega_i.y(), omega_i.x());
   Rgb sum = Rgb::Zero();
   for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
     const double theta_max = 0.5 * (0.5 * kPi + std::atan2(sin_i * std::cos(phi.nodes[b] - phi_i), omega_i.z()));
     const double v_max = 2.0 * kInvPi * std::atan(std::tan(theta_max) / width);
-    const QuadratureRule v = gauss_legendre(polar, 0.0, v_max);
-    for (std::size_t a = 0; a < v.nodes.size(); ++a) {
-      const double t = std::tan(0.5 * kPi * v.nodes[a]), theta = std::atan(width * t);
+    for (std::size_t a = 0; a < unit.nodes.size(); ++a) {
+      const double v = v_max * unit.nodes[a], t = std::tan(0.5 * kPi * v), theta = std::atan(width * t);
       const double dtheta_dv = width * 0.5 * kPi * (1.0 + t * t) / (1.0 + width * width * t * t);
       const Vec3 h(std::sin(theta) * std::cos(phi.nodes[b]), std::sin(theta) * std::sin(phi.nodes[b]), std::cos(theta));
       const double cos_ih = omega_i.dot(h);
       if (cos_ih <= 0.0) continue;
       const Vec3 omega_o = 2.0 * cos_ih * h - omega_i;
-      const double w = v.weights[a] * dtheta_dv * std::sin(theta) * phi.weights[b] * 4.0 * cos_ih;
+      const double w = v_max * unit.weights[a] * dtheta_dv * std::sin(theta) * phi.weights[b] * 4.0 * cos_ih;
       sum += w * lobe(omega_o);
     }
   }
