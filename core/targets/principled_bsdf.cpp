@@ -59,11 +59,11 @@ Rgb tint_of(const Rgb& color, const Rgb& luminance_weights) {
   return luminance > 0.0 ? Rgb(color / luminance) : Rgb::Ones();
 }
 
-}  // namespace
+// Which lobes evaluate_lobes computes: the albedos integrate one family at a time.
+enum LobeMask : unsigned { kDiffuseAndSheen = 1u, kSpecular = 2u, kGlass = 4u, kClearcoat = 8u, kAllLobes = 15u };
 
-PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, const Vec3& omega_i,
-                                                 const Vec3& omega_o) {
-  check(p);
+// principled_lobes_cosine_weighted for checked parameters, the lobes outside `mask` left 0.
+PrincipledLobes evaluate_lobes(const PrincipledParameters& p, const Vec3& omega_i, const Vec3& omega_o, unsigned mask) {
   PrincipledLobes lobes;
   const double cos_i = omega_i.z(), cos_o = omega_o.z();
   if (!(cos_i > 0.0 && cos_o > 0.0)) return lobes;
@@ -72,20 +72,22 @@ PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, 
   const double glass_weight = p.transmission * (1.0 - p.metallic);
   const double diffuse_weight = (1.0 - p.metallic) * (1.0 - p.transmission), specular_weight = 1.0 - glass_weight;
 
-  const double F_i = schlick_weight(cos_i), F_o = schlick_weight(cos_o);
-  const double retro = p.roughness * (omega_i.dot(omega_o) + 1.0);
-  const double diffuse =
-      kInvPi * cos_i * ((1.0 - 0.5 * F_o) * (1.0 - 0.5 * F_i) + retro * (F_i + F_o + F_i * F_o * (retro - 1.0)));
-  const Rgb diffuse_color = p.base_color * (1.0 - p.subsurface) + p.subsurface_color * p.subsurface;
-  lobes.diffuse = diffuse_weight * diffuse_color * diffuse;
+  if (mask & kDiffuseAndSheen) {
+    const double F_i = schlick_weight(cos_i), F_o = schlick_weight(cos_o);
+    const double retro = p.roughness * (omega_i.dot(omega_o) + 1.0);
+    const double diffuse =
+        kInvPi * cos_i * ((1.0 - 0.5 * F_o) * (1.0 - 0.5 * F_i) + retro * (F_i + F_o + F_i * F_o * (retro - 1.0)));
+    const Rgb diffuse_color = p.base_color * (1.0 - p.subsurface) + p.subsurface_color * p.subsurface;
+    lobes.diffuse = diffuse_weight * diffuse_color * diffuse;
 
-  if (p.sheen > 0.0) {
-    const Rgb rec709(kRec709Luminance[0], kRec709Luminance[1], kRec709Luminance[2]);
-    const Rgb sheen_color = (1.0 - p.sheen_tint) + tint_of(p.base_color, rec709) * p.sheen_tint;
-    lobes.sheen = diffuse_weight * p.sheen * sheen_color * schlick_weight(cos_ih) * cos_i;
+    if (p.sheen > 0.0) {
+      const Rgb rec709(kRec709Luminance[0], kRec709Luminance[1], kRec709Luminance[2]);
+      const Rgb sheen_color = (1.0 - p.sheen_tint) + tint_of(p.base_color, rec709) * p.sheen_tint;
+      lobes.sheen = diffuse_weight * p.sheen * sheen_color * schlick_weight(cos_ih) * cos_i;
+    }
   }
 
-  if (p.specular > 0.0 || p.metallic > 0.0) {
+  if ((mask & kSpecular) && (p.specular > 0.0 || p.metallic > 0.0)) {
     const double alpha = p.roughness * p.roughness;
     const double eta = 2.0 / (1.0 - std::sqrt(0.08 * p.specular)) - 1.0;
     const Rgb tint = (1.0 - p.specular_tint) + tint_of(p.base_color, Rgb(0.3, 0.6, 0.1)) * p.specular_tint;
@@ -95,7 +97,7 @@ PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, 
         specular_weight * fresnel_blend(cos_ih, eta, c0) * G * ggx_distribution(cos_h, alpha) / (4.0 * cos_o);
   }
 
-  if (glass_weight > 0.0) {
+  if ((mask & kGlass) && glass_weight > 0.0) {
     const double alpha = p.roughness * p.roughness;
     const Rgb c0 = p.base_color * p.specular_tint + (1.0 - p.specular_tint);
     const double G = ggx_masking(cos_i, alpha) * ggx_masking(cos_o, alpha);
@@ -103,7 +105,7 @@ PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, 
                   ggx_distribution(cos_h, alpha) / (4.0 * cos_o);
   }
 
-  if (p.clearcoat > 0.0) {
+  if ((mask & kClearcoat) && p.clearcoat > 0.0) {
     const double alpha = p.clearcoat_roughness * p.clearcoat_roughness;
     const double G = ggx_masking(cos_i, 0.25) * ggx_masking(cos_o, 0.25);
     lobes.clearcoat = 0.25 * p.clearcoat * fresnel_blend(cos_ih, 1.5, Rgb::Constant(0.04)) * G *
@@ -112,7 +114,16 @@ PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, 
   return lobes;
 }
 
+}  // namespace
+
+PrincipledLobes principled_lobes_cosine_weighted(const PrincipledParameters& p, const Vec3& omega_i,
+                                                 const Vec3& omega_o) {
+  check(p);
+  return evaluate_lobes(p, omega_i, omega_o, kAllLobes);
+}
+
 PrincipledLobes principled_lobe_albedos(const PrincipledParameters& p, const Vec3& omega_i, int polar) {
+  check(p);  // once: each lobe below is evaluated for its own albedo alone
   PrincipledLobes albedos;
   // Diffuse and sheen: the view's hemisphere, on Gauss-Legendre cosines and azimuths.
   const QuadratureRule mu = gauss_legendre(polar, 0.0, 1.0), phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi);
@@ -120,7 +131,7 @@ PrincipledLobes principled_lobe_albedos(const PrincipledParameters& p, const Vec
     const double sine = std::sqrt(std::max(0.0, 1.0 - mu.nodes[a] * mu.nodes[a]));
     for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
       const Vec3 omega_o(sine * std::cos(phi.nodes[b]), sine * std::sin(phi.nodes[b]), mu.nodes[a]);
-      const PrincipledLobes lobes = principled_lobes_cosine_weighted(p, omega_o, omega_i);
+      const PrincipledLobes lobes = evaluate_lobes(p, omega_o, omega_i, kDiffuseAndSheen);
       const double w = mu.weights[a] * phi.weights[b];
       albedos.diffuse += w * lobes.diffuse;
       albedos.sheen += w * lobes.sheen;
@@ -132,17 +143,17 @@ PrincipledLobes principled_lobe_albedos(const PrincipledParameters& p, const Vec
   // (A lobe of weight 0 is skipped: the fit's colour solve asks for these albedos at every step.)
   if (p.specular > 0.0 || p.metallic > 0.0) {
     albedos.specular = microfacet_lobe_albedo(
-        [&](const Vec3& omega_o) { return principled_lobes_cosine_weighted(p, omega_o, omega_i).specular; }, omega_i,
+        [&](const Vec3& omega_o) { return evaluate_lobes(p, omega_o, omega_i, kSpecular).specular; }, omega_i,
         std::max(floor, p.roughness * p.roughness), polar);
   }
   if (p.transmission > 0.0 && p.metallic < 1.0) {
-    albedos.glass = microfacet_lobe_albedo(
-        [&](const Vec3& omega_o) { return principled_lobes_cosine_weighted(p, omega_o, omega_i).glass; }, omega_i,
-        std::max(floor, p.roughness * p.roughness), polar);
+    albedos.glass =
+        microfacet_lobe_albedo([&](const Vec3& omega_o) { return evaluate_lobes(p, omega_o, omega_i, kGlass).glass; },
+                               omega_i, std::max(floor, p.roughness * p.roughness), polar);
   }
   if (p.clearcoat > 0.0) {
     albedos.clearcoat = microfacet_lobe_albedo(
-        [&](const Vec3& omega_o) { return principled_lobes_cosine_weighted(p, omega_o, omega_i).clearcoat; }, omega_i,
+        [&](const Vec3& omega_o) { return evaluate_lobes(p, omega_o, omega_i, kClearcoat).clearcoat; }, omega_i,
         std::max(floor, p.clearcoat_roughness), polar);
   }
   return albedos;
