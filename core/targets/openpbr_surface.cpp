@@ -107,24 +107,40 @@ Rgb OpenPbrSurface::darkening(double mu_o, const Rgb& base_albedo) const {
   return 1.0 + (delta - 1.0) * amount;
 }
 
+Rgb OpenPbrSurface::base_albedo_color() const {
+  const OpenPbrParameters& p = parameters_;
+  return p.base_weight * p.base_color * (1.0 - p.subsurface_weight) + p.subsurface_color * p.subsurface_weight;
+}
+
+OpenPbrSurface::LayerShares OpenPbrSurface::layer_shares(double mu_o, const Rgb& base_albedo) const {
+  const OpenPbrParameters& p = parameters_;
+  LayerShares shares;
+  if (p.fuzz_weight > 0.0) {
+    shares.fuzz = p.fuzz_weight * zeltner_fuzz_albedo(mu_o, p.fuzz_roughness);
+    shares.outer = 1.0 - shares.fuzz;
+  }
+  if (p.coat_weight > 0.0) {
+    const double coat_albedo = coat_.albedo(mu_o);
+    shares.coat = p.coat_weight * coat_albedo;
+    shares.under_coat =
+        (1.0 + (p.coat_color * (1.0 - coat_albedo) - 1.0) * p.coat_weight) * darkening(mu_o, base_albedo);
+  }
+  return shares;
+}
+
 OpenPbrLobes OpenPbrSurface::lobes_cosine_weighted(const Vec3& omega_i, const Vec3& omega_o) const {
   const OpenPbrParameters& p = parameters_;
   OpenPbrLobes lobes;
   const double mu_o = omega_o.z();
   if (!(omega_i.z() > 0.0 && mu_o > 0.0)) return lobes;
-  double outer = 1.0;
+  const LayerShares shares = layer_shares(mu_o, base_albedo_color());
   if (p.fuzz_weight > 0.0) {
-    outer = 1.0 - p.fuzz_weight * zeltner_fuzz_albedo(mu_o, p.fuzz_roughness);
     lobes.fuzz = p.fuzz_weight * p.fuzz_color * zeltner_fuzz_cosine_weighted(p.fuzz_roughness, omega_i, omega_o);
   }
-  Rgb under_coat = Rgb::Ones();
   if (p.coat_weight > 0.0) {
-    lobes.coat = Rgb::Constant(outer * p.coat_weight * coat_.cosine_weighted(omega_i, omega_o));
-    const Rgb transmitted = 1.0 + (p.coat_color * (1.0 - coat_.albedo(mu_o)) - 1.0) * p.coat_weight;
-    under_coat = transmitted * darkening(mu_o, p.base_weight * p.base_color * (1.0 - p.subsurface_weight) +
-                                                   p.subsurface_color * p.subsurface_weight);  // E_b
+    lobes.coat = Rgb::Constant(shares.outer * p.coat_weight * coat_.cosine_weighted(omega_i, omega_o));
   }
-  const Rgb base = outer * under_coat;
+  const Rgb base = shares.outer * shares.under_coat;
   lobes.specular = base * p.specular_color * specular_.cosine_weighted(omega_i, omega_o);
   const double sigma = p.base_diffuse_roughness;
   Rgb diffuse = eon_diffuse_cosine_weighted(p.base_weight * p.base_color, sigma, omega_i, omega_o);
@@ -141,18 +157,10 @@ Rgb OpenPbrSurface::brdf_cosine_weighted(const Vec3& omega_i, const Vec3& omega_
 }
 
 Rgb OpenPbrSurface::assembled_albedo(double mu_o, const Rgb& base_albedo, const Rgb& diffuse_albedo) const {
-  const OpenPbrParameters& p = parameters_;
-  double fuzz = 0.0, coat = 0.0;
-  if (p.fuzz_weight > 0.0) fuzz = p.fuzz_weight * zeltner_fuzz_albedo(mu_o, p.fuzz_roughness);
-  Rgb under_coat = Rgb::Ones();
-  if (p.coat_weight > 0.0) {
-    const double coat_albedo = coat_.albedo(mu_o);
-    coat = p.coat_weight * coat_albedo;
-    under_coat = (1.0 + (p.coat_color * (1.0 - coat_albedo) - 1.0) * p.coat_weight) * darkening(mu_o, base_albedo);
-  }
+  const LayerShares shares = layer_shares(mu_o, base_albedo);
   const double specular = specular_.albedo(mu_o);
-  const Rgb base = p.specular_color * specular + (1.0 - specular) * diffuse_albedo;
-  return fuzz * p.fuzz_color + (1.0 - fuzz) * (coat + under_coat * base);
+  const Rgb base = parameters_.specular_color * specular + (1.0 - specular) * diffuse_albedo;
+  return shares.fuzz * parameters_.fuzz_color + shares.outer * (shares.coat + shares.under_coat * base);
 }
 
 Rgb OpenPbrSurface::albedo_with_diffuse_color(double mu_o, const Rgb& diffuse) const {
@@ -163,7 +171,7 @@ Rgb OpenPbrSurface::albedo(double mu_o) const {
   const OpenPbrParameters& p = parameters_;
   const double S = p.subsurface_weight, sigma = p.base_diffuse_roughness;
   const Rgb base_color = p.base_weight * p.base_color;
-  return assembled_albedo(mu_o, base_color * (1.0 - S) + p.subsurface_color * S,
+  return assembled_albedo(mu_o, base_albedo_color(),
                           eon_diffuse_albedo(base_color, sigma, mu_o) * (1.0 - S) +
                               eon_diffuse_albedo(p.subsurface_color, sigma, mu_o) * S);
 }

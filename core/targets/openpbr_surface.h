@@ -89,6 +89,15 @@ class OpenPbrSurface {
   Rgb albedo_with_diffuse_color(double mu_o, const Rgb& diffuse) const;
 
  private:
+  // The layers' shares of the light toward the view: what the fuzz reflects (F E_fuzz) and passes on (outer =
+  // 1 - F E_fuzz), what the coat reflects (C E_coat), and the factor on all under the coat, its transmission
+  // lerp(1, T_c (1 - E_coat), C) times the darkening for a base of albedo E_b.
+  struct LayerShares {
+    double fuzz = 0.0, outer = 1.0, coat = 0.0;
+    Rgb under_coat = Rgb::Ones();
+  };
+  LayerShares layer_shares(double mu_o, const Rgb& base_albedo) const;
+  Rgb base_albedo_color() const;  // E_b = lerp(base_weight base_color, subsurface_color, S)
   Rgb darkening(double mu_o, const Rgb& base_albedo) const;
   // The albedo at the view with E_b = base_albedo and the diffuse lobes' albedo (mixed) given.
   Rgb assembled_albedo(double mu_o, const Rgb& base_albedo, const Rgb& diffuse_albedo) const;
