@@ -83,4 +83,26 @@ FitErrors fit_errors(const BrdfFitTarget& target, const std::function<Rgb(const 
   return errors;
 }
 
+BoundedFit fit_shape(const BrdfFitTarget& target, const std::function<FittedShape(const Eigen::VectorXd&)>& shape,
+                     std::span<const Eigen::VectorXd> starts, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi) {
+  check_fit_target(target);
+  const std::size_t n = target.pairs.size();
+  const auto residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+    const FittedShape fitted = shape(x);
+    r.tail<3>() = kAlbedoMissWeight * fitted.albedo_miss.matrix();
+    for (std::size_t k = 0; k < n; ++k) {
+      const DirectionPair& pair = target.pairs[k];
+      const Rgb difference = fitted.brdf_cosine(pair.omega_i, pair.omega_o) - target.brdf_cosine[k];
+      r.segment<3>(static_cast<Eigen::Index>(3 * k)) = std::sqrt(pair.weight) * difference.matrix();
+    }
+  };
+  const int count = static_cast<int>(3 * n + 3);
+  BoundedFit best;
+  for (const Eigen::VectorXd& start : starts) {
+    BoundedFit fit = fit_in_box(residuals, count, start, lo, hi);
+    if (best.parameters.size() == 0 || fit.norm() < best.norm()) best = std::move(fit);
+  }
+  return best;
+}
+
 }  // namespace skinlayer

@@ -10,8 +10,10 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <span>
 #include <vector>
 
+#include "core/fit/bounded_least_squares.h"
 #include "core/interfaces/microfacet.h"
 
 namespace skinlayer {
@@ -59,5 +61,18 @@ struct FitErrors {
 // (or, for a shader that is not reciprocal, the view) at theta from the normal.
 FitErrors fit_errors(const BrdfFitTarget& target, const std::function<Rgb(const Vec3&, const Vec3&)>& brdf_cosine,
                      const std::function<Rgb(double theta)>& albedo);
+
+// A shader at one vector of its fit's parameters, its colour already solved for the albedo at normal incidence: its
+// f cos(theta_i), and what that albedo misses where no colour in [0, 1] matches it (0 elsewhere).
+struct FittedShape {
+  std::function<Rgb(const Vec3&, const Vec3&)> brdf_cosine;
+  Rgb albedo_miss = Rgb::Zero();
+};
+
+// The least squares both shader fits solve (bounded_least_squares.h): for each pair sqrt(weight) times the fitted
+// f cos less the target's, per channel, then the albedo's miss times kAlbedoMissWeight. Started from each of `starts`
+// (the least squares find the nearest minimum), keeping the fit with the smaller residual.
+BoundedFit fit_shape(const BrdfFitTarget& target, const std::function<FittedShape(const Eigen::VectorXd&)>& shape,
+                     std::span<const Eigen::VectorXd> starts, const Eigen::VectorXd& lo, const Eigen::VectorXd& hi);
 
 }  // namespace skinlayer

@@ -3,8 +3,6 @@
 
 #include <cmath>
 
-#include "core/fit/bounded_least_squares.h"
-
 namespace skinlayer {
 namespace {
 
@@ -58,29 +56,20 @@ OpenPbrSurface solved_surface(const Eigen::VectorXd& x, const OpenPbrFitSettings
 
 OpenPbrFit fit_openpbr(const BrdfFitTarget& target, const OpenPbrFitSettings& settings) {
   check_fit_target(target);
-  const std::size_t n = target.pairs.size();
   const Rgb& at_normal = target.albedo.front();
-  const auto residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+  const auto shape = [&](const Eigen::VectorXd& x) {
     Rgb miss;
     const OpenPbrSurface surface = solved_surface(x, settings, at_normal, miss);
-    r.tail<3>() = kAlbedoMissWeight * miss.matrix();
-    for (std::size_t k = 0; k < n; ++k) {
-      const DirectionPair& pair = target.pairs[k];
-      const Rgb difference = surface.brdf_cosine_weighted(pair.omega_i, pair.omega_o) - target.brdf_cosine[k];
-      r.segment<3>(static_cast<Eigen::Index>(3 * k)) = std::sqrt(pair.weight) * difference.matrix();
-    }
+    return FittedShape{[surface](const Vec3& i, const Vec3& o) { return surface.brdf_cosine_weighted(i, o); }, miss};
   };
   const int fitted = fitted_count(settings);
   Eigen::VectorXd lo = Eigen::VectorXd::Zero(fitted), hi = Eigen::VectorXd::Ones(fitted);
   lo(0) = lo(4) = kMinFittedRoughness;
   if (settings.coat) lo(5) = kMinFittedRoughness;
-  const int count = static_cast<int>(3 * n + 3);
-  // Two starts, a glossy and a matte one, as the least squares find the nearest minimum.
-  const Eigen::VectorXd glossy = (Eigen::VectorXd(6) << 0.4, 1.0, 0.0, 0.0, 0.5, 0.3).finished();
-  const Eigen::VectorXd matte_start = (Eigen::VectorXd(6) << 0.8, 0.5, 0.5, 0.3, 0.5, 0.3).finished();
-  BoundedFit best = fit_in_box(residuals, count, glossy.head(fitted), lo, hi);
-  const BoundedFit matte = fit_in_box(residuals, count, matte_start.head(fitted), lo, hi);
-  if (matte.norm() < best.norm()) best = matte;
+  // A glossy start and a matte one.
+  const Eigen::VectorXd starts[] = {(Eigen::VectorXd(6) << 0.4, 1.0, 0.0, 0.0, 0.5, 0.3).finished().head(fitted),
+                                    (Eigen::VectorXd(6) << 0.8, 0.5, 0.5, 0.3, 0.5, 0.3).finished().head(fitted)};
+  const BoundedFit best = fit_shape(target, shape, starts, lo, hi);
 
   OpenPbrFit fit;
   const OpenPbrSurface surface = solved_surface(best.parameters, settings, at_normal, fit.albedo_miss);

@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "core/conventions.h"
-#include "core/fit/bounded_least_squares.h"
 
 namespace skinlayer {
 namespace {
@@ -43,24 +42,17 @@ Rgb solve_base_color(PrincipledParameters& p, const Rgb& target) {
 
 PrincipledFit fit_principled(const BrdfFitTarget& target) {
   check_fit_target(target);
-  const std::size_t n = target.pairs.size();
-  const auto residuals = [&](const Eigen::VectorXd& x, Eigen::VectorXd& r) {
+  const auto shape = [&](const Eigen::VectorXd& x) {
     PrincipledParameters p = with_shape(x);
-    r.tail<3>() = kAlbedoMissWeight * solve_base_color(p, target.albedo.front()).matrix();
-    for (std::size_t k = 0; k < n; ++k) {
-      const DirectionPair& pair = target.pairs[k];
-      const Rgb difference = principled_brdf_cosine_weighted(p, pair.omega_i, pair.omega_o) - target.brdf_cosine[k];
-      r.segment<3>(static_cast<Eigen::Index>(3 * k)) = std::sqrt(pair.weight) * difference.matrix();
-    }
+    const Rgb miss = solve_base_color(p, target.albedo.front());
+    return FittedShape{[p](const Vec3& i, const Vec3& o) { return principled_brdf_cosine_weighted(p, i, o); }, miss};
   };
   Eigen::VectorXd lo = Eigen::VectorXd::Zero(5), hi = Eigen::VectorXd::Ones(5);
   lo(0) = lo(4) = kMinFittedRoughness;
-  const int count = static_cast<int>(3 * n + 3);
-  // Two starts, a glossy and a matte one, as the least squares find the nearest minimum.
-  BoundedFit best = fit_in_box(residuals, count, (Eigen::VectorXd(5) << 0.5, 0.5, 0.0, 0.0, 0.1).finished(), lo, hi);
-  const BoundedFit matte =
-      fit_in_box(residuals, count, (Eigen::VectorXd(5) << 0.9, 0.2, 0.2, 0.0, 0.1).finished(), lo, hi);
-  if (matte.norm() < best.norm()) best = matte;
+  // A glossy start and a matte one.
+  const Eigen::VectorXd starts[] = {(Eigen::VectorXd(5) << 0.5, 0.5, 0.0, 0.0, 0.1).finished(),
+                                    (Eigen::VectorXd(5) << 0.9, 0.2, 0.2, 0.0, 0.1).finished()};
+  const BoundedFit best = fit_shape(target, shape, starts, lo, hi);
 
   PrincipledFit fit;
   fit.parameters = with_shape(best.parameters);
