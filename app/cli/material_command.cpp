@@ -91,10 +91,8 @@ void write_preset_colors(const std::optional<MicrofacetModel> microfacet, std::o
   for (const PresetInfo& preset : preset_list()) {
     MaterialDocument document = preset_material(preset.name);
     if (microfacet) document.layer.microfacet = *microfacet;
-    const std::vector<std::vector<DirectionalAlbedo>> channels =
-        document_albedo(document, normal, parallel_for_threads);
-    std::array<double, 3> rgb{};
-    for (std::size_t c = 0; c < 3; ++c) rgb[c] = channels[std::min(c, channels.size() - 1)].front().reflectance();
+    const Eigen::Array3d reflectance = document_reflectance_rgb(document, normal, parallel_for_threads).front();
+    const std::array<double, 3> rgb = {reflectance(0), reflectance(1), reflectance(2)};
     out << preset.name << ',' << microfacet_model_name(document.layer.microfacet);
     for (const double value : rgb) out << ',' << format_number(value);
     out << ',' << srgb_hex(rgb) << '\n';

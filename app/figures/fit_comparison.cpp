@@ -50,10 +50,9 @@ FitComparison draw_fit_comparison(const MaterialDocument& document, const Fitted
   const Vec3 view = Vec3::UnitZ(), light = Vec3(-std::sin(kPi / 4), 0.0, std::cos(kPi / 4));
   struct Pixel {
     int x, y;
-    Vec3 light, view;
   };
   std::vector<Pixel> pixels;
-  std::vector<double> theta_i, theta_o, phi;
+  std::vector<Vec3> lights, views;
   for (int y = 0; y < n; ++y) {
     for (int x = 0; x < n; ++x) {
       const double px = (x + 0.5) / n * 2.0 - 1.0, py = 1.0 - (y + 0.5) / n * 2.0;
@@ -62,24 +61,19 @@ FitComparison draw_fit_comparison(const MaterialDocument& document, const Fitted
       const Vec3 normal(px, py, std::sqrt(1.0 - r2));
       const Vec3 l = local(normal, light), v = local(normal, view);
       if (l.z() <= 0.0) continue;
-      pixels.push_back({x, y, l, v});
-      theta_i.push_back(radians_to_degrees(std::acos(std::min(1.0, l.z()))));
-      theta_o.push_back(radians_to_degrees(std::acos(std::min(1.0, v.z()))));
-      phi.push_back(radians_to_degrees(std::atan2(v.y(), v.x()) - std::atan2(l.y(), l.x())));
+      pixels.push_back({x, y});
+      lights.push_back(l);
+      views.push_back(v);
     }
   }
-  const SolvedDocument solved = solve_document(document, SubsurfaceModel::Stam, parallel_for);
-  const std::size_t count = pixels.size(), width = static_cast<std::size_t>(value_channels(solved));
-  std::vector<double> surface(count), subsurface(count * width), brdf(count * width), btdf(count * width);
-  evaluate_pairs(solved, theta_i, theta_o, phi, {surface, subsurface, brdf, btdf}, parallel_for);
-
+  const std::vector<Rgb> brdf =
+      brdf_rgb(solve_document(document, SubsurfaceModel::Stam, parallel_for), lights, views, parallel_for);
+  const std::size_t count = pixels.size();
   std::vector<Rgb> exact(count), fit(count);
   double brightest = 0.0;
   for (std::size_t k = 0; k < count; ++k) {
-    for (int c = 0; c < 3; ++c) {
-      exact[k](c) = kPi * brdf[k * width + (width == 1 ? 0 : static_cast<std::size_t>(c))] * pixels[k].light.z();
-    }
-    fit[k] = kPi * fitted(pixels[k].light, pixels[k].view);
+    exact[k] = kPi * brdf[k] * lights[k].z();
+    fit[k] = kPi * fitted(lights[k], views[k]);
     brightest = std::max(brightest, luminance(exact[k](0), exact[k](1), exact[k](2)));
   }
 

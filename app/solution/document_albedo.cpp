@@ -1,5 +1,6 @@
 #include "app/solution/document_albedo.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -53,6 +54,19 @@ std::vector<std::vector<DirectionalAlbedo>> document_albedo(const MaterialDocume
     for (std::size_t k = 0; k < solved.size(); ++k) at_angle[k] = solved[k][a];
     for (int c = 0; c < 3; ++c)
       rgb[static_cast<std::size_t>(c)].push_back(mixed_albedo(at_angle, channels.to_rgb.row(c)));
+  }
+  return rgb;
+}
+
+std::vector<Eigen::Array3d> document_reflectance_rgb(const MaterialDocument& document,
+                                                     std::span<const double> thetas_radians,
+                                                     const ParallelFor& parallel_for) {
+  const std::vector<std::vector<DirectionalAlbedo>> channels = document_albedo(document, thetas_radians, parallel_for);
+  std::vector<Eigen::Array3d> rgb(thetas_radians.size());
+  for (std::size_t a = 0; a < rgb.size(); ++a) {
+    for (std::size_t c = 0; c < 3; ++c) {
+      rgb[a](static_cast<Eigen::Index>(c)) = channels[std::min(c, channels.size() - 1)][a].reflectance();
+    }
   }
   return rgb;
 }

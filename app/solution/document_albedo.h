@@ -3,6 +3,7 @@
 // Always the layer model's (stam): the comparison models have no albedo solve of their own.
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <span>
 #include <vector>
@@ -27,5 +28,11 @@ std::vector<std::vector<DirectionalAlbedo>> document_albedo(const MaterialDocume
                                                             std::span<const double> thetas_radians,
                                                             const ParallelFor& parallel_for,
                                                             const std::function<bool()>& cancelled = {});
+
+// The directional reflectance (surface and subsurface) at each of theta_i, in red, green and blue (a grey document's
+// one channel in all three): document_albedo's reflectance() per row.
+std::vector<Eigen::Array3d> document_reflectance_rgb(const MaterialDocument& document,
+                                                     std::span<const double> thetas_radians,
+                                                     const ParallelFor& parallel_for);
 
 }  // namespace skinlayer

@@ -161,4 +161,23 @@ void evaluate_pairs(const SolvedDocument& solved, std::span<const double> theta_
   if (stopped.load()) throw SolveCancelled();
 }
 
+std::vector<Eigen::Array3d> brdf_rgb(const SolvedDocument& solved, std::span<const Vec3> light,
+                                     std::span<const Vec3> view, const ParallelFor& parallel_for) {
+  const std::size_t n = light.size(), width = static_cast<std::size_t>(value_channels(solved));
+  std::vector<double> theta_i(n), theta_o(n), phi(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    theta_i[k] = radians_to_degrees(std::acos(std::min(1.0, light[k].z())));
+    theta_o[k] = radians_to_degrees(std::acos(std::min(1.0, view[k].z())));
+    phi[k] = radians_to_degrees(std::atan2(view[k].y(), view[k].x()) - std::atan2(light[k].y(), light[k].x()));
+  }
+  std::vector<double> surface(n), subsurface(n * width), brdf(n * width), btdf(n * width);
+  evaluate_pairs(solved, theta_i, theta_o, phi, {surface, subsurface, brdf, btdf}, parallel_for);
+  std::vector<Eigen::Array3d> values(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t c = 0; c < 3; ++c)
+      values[k](static_cast<Eigen::Index>(c)) = brdf[k * width + (width == 1 ? 0 : c)];
+  }
+  return values;
+}
+
 }  // namespace skinlayer

@@ -6,6 +6,7 @@
 // outgoing minus the incident azimuth (180 = forward), any finite number. Values are BSDFs in 1/sr.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstddef>
 #include <functional>
 #include <mutex>
@@ -67,5 +68,11 @@ void evaluate_pairs(const SolvedDocument& solved, std::span<const double> theta_
                     std::span<const double> phi, const BsdfArrays& out, const ParallelFor& parallel_for,
                     const std::function<bool()>& cancelled = {}, UnscatteredLobe lobe = UnscatteredLobe::Auto,
                     UnscatteredLobeCache* cache = nullptr);
+
+// The BRDF (surface + subsurface, 1/sr) in red, green and blue at pairs given as unit vectors in the surface's frame
+// (graphics convention; the light's and the view's, both above the surface), through evaluate_pairs: what the shader
+// fits and their pictures compare with.
+std::vector<Eigen::Array3d> brdf_rgb(const SolvedDocument& solved, std::span<const Vec3> light,
+                                     std::span<const Vec3> view, const ParallelFor& parallel_for);
 
 }  // namespace skinlayer

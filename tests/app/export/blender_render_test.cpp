@@ -197,17 +197,11 @@ void check_furnace(BlenderRender& test, const std::string& preset) {
   // Both albedos on half-degree steps, interpolated to each pixel's view angle.
   std::vector<double> angles;
   for (int k = 0; k <= 170; ++k) angles.push_back(degrees_to_radians(0.5 * k));
-  std::vector<Rgb> principled_table, exact_table;
+  std::vector<Rgb> principled_table;
   for (const double angle : angles) {
     principled_table.push_back(principled_albedo(parameters, Vec3(std::sin(angle), 0.0, std::cos(angle)), 32));
   }
-  const std::vector<std::vector<DirectionalAlbedo>> exact =
-      document_albedo(preset_material(preset), angles, parallel_for_threads);
-  for (std::size_t a = 0; a < angles.size(); ++a) {
-    Rgb value;
-    for (int c = 0; c < 3; ++c) value(c) = exact[exact.size() == 1 ? 0 : static_cast<std::size_t>(c)][a].reflectance();
-    exact_table.push_back(value);
-  }
+  const std::vector<Rgb> exact_table = document_reflectance_rgb(preset_material(preset), angles, parallel_for_threads);
   const auto at = [&](const std::vector<Rgb>& table, double angle) {
     const double position = std::min(radians_to_degrees(angle) / 0.5, 169.999);
     const auto k = static_cast<std::size_t>(position);
@@ -234,36 +228,22 @@ void check_sun(BlenderRender& test, const std::string& preset) {
   const auto [script, pixels] = test.render(preset, "sun");
   const PrincipledParameters parameters = principled_parameters(fit_report(script));
   std::vector<Rgb> principled;
-  std::vector<double> theta_i, theta_o, phi;
-  for (const Pixel& pixel : pixels) {
-    const Vec3 light = local(pixel.normal, kTowardSun), view = local(pixel.normal, Vec3::UnitZ());
+  std::vector<std::size_t> lit;  // the pixels the sun reaches, whose exact BRDF is asked for
+  std::vector<Vec3> lights, views;
+  for (std::size_t k = 0; k < pixels.size(); ++k) {
+    const Vec3 light = local(pixels[k].normal, kTowardSun), view = local(pixels[k].normal, Vec3::UnitZ());
     principled.push_back(principled_brdf_cosine_weighted(parameters, light, view));
-    theta_i.push_back(radians_to_degrees(std::acos(std::clamp(light.z(), -1.0, 1.0))));
-    theta_o.push_back(radians_to_degrees(std::acos(view.z())));
-    phi.push_back(radians_to_degrees(std::atan2(view.y(), view.x()) - std::atan2(light.y(), light.x())));
+    if (light.z() <= 0.0) continue;
+    lit.push_back(k);
+    lights.push_back(light);
+    views.push_back(view);
   }
-  // The exact material's BRDF at the lit pixels (0 where the sun is below the horizon).
-  const SolvedDocument solved = solve_document(preset_material(preset), SubsurfaceModel::Stam, parallel_for_threads);
-  const std::size_t n = pixels.size(), width = static_cast<std::size_t>(value_channels(solved));
-  std::vector<double> lit_i, lit_o, lit_phi;
-  for (std::size_t k = 0; k < n; ++k) {
-    if (theta_i[k] >= 90.0) continue;
-    lit_i.push_back(theta_i[k]);
-    lit_o.push_back(theta_o[k]);
-    lit_phi.push_back(phi[k]);
-  }
-  std::vector<double> surface(lit_i.size()), subsurface(lit_i.size() * width), brdf(lit_i.size() * width),
-      btdf(lit_i.size() * width);
-  evaluate_pairs(solved, lit_i, lit_o, lit_phi, {surface, subsurface, brdf, btdf}, parallel_for_threads);
-  std::vector<Rgb> exact(n, Rgb::Zero());
-  for (std::size_t k = 0, lit = 0; k < n; ++k) {
-    if (theta_i[k] >= 90.0) continue;
-    for (int c = 0; c < 3; ++c) {
-      exact[k](c) =
-          brdf[lit * width + (width == 1 ? 0 : static_cast<std::size_t>(c))] * std::cos(degrees_to_radians(theta_i[k]));
-    }
-    ++lit;
-  }
+  // The exact material's f cos(theta_i) at the lit pixels (0 where the sun is below the horizon).
+  const std::vector<Rgb> brdf =
+      brdf_rgb(solve_document(preset_material(preset), SubsurfaceModel::Stam, parallel_for_threads), lights, views,
+               parallel_for_threads);
+  std::vector<Rgb> exact(pixels.size(), Rgb::Zero());
+  for (std::size_t j = 0; j < lit.size(); ++j) exact[lit[j]] = brdf[j] * lights[j].z();
   const double worst_exact =
       compare(rings(pixels, principled, exact,
                     [](const Pixel& pixel) { return std::acos(std::clamp(pixel.normal.dot(kTowardSun), -1.0, 1.0)); }),
