@@ -43,20 +43,17 @@ double ndf(double cos_m, double sigma, double floor) {
   return (1.0 - floor) * beckmann_ndf(cos_m, sigma) + floor / kPi;
 }
 
-Vec3 direction(double theta, double phi) {
-  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-}
-
 // sigma(theta) = int D(m) max(0, w . m) dm for w at polar angle theta: the NDF's projected area toward w.
 double projected_area(double theta, double sigma, double floor) {
   const QuadratureRule polar = gauss_legendre(256, 0.0, 0.5 * kPi);
   constexpr int kAzimuths = 128;
-  const Vec3 w = direction(theta, 0.0);
+  const Vec3 w = direction_from_angles(theta, 0.0);
   double sum = 0.0;
   for (int a = 0; a < polar.size(); ++a) {
     const double t = polar.nodes[a], d = ndf(std::cos(t), sigma, floor);
     double ring = 0.0;
-    for (int k = 0; k < kAzimuths; ++k) ring += std::max(0.0, w.dot(direction(t, 2.0 * kPi * (k + 0.5) / kAzimuths)));
+    for (int k = 0; k < kAzimuths; ++k)
+      ring += std::max(0.0, w.dot(direction_from_angles(t, 2.0 * kPi * (k + 0.5) / kAzimuths)));
     sum += polar.weights[a] * std::sin(t) * d * ring * (2.0 * kPi / kAzimuths);
   }
   return sum;
@@ -130,7 +127,7 @@ std::string rgl_file(const RglChannels& channels, const RglOptions& options, con
       const PiecewiseLinear2D::Sample s =
           warp.sample({static_cast<double>(i) / (n - 1), static_cast<double>(j) / (n - 1)});
       const std::size_t at = static_cast<std::size_t>(j) * n + i;
-      half_vectors[at] = direction(theta_of_u(s.u[0]), phi_of_u(s.u[1]));
+      half_vectors[at] = direction_from_angles(theta_of_u(s.u[0]), phi_of_u(s.u[1]));
       ndf_at[at] = ndf_table.at(s.u[0], s.u[1]);
     }
   }
@@ -138,7 +135,7 @@ std::string rgl_file(const RglChannels& channels, const RglOptions& options, con
   std::atomic<int> done = 0;  // slices finished, counted from the parallel-for's threads
   parallel_for_threads(thetas, [&](int k) {
     const double theta_o = theta_nodes[k];
-    const Vec3 wo = direction(theta_o, 0.0);
+    const Vec3 wo = direction_from_angles(theta_o, 0.0);
     const double sigma_o = sigma_table.at(u_of_theta(theta_o), 0.5);
     std::vector<double> node(static_cast<std::size_t>(k_channels));
     for (std::size_t at = 0; at < plane; ++at) {

@@ -12,17 +12,14 @@
 namespace skinlayer {
 namespace {
 
-Vec3 direction(double theta, double phi) {
-  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-}
-
 // The shader's f cos(theta_i) as a BRDF on the tables' angles (light at azimuth 0, view at phi); the light held just
 // above the horizon at the grid's last angle, where f cos(theta_i) / cos(theta_i) is 0 / 0.
 template <typename CosineWeighted>
 RgbBrdf as_brdf(CosineWeighted cosine_weighted) {
   return [cosine_weighted](double theta_i, double theta_o, double phi) {
     const double ti = std::min(theta_i, degrees_to_radians(89.9));
-    return Eigen::Array3d(cosine_weighted(direction(ti, 0.0), direction(theta_o, phi)) / std::cos(ti));
+    return Eigen::Array3d(cosine_weighted(direction_from_angles(ti, 0.0), direction_from_angles(theta_o, phi)) /
+                          std::cos(ti));
   };
 }
 
@@ -45,7 +42,7 @@ FittedTables fitted_tables(const ColorTables& shown, ShaderTarget target, const 
     const DocumentFit<PrincipledFit> fit = fit_principled(document, parallel_for);
     const PrincipledParameters p = fit.fit.parameters;
     brdf = as_brdf([p](const Vec3& i, const Vec3& o) { return principled_brdf_cosine_weighted(p, i, o); });
-    albedo = [p](double theta) { return principled_albedo(p, direction(theta, 0.0)); };
+    albedo = [p](double theta) { return principled_albedo(p, direction_from_angles(theta, 0.0)); };
     result.summary = summary("Principled", fit.fit.errors);
   } else {
     const DocumentFit<OpenPbrFit> fit = fit_openpbr(document, parallel_for);

@@ -10,15 +10,6 @@
 #include "core/series/quadrature.h"
 
 namespace skinlayer {
-namespace {
-
-Vec3 direction(double cos_theta, double phi) {
-  const double sine = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
-  return {sine * std::cos(phi), sine * std::sin(phi), cos_theta};
-}
-
-}  // namespace
-
 std::vector<DirectionPair> fit_pairs(int polar) {
   const QuadratureRule mu = gauss_legendre(polar, 0.0, 1.0), phi = gauss_legendre(2 * polar, 0.0, 2.0 * kPi);
   // The cap about the mirror direction: psi = psi_max u^2 from it, on Gauss-Legendre u, so that the nodes crowd
@@ -27,10 +18,11 @@ std::vector<DirectionPair> fit_pairs(int polar) {
   const QuadratureRule u = gauss_legendre(polar, 0.0, 1.0);
   std::vector<DirectionPair> pairs;
   for (int degrees = 0; degrees <= 80; degrees += 10) {
-    const Vec3 light = direction(std::cos(degrees_to_radians(degrees)), 0.0);
+    const Vec3 light = direction_from_angles(degrees_to_radians(degrees), 0.0);
     for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
       for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
-        pairs.push_back({light, direction(mu.nodes[a], phi.nodes[b]), mu.weights[a] * phi.weights[b]});
+        pairs.push_back(
+            {light, direction_from_angles(std::acos(mu.nodes[a]), phi.nodes[b]), mu.weights[a] * phi.weights[b]});
       }
     }
     const Vec3 mirror(-light.x(), 0.0, light.z());

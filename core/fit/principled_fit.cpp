@@ -9,11 +9,6 @@
 namespace skinlayer {
 namespace {
 
-Vec3 direction(double cos_theta, double phi) {
-  const double sine = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
-  return {sine * std::cos(phi), sine * std::sin(phi), cos_theta};
-}
-
 // The fitted parameters: roughness, specular, sheen, clearcoat, clearcoat roughness. Metal and the tints stay 0, so
 // that only the diffuse lobe depends on the base colour.
 PrincipledParameters with_shape(const Eigen::VectorXd& x) {
@@ -63,7 +58,7 @@ PrincipledFit fit_principled(const BrdfFitTarget& target) {
       [&](const Vec3& omega_i, const Vec3& omega_o) {
         return principled_brdf_cosine_weighted(fit.parameters, omega_i, omega_o);
       },
-      [&](double theta) { return principled_albedo(fit.parameters, direction(std::cos(theta), 0.0)); });
+      [&](double theta) { return principled_albedo(fit.parameters, direction_from_angles(theta, 0.0)); });
   return fit;
 }
 

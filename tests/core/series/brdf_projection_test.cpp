@@ -39,11 +39,9 @@ TEST(BrdfProjection, ARoughPrincipledBsdfIsWithinOnePercentOfItsPeakBetweenTheGr
   p.base_color = Rgb(0.6, 0.4, 0.2);
   p.roughness = 0.5;
   p.sheen = 0.5;
-  const auto direction = [](double theta, double phi) {
-    return Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-  };
   const RgbBrdf brdf = [&](double ti, double to, double phi) {
-    return Eigen::Array3d(principled_brdf(p, direction(std::min(ti, 1.57), 0.0), direction(to, phi)));
+    return Eigen::Array3d(
+        principled_brdf(p, direction_from_angles(std::min(ti, 1.57), 0.0), direction_from_angles(to, phi)));
   };
   const std::array<LayerTables, 3> tables = project_brdf(brdf, 48, 48, {});
   std::mt19937 random(3);

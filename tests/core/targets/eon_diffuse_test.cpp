@@ -11,13 +11,12 @@
 namespace skinlayer {
 namespace {
 
-using test::direction_at;
 using test::over_hemisphere;
 
 TEST(EonDiffuse, ClosedFormAlbedosAreTheIntegralsOfTheLobe) {
   for (const double sigma : {0.0, 0.3, 1.0}) {
     for (const double theta : {0.0, 0.7, 1.4}) {
-      const Vec3 view = direction_at(theta);
+      const Vec3 view = direction_from_angles(theta, 0.0);
       const Rgb albedo(0.9, 0.5, 0.1);
       const Rgb integral = over_hemisphere<Rgb>(
           [&](const Vec3& light) { return eon_diffuse_cosine_weighted(albedo, sigma, light, view); }, 96, Rgb::Zero());
@@ -39,7 +38,7 @@ TEST(EonDiffuse, AWhiteSurfaceReflectsAllTheLight) {
       EXPECT_NEAR(eon_diffuse_albedo(Rgb::Ones(), sigma, std::cos(theta))(0), 1.0, 1e-12);
       const double integral = over_hemisphere<double>(
           [&](const Vec3& light) {
-            return eon_diffuse_cosine_weighted(Rgb::Ones(), sigma, light, direction_at(theta))(0);
+            return eon_diffuse_cosine_weighted(Rgb::Ones(), sigma, light, direction_from_angles(theta, 0.0))(0);
           },
           96, 0.0);
       EXPECT_NEAR(integral, 1.0, 2e-4) << sigma << " " << theta;
@@ -51,7 +50,8 @@ TEST(EonDiffuse, IsReciprocalAndLambertianWhenSmooth) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> theta(0.0, 1.5), phi(0.0, 2.0 * kPi);
   for (int k = 0; k < 200; ++k) {
-    const Vec3 a = direction_at(theta(random), phi(random)), b = direction_at(theta(random), phi(random));
+    const Vec3 a = direction_from_angles(theta(random), phi(random)),
+               b = direction_from_angles(theta(random), phi(random));
     const double f_ab = eon_diffuse_cosine_weighted(Rgb::Constant(0.6), 0.7, a, b)(0) / a.z();
     const double f_ba = eon_diffuse_cosine_weighted(Rgb::Constant(0.6), 0.7, b, a)(0) / b.z();
     EXPECT_NEAR(f_ab, f_ba, 1e-14);

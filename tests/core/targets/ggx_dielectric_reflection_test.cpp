@@ -11,14 +11,13 @@
 namespace skinlayer {
 namespace {
 
-using test::direction_at;
 using test::over_hemisphere;
 
 TEST(GgxDielectricReflection, ItsAlbedoIsTheIntegralOfItsLobe) {
   for (const double alpha : {0.09, 0.3, 1.0}) {
     const GgxDielectricReflection lobe(1.5, alpha);
     for (const double theta : {0.0, 0.45, 0.9, 1.3}) {
-      const Vec3 view = direction_at(theta, 1.0);
+      const Vec3 view = direction_from_angles(theta, 1.0);
       const double integral =
           over_hemisphere<double>([&](const Vec3& light) { return lobe.cosine_weighted(light, view); }, 192, 0.0);
       EXPECT_NEAR(integral, lobe.albedo(view.z()), 2e-3 * lobe.albedo(view.z())) << alpha << " " << theta;
@@ -30,7 +29,7 @@ TEST(GgxDielectricReflection, ASmoothInterfaceReflectsItsFresnel) {
   const GgxDielectricReflection mirror(1.6, 0.0);
   EXPECT_TRUE(mirror.smooth());
   for (const double mu : {1.0, 0.5, 0.1}) EXPECT_NEAR(mirror.albedo(mu), fresnel_dielectric(mu, 1.6), 1e-3);
-  EXPECT_EQ(mirror.cosine_weighted(direction_at(0.3), direction_at(0.3, kPi)), 0.0);
+  EXPECT_EQ(mirror.cosine_weighted(direction_from_angles(0.3, 0.0), direction_from_angles(0.3, kPi)), 0.0);
   // A nearly smooth one comes close to it.
   const GgxDielectricReflection sharp(1.6, 0.01);
   for (const double mu : {1.0, 0.5})

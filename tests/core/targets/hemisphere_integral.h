@@ -24,8 +24,4 @@ Value over_hemisphere(const std::function<Value(const Vec3&)>& g, int polar, Val
   return sum;
 }
 
-inline Vec3 direction_at(double theta, double phi = 0.0) {
-  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-}
-
 }  // namespace skinlayer::test

@@ -13,7 +13,6 @@
 namespace skinlayer {
 namespace {
 
-using test::direction_at;
 using test::over_hemisphere;
 
 Rgb integral_at_view(const OpenPbrSurface& surface, const Vec3& view) {
@@ -43,7 +42,7 @@ OpenPbrParameters every_lobe() {
 TEST(OpenPbrSurface, TheAlbedoAtTheViewIsTheIntegralOfTheLobes) {
   const OpenPbrSurface surface(every_lobe());
   for (const double theta : {0.0, 0.6, 1.2}) {
-    const Vec3 view = direction_at(theta, 0.8);
+    const Vec3 view = direction_from_angles(theta, 0.8);
     const Rgb integral = integral_at_view(surface, view), closed = surface.albedo(view.z());
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(integral(c), closed(c), 2e-3 * closed(c)) << theta << " " << c;
   }
@@ -57,7 +56,7 @@ TEST(OpenPbrSurface, AWhiteSurfaceUnderAWhiteCoatAndFuzzReflectsAllTheLight) {
   for (const double theta : {0.0, 0.5, 1.0, 1.4}) {
     const Rgb closed = surface.albedo(std::cos(theta));
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(closed(c), 1.0, 1e-12) << theta;
-    EXPECT_NEAR(integral_at_view(surface, direction_at(theta))(0), 1.0, 3e-3) << theta;
+    EXPECT_NEAR(integral_at_view(surface, direction_from_angles(theta, 0.0))(0), 1.0, 3e-3) << theta;
   }
 }
 
@@ -74,8 +73,8 @@ TEST(OpenPbrSurface, TheDefaultsAreAGlossyDiffuse) {
   matte.specular_weight = 0.0;
   const OpenPbrSurface lambert(matte);
   EXPECT_NEAR(lambert.albedo(0.3)(1), 0.8, 1e-12);
-  EXPECT_NEAR(lambert.brdf_cosine_weighted(direction_at(0.2), direction_at(0.9, 2.0))(2), 0.8 * std::cos(0.2) / kPi,
-              1e-12);
+  EXPECT_NEAR(lambert.brdf_cosine_weighted(direction_from_angles(0.2, 0.0), direction_from_angles(0.9, 2.0))(2),
+              0.8 * std::cos(0.2) / kPi, 1e-12);
 }
 
 // Under a coat the base darkens by Delta = (1 - K) / (1 - E_b K): light the base sends up and the coat sends back

@@ -17,10 +17,6 @@ namespace {
 
 constexpr double kMinRoughnessChecked = 0.1;  // the fit's least (core/fit/principled_fit.h)
 
-Vec3 direction(double theta, double phi) {
-  return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-}
-
 TEST(PrincipledBsdf, IsReciprocal) {
   const PrincipledParameters p{.base_color = Rgb(0.9, 0.4, 0.2),
                                .metallic = 0.3,
@@ -31,7 +27,8 @@ TEST(PrincipledBsdf, IsReciprocal) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> theta(0.0, 1.5), phi(0.0, 2.0 * kPi);
   for (int n = 0; n < 200; ++n) {
-    const Vec3 a = direction(theta(random), phi(random)), b = direction(theta(random), phi(random));
+    const Vec3 a = direction_from_angles(theta(random), phi(random)),
+               b = direction_from_angles(theta(random), phi(random));
     const Rgb ab = principled_brdf(p, a, b), ba = principled_brdf(p, b, a);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(ab(c), ba(c), 1e-12 * std::max(1.0, ab(c)));
   }
@@ -60,7 +57,7 @@ TEST(PrincipledBsdf, SpecularLobeIsNormalizedAndItsIndexGivesItsReflectance) {
   metal.roughness = 0.1;
   EXPECT_NEAR(principled_albedo(metal, Vec3::UnitZ())(0), 1.0, 2e-4);
   metal.roughness = 0.7;
-  const double rough = principled_albedo(metal, direction(1.2, 0.0))(0);
+  const double rough = principled_albedo(metal, direction_from_angles(1.2, 0.0))(0);
   EXPECT_LT(rough, 0.97);  // single scattering loses light at grazing incidence on a rough surface
   EXPECT_GT(rough, 0.5);
   PrincipledParameters dielectric;
@@ -84,8 +81,8 @@ TEST(PrincipledBsdf, AlbedoConvergesForSharpLobesAndGrazingLight) {
       p.sheen = 0.5;
       p.clearcoat = 1.0;
       p.clearcoat_roughness = roughness;
-      const PrincipledLobes coarse = principled_lobe_albedos(p, direction(theta, 0.3));
-      const PrincipledLobes fine = principled_lobe_albedos(p, direction(theta, 0.3), 192);
+      const PrincipledLobes coarse = principled_lobe_albedos(p, direction_from_angles(theta, 0.3));
+      const PrincipledLobes fine = principled_lobe_albedos(p, direction_from_angles(theta, 0.3), 192);
       EXPECT_NEAR(coarse.specular(0), fine.specular(0), 1e-5 * fine.specular(0)) << roughness << " " << theta;
       EXPECT_NEAR(coarse.clearcoat(0), fine.clearcoat(0), 1e-5 * fine.clearcoat(0)) << roughness << " " << theta;
       EXPECT_NEAR(coarse.diffuse(0), fine.diffuse(0), 1e-5 * fine.diffuse(0)) << roughness << " " << theta;
@@ -105,7 +102,7 @@ TEST(PrincipledBsdf, ClearcoatReflectsItsFresnelTimesAQuarterOfItsUpperFacets) {
   p.specular = 0.0;
   p.clearcoat = 1.0;
   p.clearcoat_roughness = 0.1;
-  const PrincipledLobes coat_only = principled_lobes_cosine_weighted(p, Vec3::UnitZ(), direction(0.3, 1.0));
+  const PrincipledLobes coat_only = principled_lobes_cosine_weighted(p, Vec3::UnitZ(), direction_from_angles(0.3, 1.0));
   EXPECT_EQ(coat_only.diffuse.maxCoeff(), 0.0);
   const double a2 = 1e-4, upper = 1.0 - std::log(0.5 * (1.0 + a2)) / std::log(a2);
   const double coat = principled_albedo(p, Vec3::UnitZ())(0);
@@ -118,7 +115,7 @@ TEST(PrincipledBsdf, ClearcoatReflectsItsFresnelTimesAQuarterOfItsUpperFacets) {
 // colour's hue.
 TEST(PrincipledBsdf, WeightsAndTintsSplitTheLight) {
   PrincipledParameters p{.base_color = Rgb(0.8, 0.2, 0.1), .specular_tint = 1.0, .sheen = 1.0, .sheen_tint = 1.0};
-  const Vec3 in = direction(0.7, 0.0), out = direction(1.1, 2.0);
+  const Vec3 in = direction_from_angles(0.7, 0.0), out = direction_from_angles(1.1, 2.0);
   const PrincipledLobes dielectric = principled_lobes_cosine_weighted(p, in, out);
   EXPECT_GT(dielectric.sheen(0), dielectric.sheen(1));
   EXPECT_GT(dielectric.specular(0), dielectric.specular(1));
@@ -127,7 +124,8 @@ TEST(PrincipledBsdf, WeightsAndTintsSplitTheLight) {
   EXPECT_EQ(metal.diffuse.maxCoeff(), 0.0);
   EXPECT_EQ(metal.sheen.maxCoeff(), 0.0);
   EXPECT_GT(metal.specular(0), dielectric.specular(0));
-  EXPECT_EQ(principled_brdf(p, in, direction(1.0, 0.0) * -1.0).maxCoeff(), 0.0);  // below the surface: nothing
+  EXPECT_EQ(principled_brdf(p, in, direction_from_angles(1.0, 0.0) * -1.0).maxCoeff(),
+            0.0);  // below the surface: nothing
 }
 
 // At the BRDF's scale subsurface scattering is the diffuse lobe in the mixed colour: a subsurface of weight 1 is the
@@ -142,7 +140,7 @@ TEST(PrincipledBsdf, SubsurfaceIsTheDiffuseLobeInTheMixedColour) {
   subsurface.subsurface = 1.0;
   subsurface.subsurface_color = Rgb(0.6, 0.3, 0.1);
   subsurface.subsurface_radius = Rgb(5.0, 1.0, 0.1);
-  const Vec3 light = direction(0.4, 0.0), view = direction(1.1, 2.0);
+  const Vec3 light = direction_from_angles(0.4, 0.0), view = direction_from_angles(1.1, 2.0);
   const PrincipledLobes a = principled_lobes_cosine_weighted(diffuse, light, view);
   const PrincipledLobes b = principled_lobes_cosine_weighted(subsurface, light, view);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.diffuse(c), b.diffuse(c), 1e-15);
@@ -171,7 +169,7 @@ TEST(PrincipledBsdf, GlassReflectsItsFresnelAndRefractsTheRest) {
   glass.roughness = 0.3;
   glass.ior = 1.45;
   for (const double theta : {0.0, 0.8}) {
-    const Vec3 view = direction(theta, 0.0);
+    const Vec3 view = direction_from_angles(theta, 0.0);
     const double fresnel = fresnel_dielectric(std::cos(theta), glass.ior);
     const PrincipledLobes reflected = principled_lobe_albedos(glass, view);
     EXPECT_NEAR(reflected.glass(0), fresnel, 0.02 * fresnel) << theta;
@@ -180,7 +178,7 @@ TEST(PrincipledBsdf, GlassReflectsItsFresnelAndRefractsTheRest) {
     double refracted = 0.0;
     for (std::size_t a = 0; a < mu.nodes.size(); ++a) {
       for (std::size_t b = 0; b < phi.nodes.size(); ++b) {
-        const Vec3 below = direction(kPi - std::acos(mu.nodes[a]), phi.nodes[b]);
+        const Vec3 below = direction_from_angles(kPi - std::acos(mu.nodes[a]), phi.nodes[b]);
         refracted += mu.weights[a] * phi.weights[b] * principled_btdf_cosine_weighted(glass, below, view)(0);
       }
     }
@@ -189,11 +187,11 @@ TEST(PrincipledBsdf, GlassReflectsItsFresnelAndRefractsTheRest) {
   }
   PrincipledParameters tinted = glass;
   tinted.base_color = Rgb(0.5, 0.25, 1.0);
-  const Vec3 below = direction(2.8, 0.3), view = direction(0.2, 0.0);
+  const Vec3 below = direction_from_angles(2.8, 0.3), view = direction_from_angles(0.2, 0.0);
   const Rgb white = principled_btdf_cosine_weighted(glass, below, view);
   const Rgb colored = principled_btdf_cosine_weighted(tinted, below, view);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(colored(c), tinted.base_color(c) * white(c), 1e-15);
-  const Vec3 light = direction(0.4, 0.0), mirror = direction(0.4, kPi);
+  const Vec3 light = direction_from_angles(0.4, 0.0), mirror = direction_from_angles(0.4, kPi);
   EXPECT_EQ(principled_lobes_cosine_weighted(tinted, light, mirror).glass(1),
             principled_lobes_cosine_weighted(glass, light, mirror).glass(1));
   PrincipledParameters half = tinted;

@@ -9,13 +9,12 @@
 namespace skinlayer {
 namespace {
 
-using test::direction_at;
 using test::over_hemisphere;
 
 TEST(ZeltnerFuzz, TheLobeIntegratesToItsAlbedoAtEveryView) {
   for (const double roughness : {0.1, 0.5, 1.0}) {
     for (const double theta : {0.0, 0.6, 1.2, 1.5}) {
-      const Vec3 view = direction_at(theta, 0.4);
+      const Vec3 view = direction_from_angles(theta, 0.4);
       const double integral = over_hemisphere<double>(
           [&](const Vec3& light) { return zeltner_fuzz_cosine_weighted(roughness, light, view); }, 128, 0.0);
       const double albedo = zeltner_fuzz_albedo(view.z(), roughness);
