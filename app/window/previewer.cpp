@@ -349,11 +349,17 @@ class Previewer final : private TestActionTarget {
   // material is requested once A changes.
   void pin_shown(PreviewState& state) {
     if (!shown_ || shown_->preview) return;
-    state.comparison.pinned = shown_->request.material;
-    state.comparison.label = "B (pinned)";
-    pinned_tables_ = shown_->tables();
-    TableTextureData copy = renderer_.table_data(static_cast<int>(shown_->request.material.model));
-    renderer_.upload(std::move(copy), Renderer::kPinnedSlot);
+    set_pinned(state, shown_->request.material, shown_->tables(),
+               renderer_.table_data(static_cast<int>(shown_->request.material.model)), "B (pinned)");
+  }
+  // B becomes `material`, its `tables` drawn from `textures`: the comparison's state, the pinned slot, and B's
+  // estimates anew.
+  void set_pinned(PreviewState& state, const ColorMaterial& material, ColorTables tables, TableTextureData textures,
+                  std::string label) {
+    state.comparison.pinned = material;
+    state.comparison.label = std::move(label);
+    pinned_tables_ = std::move(tables);
+    renderer_.upload(std::move(textures), Renderer::kPinnedSlot);
     ++pin_generation_;
     environment_pinned_.reset();
     pinned_theta_ = -1.0;
@@ -379,13 +385,10 @@ class Previewer final : private TestActionTarget {
     }
     fit_summary_ = outcome->fitted->summary;
     const char* label = outcome->target == ShaderTarget::Principled ? "B (Principled fit)" : "B (OpenPBR fit)";
-    state_.comparison.pinned = outcome->fitted->tables.material;
-    state_.comparison.label = label;
-    pinned_tables_ = std::move(outcome->fitted->tables);
-    renderer_.upload(make_table_textures(*pinned_tables_), Renderer::kPinnedSlot);
-    ++pin_generation_;
-    environment_pinned_.reset();
-    pinned_theta_ = -1.0;
+    ColorTables& tables = outcome->fitted->tables;
+    TableTextureData textures = make_table_textures(tables);
+    const ColorMaterial material = tables.material;
+    set_pinned(state_, material, std::move(tables), std::move(textures), label);
     out_ << "pinned " << label << ": " << fit_summary_ << "\n" << std::flush;
     return true;
   }
