@@ -7,7 +7,7 @@
 #include "app/solution/document_albedo.h"
 #include "app/solution/pair_evaluation.h"
 #include "app/solution/solved_document.h"
-#include "app/solution/subsurface_radius.h"
+#include "app/solution/subsurface_scattering.h"
 #include "core/conventions.h"
 
 namespace skinlayer {

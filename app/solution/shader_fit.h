@@ -1,6 +1,6 @@
 // A material document fitted with a renderer's shader (docs/model.md §22.2, §22.4): the samples of its BRDF that the
 // fits need, taken through the same solve as `skinlayer eval` and `skinlayer albedo`, and the fits, with the
-// subsurface scattering the BRDF does not show (app/solution/subsurface_radius.h). One path for `skinlayer fit`,
+// subsurface scattering the BRDF does not show (app/solution/subsurface_scattering.h). One path for `skinlayer fit`,
 // `skinlayer export --format blender|mtlx` and the previewer's buttons. The fits are of the layer model (Stam's),
 // whatever model the document names.
 #pragma once

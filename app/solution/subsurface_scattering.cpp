@@ -1,4 +1,4 @@
-#include "app/solution/subsurface_radius.h"
+#include "app/solution/subsurface_scattering.h"
 
 #include <algorithm>
 
