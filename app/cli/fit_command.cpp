@@ -88,16 +88,12 @@ int run_fit_command(std::span<const std::string_view> arguments, std::ostream& o
   if (*target_name == "principled") {
     const DocumentFit<PrincipledFit> fit = fit_principled(document, parallel_for_threads);
     report = principled_fit_json(fit);
-    fitted = [p = fit.fit.parameters](const Vec3& i, const Vec3& o) {
-      return principled_brdf_cosine_weighted(p, i, o);
-    };
+    fitted = fitted_brdf_cosine(fit.fit);
     label = "Blender Principled";
   } else {
     const DocumentFit<OpenPbrFit> fit = fit_openpbr(document, parallel_for_threads);
     report = openpbr_fit_json(fit);
-    fitted = [surface = OpenPbrSurface(fit.fit.parameters)](const Vec3& i, const Vec3& o) {
-      return surface.brdf_cosine_weighted(i, o);
-    };
+    fitted = fitted_brdf_cosine(fit.fit);
     label = "OpenPBR Surface";
   }
   if (picture) {

@@ -14,8 +14,7 @@ namespace {
 
 // The shader's f cos(theta_i) as a BRDF on the tables' angles (light at azimuth 0, view at phi); the light held just
 // above the horizon at the grid's last angle, where f cos(theta_i) / cos(theta_i) is 0 / 0.
-template <typename CosineWeighted>
-RgbBrdf as_brdf(CosineWeighted cosine_weighted) {
+RgbBrdf as_brdf(const FittedBrdfCosine& cosine_weighted) {
   return [cosine_weighted](double theta_i, double theta_o, double phi) {
     const double ti = std::min(theta_i, degrees_to_radians(89.9));
     return Eigen::Array3d(cosine_weighted(direction_from_angles(ti, 0.0), direction_from_angles(theta_o, phi)) /
@@ -36,19 +35,17 @@ std::string summary(const char* name, const FitErrors& errors) {
 FittedTables fitted_tables(const ColorTables& shown, ShaderTarget target, const ParallelFor& parallel_for) {
   const MaterialDocument document = material_document(shown.material);
   RgbBrdf brdf;
-  std::function<Rgb(double)> albedo;
+  Rgb reflected;  // the fit's albedo at the shown tables' angle
   FittedTables result;
   if (target == ShaderTarget::Principled) {
     const DocumentFit<PrincipledFit> fit = fit_principled(document, parallel_for);
-    const PrincipledParameters p = fit.fit.parameters;
-    brdf = as_brdf([p](const Vec3& i, const Vec3& o) { return principled_brdf_cosine_weighted(p, i, o); });
-    albedo = [p](double theta) { return principled_albedo(p, direction_from_angles(theta, 0.0)); };
+    brdf = as_brdf(fitted_brdf_cosine(fit.fit));
+    reflected = principled_albedo(fit.fit.parameters, direction_from_angles(shown.albedo_theta_i, 0.0));
     result.summary = summary("Principled", fit.fit.errors);
   } else {
     const DocumentFit<OpenPbrFit> fit = fit_openpbr(document, parallel_for);
-    const OpenPbrSurface surface(fit.fit.parameters);
-    brdf = as_brdf([surface](const Vec3& i, const Vec3& o) { return surface.brdf_cosine_weighted(i, o); });
-    albedo = [surface](double theta) { return surface.albedo(std::cos(theta)); };
+    brdf = as_brdf(fitted_brdf_cosine(fit.fit));
+    reflected = OpenPbrSurface(fit.fit.parameters).albedo(std::cos(shown.albedo_theta_i));
     result.summary = summary("OpenPBR", fit.fit.errors);
   }
   const LayerTables& grid = shown.channels[0];
@@ -57,7 +54,6 @@ FittedTables fitted_tables(const ColorTables& shown, ShaderTarget target, const 
   tables.material.layer.eta = 1.0;  // no surface term: the fitted BRDF holds it
   tables.channels = project_brdf(brdf, grid.grid_size(), std::max(grid.modes(), 32), parallel_for);
   tables.albedo_theta_i = shown.albedo_theta_i;
-  const Rgb reflected = albedo(shown.albedo_theta_i);
   for (int c = 0; c < 3; ++c) {
     DirectionalAlbedo& a = tables.albedo[static_cast<std::size_t>(c)];
     a.theta_i = shown.albedo_theta_i;

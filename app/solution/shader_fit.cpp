@@ -72,4 +72,14 @@ DocumentFit<OpenPbrFit> fit_openpbr(const MaterialDocument& document, const Para
   return result;
 }
 
+FittedBrdfCosine fitted_brdf_cosine(const PrincipledFit& fit) {
+  return [p = fit.parameters](const Vec3& i, const Vec3& o) { return principled_brdf_cosine_weighted(p, i, o); };
+}
+
+FittedBrdfCosine fitted_brdf_cosine(const OpenPbrFit& fit) {
+  return [surface = OpenPbrSurface(fit.parameters)](const Vec3& i, const Vec3& o) {
+    return surface.brdf_cosine_weighted(i, o);
+  };
+}
+
 }  // namespace skinlayer

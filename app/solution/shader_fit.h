@@ -5,6 +5,7 @@
 // whatever model the document names.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "app/material/material_document.h"
@@ -42,5 +43,11 @@ OpenPbrFitSettings openpbr_fit_settings(const MaterialDocument& document);
 // in a renderer that scatters under the surface), subsurface_radius its largest channel in millimetres,
 // subsurface_radius_scale the channels over it and subsurface_scatter_anisotropy the layer's g.
 DocumentFit<OpenPbrFit> fit_openpbr(const MaterialDocument& document, const ParallelFor& parallel_for);
+
+// A fit's shader as a BRDF, f cos(theta_i) for light omega_i seen from omega_o: what the fit's picture draws and the
+// previewer tabulates.
+using FittedBrdfCosine = std::function<Rgb(const Vec3& omega_i, const Vec3& omega_o)>;
+FittedBrdfCosine fitted_brdf_cosine(const PrincipledFit& fit);
+FittedBrdfCosine fitted_brdf_cosine(const OpenPbrFit& fit);
 
 }  // namespace skinlayer
