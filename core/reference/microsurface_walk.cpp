@@ -102,6 +102,36 @@ double height_correlated_bsdf(const RoughDielectric& interface, const Vec3& wi, 
          (i.z() * std::abs(o.z()) * denominator * denominator);
 }
 
+MicrosurfaceScatterDensity::MicrosurfaceScatterDensity(const RoughDielectric& interface, bool from_above, const Vec3& w)
+    : sigma_(interface.sigma),
+      eta_(from_above ? interface.eta : 1.0 / interface.eta),
+      area_(interface.eta == 1.0 ? 0.0 : w.z() * (1.0 + beckmann_lambda(w, interface.sigma))),
+      w_(w) {}
+
+double MicrosurfaceScatterDensity::operator()(const Vec3& o) const {
+  if (!(area_ > 0.0)) return 0.0;  // no interface, or a ray straight down that no facet faces
+  if (o.z() > 0.0) {
+    const Vec3 sum = w_ + o;
+    const double norm = sum.norm();
+    if (norm == 0.0) return 0.0;
+    const Vec3 h = sum / norm;
+    const double w_h = w_.dot(h);
+    if (h.z() <= 0.0 || w_h <= 0.0 || o.dot(h) <= 0.0) return 0.0;
+    return fresnel_dielectric(w_h, eta_) * beckmann_ndf(h.z(), sigma_) / (4.0 * area_);
+  }
+  Vec3 h = -(w_ + eta_ * o);
+  const double norm = h.norm();
+  if (norm == 0.0) return 0.0;
+  h /= norm;
+  if (h.z() < 0.0) h = -h;
+  const double w_h = w_.dot(h), o_h = o.dot(h);
+  if (w_h <= 0.0 || o_h >= 0.0) return 0.0;
+  const double fresnel = fresnel_dielectric(w_h, eta_);
+  if (fresnel >= 1.0) return 0.0;
+  const double denominator = w_h + eta_ * o_h;
+  return (1.0 - fresnel) * beckmann_ndf(h.z(), sigma_) * w_h * -o_h * eta_ * eta_ / (area_ * denominator * denominator);
+}
+
 MicrosurfaceWalk::MicrosurfaceWalk(RoughDielectric interface) : interface_(interface) {}
 
 Vec3 MicrosurfaceWalk::visible_normal(const Vec3& w, std::mt19937_64& random) const {
@@ -122,6 +152,10 @@ Vec3 MicrosurfaceWalk::visible_normal(const Vec3& w, std::mt19937_64& random) co
 }
 
 MicrosurfaceExit MicrosurfaceWalk::walk(const Vec3& wi, std::mt19937_64& random) const {
+  return walk(wi, random, MeetingVisitor{});
+}
+
+MicrosurfaceExit MicrosurfaceWalk::walk(const Vec3& wi, std::mt19937_64& random, const MeetingVisitor& visit) const {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   if (interface_.eta == 1.0) return {-wi, 1};
   bool above = wi.z() > 0.0;           // the ray is in the medium above the microsurface
@@ -135,6 +169,7 @@ MicrosurfaceExit MicrosurfaceWalk::walk(const Vec3& wi, std::mt19937_64& random)
     height = side * next;
     // Scatter at the microfacet: w is the ray reversed, in the frame of its medium.
     const Vec3 w = -side * ray;
+    if (visit) visit(MicrosurfaceMeeting{order + 1, above, w, height_cdf(next)});
     const Vec3 m = visible_normal(w, random);
     const double eta = above ? interface_.eta : 1.0 / interface_.eta;  // n of the other medium / n of this one
     const double cos_i = std::max(w.dot(m), 1e-12);

@@ -32,6 +32,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <random>
 
 #include "core/interfaces/microfacet.h"
@@ -46,6 +47,40 @@ double beckmann_lambda(const Vec3& w, double sigma);
 // microfacet_btdf). Zero at eta = 1.
 double height_correlated_bsdf(const RoughDielectric& interface, const Vec3& wi, const Vec3& wo);
 
+// The density, per steradian of the leaving direction o, with which light meeting the microsurface leaves one
+// meeting in a direction it can escape along: the walk's scattering at a microfacet drawn from the normals visible
+// from w (D_w, above), reflected with probability F and refracted otherwise,
+//   reflected up (o.z > 0):     p = F(w.h) D(h) / (4 A(w)),                                h = (w + o) / |w + o|
+//   refracted down (o.z < 0):   p = (1 - F(w.h)) D(h) (w.h) |o.h| e^2 / (A(w) (w.h + e o.h)^2),   h ~ -(w + e o)
+// with A(w) = w.z (1 + Lambda(w)) = int max(0, w.m) D(m) dm the microsurface's area seen from w (w.z of either sign)
+// and e the index beyond over the index of w's medium. All in the frame of the medium the light travels in (the
+// microsurface below it): w points back along the ray, o away from the meeting. Light reflected down or refracted up
+// (off a steep facet) travels down toward the microsurface on its side and meets it again for certain, and is left
+// out: the density integrates to the share of the visible facets that send the light up or through. Built once per
+// meeting (A(w) is an erfc and an exp), then evaluated at many o.
+class MicrosurfaceScatterDensity {
+ public:
+  MicrosurfaceScatterDensity(const RoughDielectric& interface, bool from_above, const Vec3& w);
+  double operator()(const Vec3& o) const;
+
+ private:
+  double sigma_, eta_, area_;
+  Vec3 w_;
+};
+
+// One meeting of a walk with the microsurface, in the frame of the medium the ray travels in (z up there, the
+// microsurface below): the direction back along the ray and the cumulative C1 of the meeting's height in that frame.
+// From there the light leaves toward o (o.z > 0) meeting the microsurface no more with probability C1^Lambda(o) (the
+// height-correlated G1 of Heitz 2014), and toward -o beyond it with (1 - C1)^Lambda(o) (the same height seen from
+// the other side).
+struct MicrosurfaceMeeting {
+  int order = 0;          // 1 for the first meeting
+  bool above = true;      // the ray travels in the medium above the microsurface
+  Vec3 toward_source;     // -ray, in that medium's frame
+  double height_cdf = 0;  // C1 of the meeting's height in that frame, in [0, 1]
+};
+using MeetingVisitor = std::function<void(const MicrosurfaceMeeting&)>;
+
 struct MicrosurfaceExit {
   Vec3 direction;  // where the light leaves: z > 0 above, z < 0 below
   int order = 0;   // the number of times it met the microsurface (at least 1)
@@ -59,6 +94,8 @@ class MicrosurfaceWalk {
   // at order 1. A walk longer than kMaxOrder meetings (none in practice: the mean order stays below 10) ends where
   // it stands.
   MicrosurfaceExit walk(const Vec3& wi, std::mt19937_64& random) const;
+  // The same walk, told of every meeting before the light scatters there (a null visitor is none).
+  MicrosurfaceExit walk(const Vec3& wi, std::mt19937_64& random, const MeetingVisitor& visit) const;
 
   static constexpr int kMaxOrder = 10000;
 
