@@ -74,11 +74,13 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
   const int k = resolution.table_size;
   std::vector<double> grid(k);
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
-  const UnscatteredLight unscattered = options.exact_unscattered ? UnscatteredLight(material) : UnscatteredLight();
   const auto kernels = kernels_for(material, resolution, grid, grid, options);
+  const std::shared_ptr<const MultipleScatteringLobe> lobes[] = {kernels->top_multiple, kernels->bottom_multiple};
+  const UnscatteredLight unscattered =
+      options.exact_unscattered ? UnscatteredLight(material, lobes) : UnscatteredLight();
   // One layer is a stack of one: core/solve/stack_solver.h solves both. The channels share it.
-  const StackSolver solver(material, resolution, kernels, unscattered.path(), options.cache, options.parallel_for,
-                           options.cancelled);
+  const StackSolver solver(material, resolution, kernels, unscattered.path(), options.exact_unscattered, options.cache,
+                           options.parallel_for, options.cancelled);
   struct ModeTables {
     Eigen::MatrixXd reflection, transmission;
   };
@@ -293,7 +295,7 @@ std::vector<std::vector<DirectionalAlbedo>> directional_albedo(std::span<const M
   const Resolution resolution = flux_resolution(material, options);
   const std::vector<double> mu0 = cosines_of(theta_i);
   const StackSolver solver(material, resolution, kernels_for(material, resolution, mu0, {}, options),
-                           UnscatteredPath::None, options.cache, options.parallel_for, options.cancelled);
+                           UnscatteredPath::None, false, options.cache, options.parallel_for, options.cancelled);
   std::vector<std::vector<DirectionalAlbedo>> result;
   for (const Material& channel : channels) {
     std::vector<DirectionalAlbedo> rows = solver.directional_albedo(solver.solve_mode(0, layer_albedos(channel)));

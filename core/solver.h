@@ -34,8 +34,8 @@ std::vector<LayerTables> solve(const Material& material, std::span<const double>
 
 // The surface term: the top interface's specular lobe, its single-scattering rough-dielectric BRDF (Fresnel x
 // Beckmann x Smith masking-shadowing of the material's microfacet model), in 1/sr. Under MicrofacetModel::Multiple the
-// light the top's microsurface reflects after more than one meeting is smooth and uniform in azimuth: the tables
-// carry it, in brdf_subsurface.
+// light the top's microsurface reflects after more than one meeting (a lobe of its own, forward like the specular
+// one but wider; core/interfaces/multiple_scattering.h) is carried by the tables, in brdf_subsurface.
 double brdf_surface(const Material& material, double theta_i, double theta_o, double phi);
 
 // Directional-hemispherical energy fractions for light incident at theta_i (radians).

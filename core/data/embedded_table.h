@@ -25,8 +25,10 @@ EmbeddedTable hemoglobin_prahl();
 EmbeddedTable cie1931_2deg_cmf();
 // core/data/cie_d65.csv: wavelength_nm, relative spectral power of CIE D65 (100 at 560 nm), 1 nm steps.
 EmbeddedTable cie_d65();
-// core/data/microfacet_multiple_scattering.csv: sigma, index, mu_i, then the multiply scattered BSDF (1/sr) in exit bins
-// 5 degrees wide, reflected (r0..) and transmitted (t0..); see core/interfaces/multiple_scattering.h.
+// core/data/microfacet_multiple_scattering.csv: sigma, E, kernel, theta_i, theta_o, unit, then the multiply scattered
+// lobe's shape at the header's azimuths, in units; core/data/microfacet_single_scattering_loss.csv: sigma, E, side,
+// then the single scattering's loss at polar angles 0 to 90 degrees. See core/interfaces/multiple_scattering_table.h.
 EmbeddedTable microfacet_multiple_scattering();
+EmbeddedTable microfacet_single_scattering_loss();
 
 }  // namespace skinlayer::data

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -343,12 +344,15 @@ std::vector<InterfaceAlbedo> totals(std::span<const InterfaceAlbedoParts> parts)
   return result;
 }
 
-std::vector<InterfaceAlbedoParts> interface_albedo_parts(const RoughDielectric& interface, std::span<const Vec3> wi) {
+std::vector<InterfaceAlbedoParts> interface_albedo_parts(const RoughDielectric& interface, std::span<const Vec3> wi,
+                                                         const MultipleScatteringLobe* lobe) {
   std::vector<InterfaceAlbedoParts> parts;
   parts.reserve(wi.size());
   for (const InterfaceAlbedo& single : single_scattering_albedo(interface, wi)) parts.push_back({single, {0.0, 0.0}});
   if (!has_multiple_scattering(interface)) return parts;
-  const MultipleScatteringLobe lobe(interface);
+  const std::optional<MultipleScatteringLobe> own =
+      lobe ? std::nullopt : std::optional<MultipleScatteringLobe>(std::in_place, interface, 1);
+  const MultipleScatteringLobe& shares = lobe ? *lobe : *own;
   for (std::size_t k = 0; k < wi.size(); ++k) {
     // Where single scattering keeps nearly all the light (small sigma, steep incidence) the rules' error can carry
     // R + T past 1; the interface then returns exactly all of it.
@@ -359,7 +363,7 @@ std::vector<InterfaceAlbedoParts> interface_albedo_parts(const RoughDielectric& 
       single.transmittance /= kept;
     }
     const double rest = std::max(0.0, single.loss());
-    const double share = lobe.transmitted_share(wi[k].z() > 0.0, std::abs(wi[k].z()));
+    const double share = shares.transmitted_share(wi[k].z() > 0.0, std::abs(wi[k].z()));
     parts[k].multiple = {rest * (1.0 - share), rest * share};
   }
   return parts;

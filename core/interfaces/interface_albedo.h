@@ -48,7 +48,10 @@ struct InterfaceAlbedoParts {
     return {single.reflectance + multiple.reflectance, single.transmittance + multiple.transmittance};
   }
 };
-std::vector<InterfaceAlbedoParts> interface_albedo_parts(const RoughDielectric& interface, std::span<const Vec3> wi);
+// `lobe`, when given, is the interface's (built once by a caller that needs it for its kernels too); else one is built.
+class MultipleScatteringLobe;
+std::vector<InterfaceAlbedoParts> interface_albedo_parts(const RoughDielectric& interface, std::span<const Vec3> wi,
+                                                         const MultipleScatteringLobe* lobe = nullptr);
 // Each direction's whole albedos, part by part summed.
 std::vector<InterfaceAlbedo> totals(std::span<const InterfaceAlbedoParts> parts);
 

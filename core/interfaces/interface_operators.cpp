@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "core/conventions.h"
@@ -51,6 +52,14 @@ struct HalfVectorTilt {
     return std::min(n, static_cast<int>(widest / (kPi / (n - 1))) + 2);
   }
 };
+
+// The multiply scattered parts of albedos, reflected or transmitted: what a kernel's lobe is matched to.
+std::vector<double> multiple_parts(std::span<const InterfaceAlbedoParts> albedos, bool reflected) {
+  std::vector<double> parts;
+  for (const InterfaceAlbedoParts& a : albedos)
+    parts.push_back(reflected ? a.multiple.reflectance : a.multiple.transmittance);
+  return parts;
+}
 
 }  // namespace
 
@@ -108,53 +117,76 @@ FourierKernel interface_fourier(const RoughDielectric& interface, std::span<cons
   return kernel;
 }
 
-Eigen::MatrixXd multiple_scattering_fourier(const RoughDielectric& interface, std::span<const double> mu_from,
-                                            std::span<const double> mu_to) {
+FourierKernel multiple_scattering_fourier(const MultipleScatteringLobe& lobe, std::span<const double> mu_from,
+                                          std::span<const double> mu_to) {
+  FourierKernel result;
+  const int modes = lobe.modes();
   const auto rows = static_cast<Eigen::Index>(mu_to.size()), columns = static_cast<Eigen::Index>(mu_from.size());
-  Eigen::MatrixXd result = Eigen::MatrixXd::Zero(rows, columns);
-  if (!has_multiple_scattering(interface)) return result;
-  const MultipleScatteringLobe lobe(interface);
-  for (Eigen::Index a = 0; a < columns; ++a) {
-    const double from = mu_from[static_cast<std::size_t>(a)];
-    const bool from_above = from < 0.0;  // travelling down: arriving from above
-    for (Eigen::Index b = 0; b < rows; ++b) {
-      const double to = mu_to[static_cast<std::size_t>(b)];
-      if (from == 0.0 || to == 0.0) continue;
-      result(b, a) = from * to < 0.0 ? lobe.reflection(from_above, std::abs(from), std::abs(to))
-                                     : lobe.transmission(from_above, std::abs(from), std::abs(to));
+  // The sets are each of one sign in every use; a mixed set is split by its entries' signs.
+  const auto one_sign = [](std::span<const double> mu) {
+    return std::all_of(mu.begin(), mu.end(), [&](double v) { return v * mu.front() > 0.0; });
+  };
+  const bool uniform = !mu_from.empty() && !mu_to.empty() && one_sign(mu_from) && one_sign(mu_to);
+  for (int m = 0; m < modes; ++m) {
+    const double parity = azimuth_parity(m);
+    Eigen::MatrixXd mode = Eigen::MatrixXd::Zero(rows, columns);
+    if (uniform) {
+      const bool from_above = mu_from.front() < 0.0;  // travelling down: arriving from above
+      const bool reflected = mu_from.front() * mu_to.front() < 0.0;
+      mode = parity * (reflected ? lobe.reflection_modes(from_above, m, mu_from, mu_to)
+                                 : lobe.transmission_modes(from_above, m, mu_from, mu_to))
+                          .transpose();
+    } else {
+      for (Eigen::Index a = 0; a < columns; ++a) {
+        const double from = mu_from[static_cast<std::size_t>(a)];
+        for (Eigen::Index b = 0; b < rows; ++b) {
+          const double to = mu_to[static_cast<std::size_t>(b)];
+          if (from == 0.0 || to == 0.0) continue;
+          mode(b, a) = parity * (from * to < 0.0 ? lobe.reflection(from < 0.0, m, std::abs(from), std::abs(to))
+                                                 : lobe.transmission(from < 0.0, m, std::abs(from), std::abs(to)));
+        }
+      }
     }
+    result.push_back(std::move(mode));
   }
   return result;
 }
 
 Eigen::MatrixXd InterfaceKernel::single_scattering(int m) const {
   const Eigen::MatrixXd& mode = kernel[static_cast<std::size_t>(m)];
-  return has_multiple(m) ? Eigen::MatrixXd(mode - multiple) : mode;
+  return has_multiple(m) ? Eigen::MatrixXd(mode - multiple[static_cast<std::size_t>(m)]) : mode;
 }
 
 const Eigen::MatrixXd* InterfaceKernel::carried_by_tables(int m, bool exact) const {
-  if (!exact) return &kernel[static_cast<std::size_t>(m)];
-  return has_multiple(m) ? &multiple : nullptr;
+  return exact ? nullptr : &kernel[static_cast<std::size_t>(m)];
 }
 
-std::size_t InterfaceKernel::bytes() const { return fourier_kernel_bytes(kernel) + matrix_bytes(multiple); }
+std::size_t InterfaceKernel::bytes() const { return fourier_kernel_bytes(kernel) + fourier_kernel_bytes(multiple); }
 
 InterfaceKernel matched_interface_kernel(const RoughDielectric& interface, std::span<const double> mu_from,
                                          std::span<const double> mu_to, const CosineProjector& projector,
                                          EnergyMatch match, std::span<const InterfaceAlbedoParts> albedos,
                                          std::span<const double> nodes, std::span<const double> weights,
-                                         const CancelCheck& cancelled) {
+                                         const CancelCheck& cancelled, const MultipleScatteringLobe* lobe_given) {
   InterfaceKernel result{interface_fourier(interface, mu_from, mu_to, projector, cancelled), {}};
-  const bool multiple = has_multiple_scattering(interface);
+  std::optional<MultipleScatteringLobe> own;
+  if (lobe_given == nullptr && has_multiple_scattering(interface)) own.emplace(interface, projector.modes());
+  const MultipleScatteringLobe* multiple_lobe = lobe_given != nullptr ? lobe_given : (own ? &*own : nullptr);
   FourierKernel lobe;
-  if (multiple) lobe.push_back(multiple_scattering_fourier(interface, mu_from, mu_to));
-  if (match != EnergyMatch::None) {
+  if (multiple_lobe != nullptr && has_multiple_scattering(interface)) {
+    lobe = multiple_scattering_fourier(*multiple_lobe, mu_from, mu_to);
+  }
+  const bool multiple = !lobe.empty();
+  const bool rows = match == EnergyMatch::ReflectedRows || match == EnergyMatch::TransmittedRows;
+  if (rows && multiple) {
+    const bool reflected = match == EnergyMatch::ReflectedRows;
+    match_multiple_rows(lobe, *multiple_lobe, mu_from, reflected, multiple_parts(albedos, reflected));
+  } else if (match != EnergyMatch::None && !rows) {
     const bool reflected = match != EnergyMatch::TransmittedColumns;
-    std::vector<double> single, rest;
-    for (const InterfaceAlbedoParts& a : albedos) {
+    std::vector<double> single;
+    for (const InterfaceAlbedoParts& a : albedos)
       single.push_back(reflected ? a.single.reflectance : a.single.transmittance);
-      rest.push_back(reflected ? a.multiple.reflectance : a.multiple.transmittance);
-    }
+    const std::vector<double> rest = multiple_parts(albedos, reflected);
     const auto matched = [&](FourierKernel& kernel, const std::vector<double>& target) {
       if (match == EnergyMatch::Reflection) {
         match_reflection_energy(kernel, nodes, weights, target);
@@ -163,32 +195,41 @@ InterfaceKernel matched_interface_kernel(const RoughDielectric& interface, std::
       }
     };
     matched(result.kernel, single);
-    if (multiple) matched(lobe, rest);
+    if (multiple) {
+      // The lobe is interpolated from its table, whose losses are too: where single scattering loses nothing here,
+      // the lobe carries nothing either (a reflection's row with its column, to stay symmetric).
+      for (std::size_t k = 0; k < rest.size(); ++k) {
+        if (rest[k] > 0.0) continue;
+        const auto column = static_cast<Eigen::Index>(k);
+        for (Eigen::MatrixXd& mode : lobe) {
+          mode.col(column).setZero();
+          if (match == EnergyMatch::Reflection) mode.row(column).setZero();
+        }
+      }
+      matched(lobe, rest);
+    }
   }
   if (multiple) {
-    result.multiple = std::move(lobe.front());
-    result.kernel.front() += result.multiple;
+    for (std::size_t m = 0; m < lobe.size(); ++m) result.kernel[m] += lobe[m];
+    result.multiple = std::move(lobe);
   }
   return result;
 }
 
 InterfaceKernel interface_kernel(const RoughDielectric& interface, std::span<const double> mu_from,
                                  std::span<const double> mu_to, const CosineProjector& projector,
-                                 const CancelCheck& cancelled) {
-  return matched_interface_kernel(interface, mu_from, mu_to, projector, EnergyMatch::None, {}, {}, {}, cancelled);
+                                 const CancelCheck& cancelled, const MultipleScatteringLobe* lobe) {
+  return matched_interface_kernel(interface, mu_from, mu_to, projector, EnergyMatch::None, {}, {}, {}, cancelled, lobe);
 }
 
 void apply_quadrature_weights(InterfaceKernel& kernel, std::span<const double> nodes, std::span<const double> weights) {
   apply_quadrature_weights(kernel.kernel, nodes, weights);
-  if (!kernel.has_multiple()) return;
-  FourierKernel mode0{std::move(kernel.multiple)};
-  apply_quadrature_weights(mode0, nodes, weights);
-  kernel.multiple = std::move(mode0.front());
+  apply_quadrature_weights(kernel.multiple, nodes, weights);
 }
 
 InterfaceKernel transmission_by_reciprocity(const InterfaceKernel& a_to_b, double eta) {
   InterfaceKernel b_to_a{transmission_by_reciprocity(a_to_b.kernel, eta), {}};
-  if (a_to_b.has_multiple()) b_to_a.multiple = a_to_b.multiple.transpose() / (eta * eta);
+  b_to_a.multiple = transmission_by_reciprocity(a_to_b.multiple, eta);
   return b_to_a;
 }
 
@@ -241,6 +282,33 @@ void match_reflection_energy(FourierKernel& kernel, std::span<const double> node
   for (Eigen::MatrixXd& mode : kernel) mode = d.asDiagonal() * mode * d.asDiagonal();
 }
 
+void match_multiple_rows(FourierKernel& multiple, const MultipleScatteringLobe& lobe, std::span<const double> mu_from,
+                         bool reflected, std::span<const double> target, bool symmetric) {
+  if (multiple.empty()) return;
+  Eigen::VectorXd scale = Eigen::VectorXd::Ones(static_cast<Eigen::Index>(mu_from.size()));
+  for (std::size_t k = 0; k < mu_from.size(); ++k) {
+    const double carried = lobe.energy(mu_from[k] < 0.0, reflected, std::abs(mu_from[k]));
+    if (carried > 0.0) scale(static_cast<Eigen::Index>(k)) = std::max(target[k], 0.0) / carried;
+  }
+  if (symmetric) {
+    const Eigen::VectorXd root = scale.cwiseSqrt();
+    for (Eigen::MatrixXd& mode : multiple) mode = root.asDiagonal() * mode * root.asDiagonal();
+  } else {
+    for (Eigen::MatrixXd& mode : multiple) mode = mode * scale.asDiagonal();
+  }
+}
+
+void match_multiple_rows(InterfaceKernel& kernel, const MultipleScatteringLobe& lobe, std::span<const double> mu_from,
+                         bool reflected, std::span<const InterfaceAlbedoParts> albedos, bool symmetric) {
+  if (!kernel.has_multiple()) return;
+  FourierKernel matched = kernel.multiple;
+  match_multiple_rows(matched, lobe, mu_from, reflected, multiple_parts(albedos, reflected), symmetric);
+  for (std::size_t m = 0; m < matched.size(); ++m) {
+    kernel.kernel[m] += matched[m] - kernel.multiple[m];
+    kernel.multiple[m] = std::move(matched[m]);
+  }
+}
+
 FourierKernel transmission_by_reciprocity(const FourierKernel& a_to_b, double eta) {
   FourierKernel b_to_a(a_to_b.size());
   for (std::size_t m = 0; m < a_to_b.size(); ++m) b_to_a[m] = a_to_b[m].transpose() / (eta * eta);
@@ -248,13 +316,14 @@ FourierKernel transmission_by_reciprocity(const FourierKernel& a_to_b, double et
 }
 
 std::vector<InterfaceAlbedoParts> interface_albedo_parts_along(const RoughDielectric& interface,
-                                                               std::span<const double> cosines, double z_sign) {
+                                                               std::span<const double> cosines, double z_sign,
+                                                               const MultipleScatteringLobe* lobe) {
   std::vector<Vec3> toward_light;
   toward_light.reserve(cosines.size());
   for (const double mu : cosines) {
     toward_light.emplace_back(std::sqrt(std::max(0.0, 1.0 - mu * mu)), 0.0, z_sign * std::abs(mu));
   }
-  return interface_albedo_parts(interface, toward_light);
+  return interface_albedo_parts(interface, toward_light, lobe);
 }
 
 }  // namespace skinlayer

@@ -19,48 +19,56 @@ FourierKernel interface_fourier(const RoughDielectric& interface, std::span<cons
                                 std::span<const double> mu_to, const CosineProjector& projector,
                                 const CancelCheck& cancelled = {});
 
-// Fourier mode 0 of the interface's multiply scattered lobe (core/interfaces/multiple_scattering.h), which is all of
-// it (the lobe is uniform in azimuth), between signed propagation cosines: an (n_to x n_from) matrix in 1/sr, zero
-// under MicrofacetModel::Single and without an interface.
-Eigen::MatrixXd multiple_scattering_fourier(const RoughDielectric& interface, std::span<const double> mu_from,
-                                            std::span<const double> mu_to);
+// An interface's multiply scattered lobe (core/interfaces/multiple_scattering.h) between signed propagation cosines,
+// mode by mode: per mode an (n_to x n_from) matrix in 1/sr, in propagation convention like interface_fourier (the
+// lobe's graphics-convention modes times (-1)^m), as many modes as the lobe holds (none without an interface).
+class MultipleScatteringLobe;
+FourierKernel multiple_scattering_fourier(const MultipleScatteringLobe& lobe, std::span<const double> mu_from,
+                                          std::span<const double> mu_to);
 
-// An interface's kernel with its parts: `kernel` the whole BSDF (the single scattering in every mode and the
-// multiply scattered lobe added to mode 0), `multiple` the lobe's share of mode 0 alone (0 x 0 under
-// MicrofacetModel::Single). The exact unscattered light (core/unscattered/unscattered_light.h) is single scattering
-// only, so the solver takes its node image from kernel[0] - multiple (core/solve/stack_solver.cpp).
+// An interface's kernel with its parts: `kernel` the whole BSDF (the single scattering and the multiply scattered
+// lobe, summed mode by mode), `multiple` the lobe's share of the first modes alone (empty under
+// MicrofacetModel::Single). Through one interface the exact unscattered light (core/unscattered/unscattered_light.h)
+// holds both parts; through two it is single scattering only, so the solver takes its node image from kernel[m] -
+// multiple[m] (core/solve/stack_solver.cpp).
 struct InterfaceKernel {
   FourierKernel kernel;
-  Eigen::MatrixXd multiple;
+  FourierKernel multiple;
 
-  bool has_multiple() const { return multiple.size() != 0; }
-  // Whether mode m holds a multiply scattered part (mode 0 alone, where there is one).
-  bool has_multiple(int m) const { return m == 0 && has_multiple(); }
+  bool has_multiple() const { return !multiple.empty(); }
+  // Whether mode m holds a multiply scattered part.
+  bool has_multiple(int m) const { return m < static_cast<int>(multiple.size()); }
   // Mode m without its multiply scattered part: the single scattering alone.
   Eigen::MatrixXd single_scattering(int m) const;
-  // The part of mode m that the tables carry: all of it, or, where the exact unscattered light replaces its single
-  // scattering (`exact`), the multiply scattered part of mode 0; null where nothing is left.
+  // The part of mode m that the tables carry, for a kernel from outside straight to outside directions (one
+  // interface's reflection or transmission of the incident light): all of it, or none (null) where the exact
+  // unscattered light replaces it (`exact`), the multiply scattered lobe with the single scattering.
   const Eigen::MatrixXd* carried_by_tables(int m, bool exact) const;
   std::size_t bytes() const;  // both parts' memory
 };
 
 // How an interface kernel's energy is matched, part by part, to the accurate albedos (interface_albedo_parts):
 // per column to the reflectances or the transmittances (match_column_energy), between the nodes to the reflectances
-// (match_reflection_energy), or not at all (rows to outside directions, which carry no energy of their own).
-enum class EnergyMatch { None, ReflectedColumns, TransmittedColumns, Reflection };
+// (match_reflection_energy), or, for rows to outside directions (no quadrature: they carry no energy of their own),
+// not at all or the multiply scattered part alone, per column to its reflectance or transmittance by the lobe's own
+// energy from that direction (ReflectedRows, TransmittedRows; match_multiple_rows).
+enum class EnergyMatch { None, ReflectedColumns, TransmittedColumns, Reflection, ReflectedRows, TransmittedRows };
 
 // The kernel from mu_from to mu_to: interface_fourier, plus the multiply scattered lobe under
 // MicrofacetModel::Multiple, each part matched to its own share of `albedos` (one per column, along mu_from) over the
 // quadrature `nodes` and `weights` (the rows), then summed. Without weights applied.
+// `lobe` is the interface's multiply scattered lobe with projector.modes() modes, under MicrofacetModel::Multiple
+// (one the caller builds once for all of an interface's kernels); null builds one.
 InterfaceKernel matched_interface_kernel(const RoughDielectric& interface, std::span<const double> mu_from,
                                          std::span<const double> mu_to, const CosineProjector& projector,
                                          EnergyMatch match, std::span<const InterfaceAlbedoParts> albedos,
                                          std::span<const double> nodes, std::span<const double> weights,
-                                         const CancelCheck& cancelled = {});
+                                         const CancelCheck& cancelled = {},
+                                         const MultipleScatteringLobe* lobe = nullptr);
 // Unmatched (EnergyMatch::None): to rows of outside directions.
 InterfaceKernel interface_kernel(const RoughDielectric& interface, std::span<const double> mu_from,
                                  std::span<const double> mu_to, const CosineProjector& projector,
-                                 const CancelCheck& cancelled = {});
+                                 const CancelCheck& cancelled = {}, const MultipleScatteringLobe* lobe = nullptr);
 
 // Turns coefficients over quadrature directions (from = nodes with weights a_j) into operators that map node
 // radiance to outgoing radiance:  K^m(o, j) = c_m f^m(mu_j -> mu_o) |mu_j| a_j  (dimensionless).
@@ -84,6 +92,18 @@ void match_column_energy(FourierKernel& kernel, std::span<const double> nodes, s
 void match_reflection_energy(FourierKernel& kernel, std::span<const double> nodes, std::span<const double> weights,
                              std::span<const double> target);
 
+// The multiply scattered part of a kernel to outside directions, each column k (along mu_from[k]) scaled to carry
+// target[k] exactly: by target[k] / E_k, E_k the lobe's own energy from that direction (MultipleScatteringLobe::energy,
+// exact for its interpolant), since the rows are no quadrature. `symmetric`: a reflection between one set of outside
+// directions and its mirror (mu_to = -mu_from), whose rows and columns are scaled alike, by sqrt(c_j c_k), which keeps
+// it reciprocal; its energy then holds to second order in the scales' spread.
+void match_multiple_rows(FourierKernel& multiple, const MultipleScatteringLobe& lobe, std::span<const double> mu_from,
+                         bool reflected, std::span<const double> target, bool symmetric = false);
+// The same for a kernel already built unmatched (interface_kernel, quadrature weights applied or not), its whole
+// kernel with its multiply scattered part, to the reflectances or transmittances of `albedos`' multiple parts.
+void match_multiple_rows(InterfaceKernel& kernel, const MultipleScatteringLobe& lobe, std::span<const double> mu_from,
+                         bool reflected, std::span<const InterfaceAlbedoParts> albedos, bool symmetric = false);
+
 // Generalized reciprocity of the radiance BTDF (Walter et al. 2007): f_t12(a -> b) / n2^2 = f_t21(b -> a) / n1^2.
 // The reversed pair of propagation directions has the same azimuth difference, so for a kernel carrying light from
 // medium a into medium b, the kernel from b back into a is its transpose / eta^2, eta = n_b / n_a.
@@ -96,6 +116,7 @@ void apply_quadrature_weights(InterfaceKernel& kernel, std::span<const double> n
 // direction back toward the light (sin theta, 0, z_sign cos theta) in the interface's frame (+z up): light from above
 // has z_sign +1, light from below -1.
 std::vector<InterfaceAlbedoParts> interface_albedo_parts_along(const RoughDielectric& interface,
-                                                               std::span<const double> cosines, double z_sign);
+                                                               std::span<const double> cosines, double z_sign,
+                                                               const MultipleScatteringLobe* lobe = nullptr);
 
 }  // namespace skinlayer

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "core/interfaces/interface_albedo.h"
 #include "core/interfaces/interface_operators.h"
 #include "core/interfaces/microfacet.h"
+#include "core/interfaces/multiple_scattering.h"
 #include "core/material.h"
 #include "core/parallel_for.h"
 #include "core/series/fourier.h"
@@ -59,12 +61,15 @@ struct InterfaceKernels {
   std::vector<InterfaceAlbedo> bottom_beam_albedo;
   FourierKernel r_top, r_top_rows;
   FourierKernel r_bottom, s_bottom_beam, r_bottom_rows;
-  // The kernels whose single scattering the exact unscattered light replaces, with their multiply scattered part of
-  // mode 0 apart (InterfaceKernel; 0 x 0 under MicrofacetModel::Single).
+  // The kernels whose single scattering the exact unscattered light replaces, with their multiply scattered part
+  // apart (InterfaceKernel; none under MicrofacetModel::Single).
   InterfaceKernel t_source, t_exit, t_source_exterior, t_bottom_exit, t_bottom_beam, r_bottom_beam_rows;
   // Under MicrofacetModel::Multiple, the top's multiply scattered reflection from outside to the exit rows, which
-  // the tables carry (brdf_surface is the single scattering's specular lobe alone); 0 x 0 otherwise.
-  Eigen::MatrixXd r_surface_multiple;
+  // the tables carry (brdf_surface is the single scattering's specular lobe alone), per mode; empty otherwise.
+  FourierKernel r_surface_multiple;
+  // The rough interfaces' multiply scattered lobes the kernels were built from (null under MicrofacetModel::Single,
+  // without the interface, or for a bottom that mirrors the top), for the exact unscattered light to share.
+  std::shared_ptr<const MultipleScatteringLobe> top_multiple, bottom_multiple;
 
   std::size_t bytes() const;  // the kernels' memory
 };

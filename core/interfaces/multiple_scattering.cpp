@@ -2,158 +2,230 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 #include "core/conventions.h"
-#include "core/data/embedded_table.h"
+#include "core/interfaces/multiple_scattering_energy.h"
+#include "core/interfaces/multiple_scattering_table.h"
+#include "core/series/log_linear_azimuth_series.h"
 
 namespace skinlayer {
 namespace {
 
-constexpr int kFirstBinColumn = 3;  // sigma, index, mu_i, then r0.., t0.. (as many exit bins as incident angles)
+constexpr auto kAngles = static_cast<std::size_t>(MultipleScatteringSamples::kAngles);
+// The floor of every shape f / sqrt(l_i l_o): a uniform lobe, which carries kShapeFloor * pi of the loss.
+constexpr double kShapeFloor = 1e-4 / kPi;
 
-// The table's grids, read from its first columns: sigma (outer), index, incident cosine (inner).
-struct Grid {
-  std::vector<double> sigmas, indices, mus;
-};
-
-Grid read_grid(const data::EmbeddedTable& table) {
-  Grid grid;
-  for (int r = 0; r < table.rows(); ++r) {
-    const double sigma = table.at(r, 0), index = table.at(r, 1), mu = table.at(r, 2);
-    if (grid.sigmas.empty() || sigma != grid.sigmas.back()) grid.sigmas.push_back(sigma);
-    if (grid.sigmas.size() == 1 && (grid.indices.empty() || index != grid.indices.back())) {
-      grid.indices.push_back(index);
-    }
-    if (grid.sigmas.size() == 1 && grid.indices.size() == 1) grid.mus.push_back(mu);
-  }
-  if (static_cast<std::size_t>(table.rows()) != grid.sigmas.size() * grid.indices.size() * grid.mus.size() ||
-      table.columns != kFirstBinColumn + 2 * static_cast<int>(grid.mus.size())) {
-    throw std::logic_error("microfacet_multiple_scattering: the table is not a full sigma x index x mu grid");
-  }
-  return grid;
+Eigen::MatrixXd zeros(std::size_t rows, std::size_t columns) {
+  return Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(columns));
 }
 
-// Linear interpolation weights of x on an ascending grid (clamped at its ends): the lower node and the weight of
-// the upper one.
-std::pair<std::size_t, double> bracket(const std::vector<double>& nodes, double x) {
-  if (x <= nodes.front()) return {0, 0.0};
-  if (x >= nodes.back()) return {nodes.size() - 2, 1.0};
-  const std::size_t upper = static_cast<std::size_t>(std::upper_bound(nodes.begin(), nodes.end(), x) - nodes.begin());
-  return {upper - 1, (x - nodes[upper - 1]) / (nodes[upper] - nodes[upper - 1])};
+// A kernel's samples upside down: (i, o) -> (o, i), scaled.
+Eigen::MatrixXd swapped(const Eigen::MatrixXd& samples, double scale) {
+  Eigen::MatrixXd result(samples.rows(), samples.cols());
+  for (std::size_t i = 0; i < kAngles; ++i) {
+    for (std::size_t o = 0; o < kAngles; ++o) {
+      result.row(static_cast<Eigen::Index>(o * kAngles + i)) =
+          scale * samples.row(static_cast<Eigen::Index>(i * kAngles + o));
+    }
+  }
+  return result;
 }
 
 }  // namespace
 
-MultipleScatteringLobe::MultipleScatteringLobe(const RoughDielectric& interface) : eta_(interface.eta) {
-  const data::EmbeddedTable table = data::microfacet_multiple_scattering();
-  static const Grid grid = read_grid(table);  // the compiled-in table's grid: read once, never changed
-  const std::size_t bins = grid.mus.size();
-  for (const double mu : grid.mus) angles_.push_back(std::acos(mu));
-  std::vector<double> log_indices;
-  for (const double index : grid.indices) log_indices.push_back(std::log(index));
-  const auto [s0, ws] = bracket(grid.sigmas, interface.sigma);
-  for (int from = 0; from < 2; ++from) {
-    Side& side = sides_[static_cast<std::size_t>(from)];
-    side.reflection.assign(bins, std::vector<double>(bins, 0.0));
-    side.transmission.assign(bins, std::vector<double>(bins, 0.0));
-    if (interface.eta == 1.0) continue;
-    const double index = from == 0 ? interface.eta : 1.0 / interface.eta;
-    const auto [e0, we] = bracket(log_indices, std::log(index));
-    for (std::size_t m = 0; m < bins; ++m) {
-      for (int corner = 0; corner < 4; ++corner) {
-        const std::size_t s = s0 + (corner & 1), e = e0 + (corner >> 1);
-        const double weight = ((corner & 1) ? ws : 1.0 - ws) * ((corner >> 1) ? we : 1.0 - we);
-        if (weight == 0.0) continue;
-        const int row = static_cast<int>((s * grid.indices.size() + e) * bins + m);
-        for (std::size_t b = 0; b < bins; ++b) {
-          side.reflection[m][b] += weight * table.at(row, kFirstBinColumn + static_cast<int>(b));
-          side.transmission[m][b] += weight * table.at(row, kFirstBinColumn + static_cast<int>(bins + b));
-        }
+MultipleScatteringLobe::MultipleScatteringLobe(const RoughDielectric& interface, int modes)
+    : interface_(interface), eta_(interface.eta) {
+  if (interface.eta == 1.0 || modes <= 0) return;
+  for (std::size_t k = 0; k < kAngles; ++k) {
+    angles_.push_back(degrees_to_radians(MultipleScatteringSamples::kAngleStep * static_cast<double>(k)));
+  }
+  // In the table's frame (E = n_below / n_above >= 1): the shapes, their series, and their energies matched.
+  const bool flipped = interface.eta < 1.0;  // the table's interface upside down
+  const double index = flipped ? 1.0 / interface.eta : interface.eta;
+  MultipleScatteringShape shape = multiple_scattering_shape(interface.sigma, index);
+  azimuths_ = shape.shapes.azimuths;
+  modes_ = static_cast<std::size_t>(modes);
+  series_.emplace(azimuths_, modes);
+  std::array<Eigen::MatrixXd, 3> coefficients, mode_zero, scale;
+  // A floor under every shape, a lobe uniform in angle carrying about 1e-4 of the light: where the walk met the
+  // microsurface again too rarely to draw a lobe (small sigma near the normal), the light still has somewhere to go,
+  // and every pair of directions that both lose light is coupled, so the symmetric matching below always has its
+  // solution.
+  for (Eigen::MatrixXd& kernel : shape.shapes.kernels) kernel.array() += kShapeFloor;
+  for (std::size_t kernel = 0; kernel < 3; ++kernel) {
+    // Every mode of a pair's shape in one pass of its series; the reflections are reciprocal, so their pairs (i, o)
+    // with o < i are copies of (o, i).
+    const bool reciprocal = kernel != kTransmissionDown;
+    Eigen::MatrixXd samples = shape.shapes.kernels[kernel];
+    for (std::size_t i = 0; reciprocal && i < kAngles; ++i) {
+      for (std::size_t o = 0; o < i; ++o) samples.row(static_cast<Eigen::Index>(i * kAngles + o)).setZero();
+    }
+    coefficients[kernel] = series_->coefficients(samples);  // (angles^2) x modes
+    for (std::size_t i = 0; reciprocal && i < kAngles; ++i) {
+      for (std::size_t o = 0; o < i; ++o) {
+        coefficients[kernel].row(static_cast<Eigen::Index>(i * kAngles + o)) =
+            coefficients[kernel].row(static_cast<Eigen::Index>(o * kAngles + i));
+      }
+    }
+    // The lobe is sqrt(l_i l_o) times its shape, each loss on its direction's own side.
+    const auto& incident = kernel == kReflectionBelow ? shape.loss_below : shape.loss_above;
+    const auto& exit = kernel == kReflectionAbove ? shape.loss_above : shape.loss_below;
+    scale[kernel] = Eigen::MatrixXd(static_cast<Eigen::Index>(kAngles), static_cast<Eigen::Index>(kAngles));
+    for (std::size_t i = 0; i < kAngles; ++i) {
+      for (std::size_t o = 0; o < kAngles; ++o) {
+        scale[kernel](static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(o)) = std::sqrt(incident[i] * exit[o]);
+      }
+    }
+    mode_zero[kernel] = multiple_scattering_grid(coefficients[kernel].col(0)).cwiseMax(0.0).cwiseProduct(scale[kernel]);
+  }
+  const std::array<Eigen::MatrixXd, 3> matched =
+      multiple_scattering_energy_scales(mode_zero, shape.loss_above, shape.loss_below, index);
+  for (std::size_t kernel = 0; kernel < 3; ++kernel) {
+    scale[kernel] = scale[kernel].cwiseProduct(matched[kernel]);
+    for (std::size_t i = 0; i < kAngles; ++i) {
+      for (std::size_t o = 0; o < kAngles; ++o) {
+        const auto row = static_cast<Eigen::Index>(i * kAngles + o);
+        const double factor = scale[kernel](static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(o));
+        shape.shapes.kernels[kernel].row(row) *= factor;
+        coefficients[kernel].row(row) *= factor;
+      }
+    }
+    // The reflections' samples symmetric too, so that the lobe itself (value_at), not only its modes, is
+    // reciprocal: the pairs (i, o) with o < i are copies of (o, i), whose modes the coefficients already are.
+    for (std::size_t i = 0; kernel != kTransmissionDown && i < kAngles; ++i) {
+      for (std::size_t o = 0; o < i; ++o) {
+        shape.shapes.kernels[kernel].row(static_cast<Eigen::Index>(i * kAngles + o)) =
+            shape.shapes.kernels[kernel].row(static_cast<Eigen::Index>(o * kAngles + i));
+        coefficients[kernel].row(static_cast<Eigen::Index>(i * kAngles + o)) =
+            coefficients[kernel].row(static_cast<Eigen::Index>(o * kAngles + i));
       }
     }
   }
-  // The shares, from the table's reciprocal lobes on its own grid (the exit bins are centred on the incident
-  // angles, so the swapped pair is a table entry too): over a bin theta in [a, b], int f mu_o d omega_o =
-  // pi (sin^2 b - sin^2 a) f.
-  const std::size_t n = angles_.size();
-  std::vector<double> bin_weight(n);
-  for (std::size_t b = 0; b < n; ++b) {
-    const double half = b + 1 < n ? 0.5 * (angles_[b + 1] - angles_[b]) : 0.5 * (angles_[b] - angles_[b - 1]);
-    const double lo = std::max(0.0, angles_[b] - half), hi = std::min(0.5 * kPi, angles_[b] + half);
-    bin_weight[b] = kPi * (std::sin(hi) * std::sin(hi) - std::sin(lo) * std::sin(lo));
-  }
-  const Side& above = sides_[0];
-  const Side& below = sides_[1];
-  for (std::size_t from = 0; from < 2; ++from) {
-    const Side& side = sides_[from];
-    std::vector<double> shares;
-    for (std::size_t i = 0; i < n; ++i) {
-      double reflected = 0.0, transmitted = 0.0;
-      for (std::size_t o = 0; o < n; ++o) {
-        reflected += bin_weight[o] * 0.5 * (side.reflection[i][o] + side.reflection[o][i]);
-        // above i -> below o, or below i -> above o (the reciprocal of above o -> below i, / eta^2).
-        const double t = from == 0 ? 0.5 * (above.transmission[i][o] + eta_ * eta_ * below.transmission[o][i])
-                                   : 0.5 * (above.transmission[o][i] / (eta_ * eta_) + below.transmission[i][o]);
-        transmitted += bin_weight[o] * t;
-      }
-      shares.push_back(reflected + transmitted > 0.0 ? transmitted / (reflected + transmitted) : 0.5);
+  // This interface's kernels: the table's, or upside down (reflections swapped, the transmission the table's from
+  // below, its transpose / E^2).
+  const std::array<std::size_t, 3> from =
+      flipped ? std::array<std::size_t, 3>{kReflectionBelow, kReflectionAbove, kTransmissionDown}
+              : std::array<std::size_t, 3>{kReflectionAbove, kReflectionBelow, kTransmissionDown};
+  for (std::size_t kernel = 0; kernel < 3; ++kernel) {
+    const bool swap = flipped && kernel == kTransmissionDown;
+    const double factor = swap ? 1.0 / (index * index) : 1.0;
+    samples_[kernel] = swap ? swapped(shape.shapes.kernels[from[kernel]], factor) : shape.shapes.kernels[from[kernel]];
+    const Eigen::MatrixXd& c = coefficients[from[kernel]];
+    for (std::size_t m = 0; m < modes_; ++m) {
+      Eigen::MatrixXd mode = multiple_scattering_grid(c.col(static_cast<Eigen::Index>(m)));
+      modes_of_[kernel].push_back(swap ? Eigen::MatrixXd(factor * mode.transpose()) : mode);
     }
-    sides_[from].share = std::move(shares);
   }
+  // The energies from each grid angle: the exact integral of mode 0's polar interpolant.
+  const std::array<double, MultipleScatteringSamples::kAngles>& quadrature = polar_grid_quadrature();
+  const Eigen::Map<const Eigen::VectorXd> energy(quadrature.data(), static_cast<Eigen::Index>(kAngles));
+  const Eigen::MatrixXd& down = modes_of_[kTransmissionDown].front();
+  reflected_ = {modes_of_[kReflectionAbove].front().cwiseMax(0.0) * energy,
+                modes_of_[kReflectionBelow].front().cwiseMax(0.0) * energy};
+  transmitted_ = {down.cwiseMax(0.0) * energy, down.transpose().cwiseMax(0.0) * energy / (eta_ * eta_)};
 }
 
-std::pair<std::size_t, double> MultipleScatteringLobe::node(double mu) const {
-  return bracket(angles_, std::acos(std::clamp(mu, 0.0, 1.0)));
+namespace {
+
+// W_i K W_o^T for the polar interpolation's weight matrices W (four terms a row): the rows of K interpolated to the
+// exit cosines, then those to the incident ones, four terms per entry each.
+Eigen::MatrixXd interpolated(const Eigen::MatrixXd& kernel, std::span<const double> mu_i,
+                             std::span<const double> mu_o) {
+  const auto exits = static_cast<Eigen::Index>(mu_o.size());
+  Eigen::MatrixXd to_exits = Eigen::MatrixXd::Zero(kernel.rows(), exits);
+  for (Eigen::Index b = 0; b < exits; ++b) {
+    const PolarStencil s = polar_grid_stencil(mu_o[static_cast<std::size_t>(b)]);
+    for (std::size_t q = 0; q < 4; ++q) to_exits.col(b) += s.weight[q] * kernel.col(s.index[q]);
+  }
+  Eigen::MatrixXd result = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(mu_i.size()), exits);
+  for (Eigen::Index a = 0; a < result.rows(); ++a) {
+    const PolarStencil s = polar_grid_stencil(mu_i[static_cast<std::size_t>(a)]);
+    for (std::size_t p = 0; p < 4; ++p) result.row(a) += s.weight[p] * to_exits.row(s.index[p]);
+  }
+  return result;
 }
 
-double MultipleScatteringLobe::raw(const Side& side, bool reflect, double mu_i, double mu_o) const {
-  // Catmull-Rom in both angles (the grid is uniform in angle), the end nodes repeated beyond the grid; a cubic can
-  // overshoot below zero beside a steep rise, so the result is held at 0 or above.
-  const auto [i, ti] = node(mu_i);
-  const auto [o, to] = node(mu_o);
-  const std::vector<std::vector<double>>& f = reflect ? side.reflection : side.transmission;
-  const auto n = static_cast<std::ptrdiff_t>(f.size());
-  const auto clamp_index = [n](std::ptrdiff_t k) {
-    return static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(k, 0, n - 1));
+}  // namespace
+
+Eigen::MatrixXd MultipleScatteringLobe::reflection_modes(bool from_above, int m, std::span<const double> mu_i,
+                                                         std::span<const double> mu_o) const {
+  if (m >= modes()) return zeros(mu_i.size(), mu_o.size());
+  const Eigen::MatrixXd& kernel =
+      modes_of_[from_above ? kReflectionAbove : kReflectionBelow][static_cast<std::size_t>(m)];
+  Eigen::MatrixXd f = interpolated(kernel, mu_i, mu_o);
+  if (m == 0) f = f.cwiseMax(0.0);  // a cubic can overshoot below zero beside a steep rise
+  return f;
+}
+
+Eigen::MatrixXd MultipleScatteringLobe::transmission_modes(bool from_above, int m, std::span<const double> mu_i,
+                                                           std::span<const double> mu_o) const {
+  if (m >= modes()) return zeros(mu_i.size(), mu_o.size());
+  if (!from_above) return transmission_modes(true, m, mu_o, mu_i).transpose() / (eta_ * eta_);
+  Eigen::MatrixXd f = interpolated(modes_of_[kTransmissionDown][static_cast<std::size_t>(m)], mu_i, mu_o);
+  if (m == 0) f = f.cwiseMax(0.0);
+  return f;
+}
+
+double MultipleScatteringLobe::reflection(bool from_above, int m, double mu_i, double mu_o) const {
+  // Both orders, so that the value is symmetric to the last bit.
+  const auto one = [&](double a, double b) {
+    return reflection_modes(from_above, m, std::span<const double>(&a, 1), std::span<const double>(&b, 1))(0, 0);
   };
-  const auto weights = [](double t) {
-    return std::array<double, 4>{0.5 * (-t + 2.0 * t * t - t * t * t), 0.5 * (2.0 - 5.0 * t * t + 3.0 * t * t * t),
-                                 0.5 * (t + 4.0 * t * t - 3.0 * t * t * t), 0.5 * (-t * t + t * t * t)};
-  };
-  const std::array<double, 4> wi = weights(ti), wo = weights(to);
+  return 0.5 * (one(mu_i, mu_o) + one(mu_o, mu_i));
+}
+
+double MultipleScatteringLobe::transmission(bool from_above, int m, double mu_i, double mu_o) const {
+  return transmission_modes(from_above, m, std::span<const double>(&mu_i, 1), std::span<const double>(&mu_o, 1))(0, 0);
+}
+
+double MultipleScatteringLobe::value_at(Kernel kernel, double mu_i, double mu_o, double phi) const {
+  const PolarStencil si = polar_grid_stencil(mu_i), so = polar_grid_stencil(mu_o);
   double sum = 0.0;
-  for (int a = 0; a < 4; ++a) {
-    const std::vector<double>& row = f[clamp_index(static_cast<std::ptrdiff_t>(i) + a - 1)];
-    double inner = 0.0;
-    for (int b = 0; b < 4; ++b)
-      inner += wo[static_cast<std::size_t>(b)] * row[clamp_index(static_cast<std::ptrdiff_t>(o) + b - 1)];
-    sum += wi[static_cast<std::size_t>(a)] * inner;
+  for (std::size_t p = 0; p < 4; ++p) {
+    for (std::size_t q = 0; q < 4; ++q) {
+      const double w = si.weight[p] * so.weight[q];
+      if (w == 0.0) continue;
+      const auto row = static_cast<Eigen::Index>(static_cast<std::size_t>(si.index[p]) * kAngles +
+                                                 static_cast<std::size_t>(so.index[q]));
+      const Eigen::RowVectorXd values = samples_[kernel].row(row);
+      sum += w * series_->value(std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), phi);
+    }
   }
-  return std::max(sum, 0.0);
+  return sum;
 }
 
-double MultipleScatteringLobe::raw_reflection(bool from_above, double mu_i, double mu_o) const {
-  return raw(sides_[from_above ? 0 : 1], true, mu_i, mu_o);
+double MultipleScatteringLobe::reflection_at(bool from_above, double mu_i, double mu_o, double phi) const {
+  if (modes_ == 0) return 0.0;
+  // Symmetric samples and one polar rule for both cosines: reciprocal, up to the order of the sum.
+  return value_at(from_above ? kReflectionAbove : kReflectionBelow, mu_i, mu_o, phi);
 }
 
-double MultipleScatteringLobe::raw_transmission(bool from_above, double mu_i, double mu_o) const {
-  return raw(sides_[from_above ? 0 : 1], false, mu_i, mu_o);
+double MultipleScatteringLobe::transmission_at(bool from_above, double mu_i, double mu_o, double phi) const {
+  if (modes_ == 0) return 0.0;
+  if (!from_above) return transmission_at(true, mu_o, mu_i, phi) / (eta_ * eta_);
+  return value_at(kTransmissionDown, mu_i, mu_o, phi);
 }
 
-double MultipleScatteringLobe::reflection(bool from_above, double mu_i, double mu_o) const {
-  return 0.5 * (raw_reflection(from_above, mu_i, mu_o) + raw_reflection(from_above, mu_o, mu_i));
-}
-
-double MultipleScatteringLobe::transmission(bool from_above, double mu_i, double mu_o) const {
-  if (!from_above) return transmission(true, mu_o, mu_i) / (eta_ * eta_);
-  return 0.5 * (raw_transmission(true, mu_i, mu_o) + eta_ * eta_ * raw_transmission(false, mu_o, mu_i));
+const Eigen::MatrixXd& MultipleScatteringLobe::reflection_samples(bool from_above) const {
+  return samples_[from_above ? kReflectionAbove : kReflectionBelow];
 }
 
 double MultipleScatteringLobe::transmitted_share(bool from_above, double mu_i) const {
-  const Side& side = sides_[from_above ? 0 : 1];
-  const auto [i, w] = node(mu_i);
-  return (1.0 - w) * side.share[i] + w * side.share[i + 1];
+  const double reflected = energy(from_above, true, mu_i), transmitted = energy(from_above, false, mu_i);
+  return reflected + transmitted > 0.0 ? std::clamp(transmitted / (reflected + transmitted), 0.0, 1.0) : 0.5;
+}
+
+double MultipleScatteringLobe::energy(bool from_above, bool reflected, double mu_i) const {
+  if (modes_ == 0) return 0.0;
+  const Eigen::VectorXd& energies = (reflected ? reflected_ : transmitted_)[from_above ? 0 : 1];
+  const auto w = polar_grid_weights(mu_i);
+  return std::max(0.0,
+                  Eigen::Map<const Eigen::RowVectorXd>(w.data(), static_cast<Eigen::Index>(w.size())).dot(energies));
+}
+
+std::optional<MultipleScatteringLobe> multiple_scattering_lobe(const RoughDielectric& interface, int modes) {
+  if (!has_multiple_scattering(interface)) return std::nullopt;
+  return MultipleScatteringLobe(interface, modes);
 }
 
 }  // namespace skinlayer

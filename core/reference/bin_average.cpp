@@ -36,8 +36,7 @@ double layer_bsdf_bin_average(const Material& material, const LayerTables& table
   // The unscattered part's lobes can be a degree wide: a finer lattice for them, four times as fine where the part
   // is a closed form, twice where it is a quadrature of its own (two interfaces).
   const UnscatteredLight& light = tables.unscattered();
-  if (light.path() == UnscatteredPath::None) return smooth;
-  if (reflected && light.path() != UnscatteredPath::BottomOnly) return smooth;
+  if (reflected ? !light.reflects() : light.path() == UnscatteredPath::None) return smooth;
   const int fine = (light.path() == UnscatteredPath::TopThenBottom ? 2 : 4) * grid;
   return smooth + midpoint_average(bin, fine, [&](double theta, double phi) {
            return reflected ? light.brdf(theta_i, theta, phi) : light.btdf(theta_i, theta, phi);

@@ -13,19 +13,20 @@ AzimuthalSeriesTable bsdf_fourier_series(const RoughDielectric& top, std::span<c
                                          ScatteringKind kind, std::span<const double> theta_i,
                                          std::span<const double> theta_o, const SeriesOptions& options) {
   if (channels.empty()) throw std::invalid_argument("bsdf_fourier_series: no channels");
-  const UnscatteredLight& unscattered = channels.front().unscattered();
+  // The channels' unscattered light is one material's, each channel's weighted (a colour's mix of solves).
+  const UnscatteredLight unscattered = channels.front().unscattered().scaled(1.0);
   for (const LayerTables& tables : channels) {
-    if (!(tables.unscattered() == unscattered)) {
+    if (!(tables.unscattered().scaled(1.0) == unscattered)) {
       throw std::invalid_argument("bsdf_fourier_series: the channels are not one material's");
     }
   }
   const bool reflection = kind == ScatteringKind::Reflection;
   const UnscatteredPath path = unscattered.path();
-  // What is sampled in azimuth: the surface term and the unscattered lobes of one interface.
+  // What is sampled in azimuth: the surface term, and the unscattered lobes of one interface (the multiply scattered
+  // reflection of a rough top among them).
   const bool surface = reflection && top.eta != 1.0;
   const bool sampled_unscattered =
-      path == UnscatteredPath::BottomOnly || (!reflection && path == UnscatteredPath::TopOnly);
-  const bool sampled = surface || sampled_unscattered;
+      reflection ? unscattered.reflects() : path == UnscatteredPath::BottomOnly || path == UnscatteredPath::TopOnly;
   std::vector<Eigen::MatrixXd> two_interface;
   if (!reflection && path == UnscatteredPath::TopThenBottom) {
     two_interface = two_interface_btdf_series(unscattered, theta_i, theta_o, two_interface_series_modes(unscattered),
@@ -42,27 +43,30 @@ AzimuthalSeriesTable bsdf_fourier_series(const RoughDielectric& top, std::span<c
     const Vec3 wi = direction_from_angles(theta_i[i], 0.0);
     const double g1_in = smith_g1_beckmann(wi.z(), top.sigma);
     for (int o = 0; o < table.columns; ++o) {
-      std::vector<double> shared;
-      if (sampled) {
+      // The surface term's series and the unscattered light's (weight 1), each sampled in azimuth on its own.
+      std::vector<double> shared, lobe;
+      if (surface) {
         const double g1_out = smith_g1_beckmann(std::cos(theta_o[o]), top.sigma);
         shared = adaptive([&](double phi) {
-          double value = 0.0;
-          if (surface) value += microfacet_brdf(top, wi, direction_from_angles(theta_o[o], phi), g1_in, g1_out);
-          if (sampled_unscattered) {
-            value += reflection ? unscattered.brdf(theta_i[i], theta_o[o], phi)
-                                : unscattered.btdf(theta_i[i], theta_o[o], phi);
-          }
-          return value;
+          return microfacet_brdf(top, wi, direction_from_angles(theta_o[o], phi), g1_in, g1_out);
         });
       }
-      std::size_t length = std::max(shared.size(), two_interface.size());
+      if (sampled_unscattered) {
+        lobe = adaptive([&](double phi) {
+          return reflection ? unscattered.brdf(theta_i[i], theta_o[o], phi)
+                            : unscattered.btdf(theta_i[i], theta_o[o], phi);
+        });
+      }
+      std::size_t length = std::max({shared.size(), lobe.size(), two_interface.size()});
       for (const LayerTables& tables : channels) length = std::max(length, static_cast<std::size_t>(tables.modes()));
       std::vector<double>& entry = table.entries[table.index(i, o)];
       entry.assign(length * channels.size(), 0.0);
       for (std::size_t c = 0; c < channels.size(); ++c) {
         double* series = entry.data() + c * length;
         for (std::size_t k = 0; k < shared.size(); ++k) series[k] += shared[k];
-        for (std::size_t k = 0; k < two_interface.size(); ++k) series[k] += two_interface[k](o, i);
+        const double weight = channels[c].unscattered().weight();
+        for (std::size_t k = 0; k < lobe.size(); ++k) series[k] += weight * lobe[k];
+        for (std::size_t k = 0; k < two_interface.size(); ++k) series[k] += weight * two_interface[k](o, i);
         for (int m = 0; m < channels[c].modes(); ++m) {
           series[m] += reflection ? channels[c].reflection_mode(m, theta_i[i], theta_o[o])
                                   : channels[c].transmission_mode(m, theta_i[i], theta_o[o]);

@@ -17,58 +17,63 @@ constexpr double kNegligible = 1e-9;
 }  // namespace
 
 LogLinearAzimuthSeries::LogLinearAzimuthSeries(std::span<const double> azimuths, int modes)
-    : azimuths_(azimuths.begin(), azimuths.end()), modes_(std::max(modes, 0)) {
-  const auto samples = static_cast<Eigen::Index>(azimuths_.size());
-  m_ = Eigen::ArrayXd::LinSpaced(modes_, 0.0, static_cast<double>(modes_ - 1));
-  m2_ = m_.square();
-  cos_.resize(modes_, samples);
-  sin_.resize(modes_, samples);
-  for (Eigen::Index k = 0; k < samples; ++k) {
-    cos_.col(k) = (m_ * azimuths_[static_cast<std::size_t>(k)]).cos().matrix();
-    sin_.col(k) = (m_ * azimuths_[static_cast<std::size_t>(k)]).sin().matrix();
+    : azimuths_(azimuths.begin(), azimuths.end()), modes_(static_cast<std::size_t>(std::max(modes, 0))) {
+  cos_.resize(azimuths_.size() * modes_);
+  sin_.resize(azimuths_.size() * modes_);
+  for (std::size_t k = 0; k < azimuths_.size(); ++k) {
+    for (std::size_t m = 0; m < modes_; ++m) {
+      cos_[k * modes_ + m] = std::cos(static_cast<double>(m) * azimuths_[k]);
+      sin_[k * modes_ + m] = std::sin(static_cast<double>(m) * azimuths_[k]);
+    }
+  }
+  m_.resize(modes_);
+  m2_.resize(modes_);
+  for (std::size_t m = 0; m < modes_; ++m) {
+    m_[m] = static_cast<double>(m);
+    m2_[m] = m_[m] * m_[m];
   }
 }
 
 Eigen::MatrixXd LogLinearAzimuthSeries::coefficients(const Eigen::MatrixXd& values) const {
-  const Eigen::Index functions = values.rows(), samples = values.cols();
-  Eigen::MatrixXd result = Eigen::MatrixXd::Zero(functions, modes_);
-  if (modes_ == 0) return result;
-  Eigen::ArrayXd integral(modes_);
-  Eigen::ArrayXd logs(samples);
-  for (Eigen::Index f = 0; f < functions; ++f) {
-    const double peak = values.row(f).maxCoeff();
+  const Eigen::Index functions = values.rows();
+  const std::size_t samples = static_cast<std::size_t>(values.cols()), modes = modes_;
+  Eigen::MatrixXd result = Eigen::MatrixXd::Zero(functions, static_cast<Eigen::Index>(modes));
+  if (modes == 0) return result;
+  std::vector<double> integral(modes), f(samples), logs(samples);
+  for (Eigen::Index row = 0; row < functions; ++row) {
+    for (std::size_t k = 0; k < samples; ++k) f[k] = values(row, static_cast<Eigen::Index>(k));
+    const double peak = *std::max_element(f.begin(), f.end());
     if (peak <= 0.0) continue;  // no light: all modes 0
-    integral.setZero();
-    for (Eigen::Index k = 0; k < samples; ++k) logs(k) = values(f, k) > 0.0 ? std::log(values(f, k)) : 0.0;
-    for (Eigen::Index k = 0; k + 1 < samples; ++k) {
-      const double fa = values(f, k), fb = values(f, k + 1);
+    std::fill(integral.begin(), integral.end(), 0.0);
+    for (std::size_t k = 0; k < samples; ++k) logs[k] = f[k] > 0.0 ? std::log(f[k]) : 0.0;
+    for (std::size_t k = 0; k + 1 < samples; ++k) {
+      const double fa = f[k], fb = f[k + 1];
       if (std::max(fa, fb) <= kNegligible * peak) continue;
-      const double a = azimuths_[static_cast<std::size_t>(k)], b = azimuths_[static_cast<std::size_t>(k + 1)];
-      const double width = b - a;
-      const auto ca = cos_.col(k).array(), cb = cos_.col(k + 1).array();
-      const auto sa = sin_.col(k).array(), sb = sin_.col(k + 1).array();
-      if (fa > 0.0 && fb > 0.0) {
-        const double log_ratio = logs(k + 1) - logs(k);
-        if (std::abs(log_ratio) < kFlat) {  // flat: f_a on the whole segment
-          integral(0) += fa * width;
-          integral.tail(modes_ - 1) += fa * (sb - sa).tail(modes_ - 1) / m_.tail(modes_ - 1);
-          continue;
+      const double width = azimuths_[k + 1] - azimuths_[k];
+      const double* ca = &cos_[k * modes];
+      const double* cb = &cos_[(k + 1) * modes];
+      const double* sa = &sin_[k * modes];
+      const double* sb = &sin_[(k + 1) * modes];
+      const double log_ratio = logs[k + 1] - logs[k];
+      if (fa > 0.0 && fb > 0.0 && std::abs(log_ratio) >= kFlat) {  // exponential
+        const double lambda = log_ratio / width, lambda2 = lambda * lambda;
+        integral[0] += (fb - fa) / lambda;
+        for (std::size_t m = 1; m < modes; ++m) {
+          integral[m] += (lambda * (fb * cb[m] - fa * ca[m]) + m_[m] * (fb * sb[m] - fa * sa[m])) / (lambda2 + m2_[m]);
         }
-        const double lambda = log_ratio / width;
-        integral(0) += (fb - fa) / lambda;
-        integral.tail(modes_ - 1) += (lambda * (fb * cb - fa * ca) + m_ * (fb * sb - fa * sa)).tail(modes_ - 1) /
-                                     (lambda * lambda + m2_.tail(modes_ - 1));
-        continue;
+      } else if (fa > 0.0 && fb > 0.0) {  // flat: f_a on the whole segment
+        integral[0] += fa * width;
+        for (std::size_t m = 1; m < modes; ++m) integral[m] += fa * (sb[m] - sa[m]) / m_[m];
+      } else {  // linear toward or from a zero
+        const double slope = (fb - fa) / width;
+        integral[0] += 0.5 * (fa + fb) * width;
+        for (std::size_t m = 1; m < modes; ++m) {
+          integral[m] += fa * (sb[m] - sa[m]) / m_[m] + slope * (width * sb[m] / m_[m] + (cb[m] - ca[m]) / m2_[m]);
+        }
       }
-      // Linear toward or from a zero.
-      const double slope = (fb - fa) / width;
-      integral(0) += 0.5 * (fa + fb) * width;
-      const auto rest = Eigen::seqN(1, modes_ - 1);
-      integral(rest) +=
-          fa * (sb - sa)(rest) / m_(rest) + slope * (width * sb(rest) / m_(rest) + (cb - ca)(rest) / m2_(rest));
     }
-    result(f, 0) = integral(0) / kPi;
-    result.row(f).tail(modes_ - 1) = (2.0 / kPi) * integral.tail(modes_ - 1).matrix().transpose();
+    result(row, 0) = integral[0] / kPi;
+    for (std::size_t m = 1; m < modes; ++m) result(row, static_cast<Eigen::Index>(m)) = 2.0 / kPi * integral[m];
   }
   return result;
 }

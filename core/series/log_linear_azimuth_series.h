@@ -31,9 +31,9 @@ class LogLinearAzimuthSeries {
 
  private:
   std::vector<double> azimuths_;
-  Eigen::Index modes_;
-  Eigen::ArrayXd m_, m2_;      // the modes and their squares
-  Eigen::MatrixXd cos_, sin_;  // cos(m phi_k), sin(m phi_k): modes x samples
+  std::size_t modes_;
+  std::vector<double> m_, m2_;     // the modes and their squares
+  std::vector<double> cos_, sin_;  // cos(m phi_k), sin(m phi_k): [k * modes + m]
 };
 
 }  // namespace skinlayer

@@ -29,18 +29,21 @@ LayerTables weighted_sum(std::span<const LayerTables> tables, std::span<const do
       throw std::invalid_argument("weighted_sum: grid sizes " + std::to_string(k) + " and " +
                                   std::to_string(t.grid_size()) + " differ");
     }
-    if (t.unscattered().path() != UnscatteredPath::None) {
-      throw std::invalid_argument("weighted_sum: a table carries unscattered light, which does not tabulate");
+    if (!(t.unscattered().scaled(1.0) == tables.front().unscattered().scaled(1.0))) {
+      throw std::invalid_argument("weighted_sum: the tables carry different unscattered light, which does not tabulate");
     }
     modes = std::max(modes, t.modes());
   }
+  double unscattered_weight = 0.0;
+  for (std::size_t i = 0; i < tables.size(); ++i) unscattered_weight += weights[i] * tables[i].unscattered().weight();
   const std::size_t size = static_cast<std::size_t>(modes) * static_cast<std::size_t>(k) * static_cast<std::size_t>(k);
   std::vector<double> reflection(size, 0.0), transmission(size, 0.0);
   for (std::size_t i = 0; i < tables.size(); ++i) {
     add_scaled(tables[i].reflection_coefficients(), weights[i], reflection);
     add_scaled(tables[i].transmission_coefficients(), weights[i], transmission);
   }
-  return LayerTables(k, modes, std::move(reflection), std::move(transmission));
+  return LayerTables(k, modes, std::move(reflection), std::move(transmission),
+                     tables.front().unscattered().scaled(unscattered_weight));
 }
 
 }  // namespace skinlayer

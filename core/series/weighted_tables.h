@@ -12,8 +12,10 @@
 
 namespace skinlayer {
 
-// Requires tables.size() == weights.size() >= 1, one grid size for all, and no unscattered light (its lobes are
-// evaluated exactly, not tabulated, and do not add up in a table): throws std::invalid_argument otherwise. The
+// Requires tables.size() == weights.size() >= 1, one grid size for all, and one unscattered light for all, up to its
+// weight (UnscatteredLight::scaled; its lobes are evaluated exactly, not tabulated, so only the same light adds up:
+// the sum's is that light weighted by sum_k w_k times its weight in each table): throws std::invalid_argument
+// otherwise. The
 // scattered sums keep the tables' clamp at 0 on evaluation, so a sum with negative weights may be clamped where a
 // sum of clamped values would not be.
 LayerTables weighted_sum(std::span<const LayerTables> tables, std::span<const double> weights);

@@ -24,8 +24,9 @@ Eigen::RowVectorXd flux_weights(const QuadratureRule& q) {
 }  // namespace
 
 StackSolver::StackSolver(const Material& material, const Resolution& resolution,
-                         std::shared_ptr<const InterfaceKernels> kernels, UnscatteredPath exact_path, SolveCache* cache,
-                         const ParallelFor& parallel_for, const CancelCheck& cancelled)
+                         std::shared_ptr<const InterfaceKernels> kernels, UnscatteredPath exact_path,
+                         bool exact_surface_multiple, SolveCache* cache, const ParallelFor& parallel_for,
+                         const CancelCheck& cancelled)
     : kernels_(std::move(kernels)), layers_(stack_layers(material)), bottom_(material.bottom) {
   const LayerGeometry& geometry = kernels_->geometry;
   const QuadratureRule& q = kernels_->quadrature;
@@ -33,6 +34,7 @@ StackSolver::StackSolver(const Material& material, const Resolution& resolution,
   const std::vector<double>& mu_out = kernels_->mu_out;
   want_exit_ = !mu_out.empty();
   exact_path_ = want_exit_ ? exact_path : UnscatteredPath::None;
+  exact_surface_multiple_ = exact_surface_multiple;
   exterior_ = want_exit_ && (geometry.top_open || geometry.base == LayerBase::Open);
   const std::size_t count = layers_.size();
 
@@ -188,8 +190,11 @@ StackSolver::ModeResult StackSolver::solve_mode(int m, std::span<const double> a
   // Out through the top.
   if (!geometry.top_open) {
     result.reflection = kernels_->t_exit.kernel[m] * field.slabs.front().up_top;
-    // The top's multiply scattered reflection: smooth, so the tables carry it (brdf_surface is the specular lobe).
-    if (m == 0 && kernels_->r_surface_multiple.size() != 0) result.reflection += kernels_->r_surface_multiple;
+    // The top's multiply scattered reflection of the incident light, unless UnscatteredLight::brdf holds it.
+    const FourierKernel& surface = kernels_->r_surface_multiple;
+    if (!exact_surface_multiple_ && m < static_cast<int>(surface.size())) {
+      result.reflection += surface[static_cast<std::size_t>(m)];
+    }
   } else {
     // The upward radiance at each slab's bottom face along the exits, from the bottom up.
     Eigen::MatrixXd below;  // at the current slab's bottom

@@ -33,11 +33,12 @@ class StackSolver {
   // (mu_in: light arrives along; mu_out: the tables leave along, none for fluxes only); the internal interfaces' and
   // the layers' phase kernels are built here, or taken from the cache. exact_path: the unscattered path
   // (UnscatteredPath) left out of the exit sums, because the caller evaluates it exactly; None keeps every path on
-  // the ordinates. `cancelled` is asked while the internal interfaces' and the phase kernels are built
-  // (core/cancellation.h).
+  // the ordinates. exact_surface_multiple: the top's multiply scattered reflection of the incident light is left out
+  // too (UnscatteredLight::brdf holds it); else the tables carry it. `cancelled` is asked while the internal
+  // interfaces' and the phase kernels are built (core/cancellation.h).
   StackSolver(const Material& material, const Resolution& resolution, std::shared_ptr<const InterfaceKernels> kernels,
-              UnscatteredPath exact_path, SolveCache* cache, const ParallelFor& parallel_for,
-              const CancelCheck& cancelled = {});
+              UnscatteredPath exact_path, bool exact_surface_multiple, SolveCache* cache,
+              const ParallelFor& parallel_for, const CancelCheck& cancelled = {});
 
   struct ModeResult {
     Eigen::MatrixXd reflection;    // K_out x K_in, graphics azimuth convention, 1/sr
@@ -76,6 +77,7 @@ class StackSolver {
   int exact_first_ = kNone, exact_second_ = kNone;
   Eigen::VectorXd exact_between_;  // e^{-tau/mu_j} per node over the depth between them
   UnscatteredPath exact_path_;
+  bool exact_surface_multiple_ = false;
   bool want_exit_;
   bool exterior_;  // exits are integrated through the slabs (an open top or an open base)
 };

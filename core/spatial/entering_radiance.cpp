@@ -29,6 +29,20 @@ EnteringRadiance::EnteringRadiance(const LateralTopInterface& top, const std::op
   }
   if (top.source.isZero()) return;
   const QuadratureRule theta = gauss_legendre_panels(graded_panels(0.0, 0.5 * kPi, lobe ? lobe_width_ : 0.0, 0.25), 8);
+  if (lobe && has_multiple_scattering(*rough)) {
+    // The lobe's flux on the directions below, scaled to the nodes' (the sums' common 2 pi left out).
+    multiple_.emplace(*rough, 1);
+    double nodes_flux = 0.0, lobe_flux = 0.0;
+    for (int j = 0; j < ordinates; ++j) {
+      nodes_flux += q.weights[static_cast<std::size_t>(j)] * q.nodes[static_cast<std::size_t>(j)] *
+                    (top.source(j) - top.source_single(j));
+    }
+    for (int p = 0; p < theta.size(); ++p) {
+      const double mu = std::cos(theta.nodes[p]);
+      lobe_flux += mu * multiple_transmission_from_normal(mu) * std::sin(theta.nodes[p]) * theta.weights[p];
+    }
+    multiple_scale_ = lobe_flux > 0.0 ? nodes_flux / lobe_flux : 0.0;
+  }
   for (int p = 0; p < theta.size(); ++p) {
     const double mu = std::cos(theta.nodes[p]);
     const double power = 2.0 * kPi * mu * (*this)(mu)*std::sin(theta.nodes[p]) * theta.weights[p];
@@ -44,12 +58,17 @@ double EnteringRadiance::operator()(double mu) const {
     const double sine = std::sqrt(std::max(0.0, 1.0 - mu * mu));
     value += microfacet_btdf(*lobe_, Vec3(0.0, 0.0, 1.0), Vec3(sine, 0.0, -mu));
   }
+  if (multiple_) return value + multiple_scale_ * multiple_transmission_from_normal(mu);
   // The broad part, linear between the nodes, held beyond the end ones.
   if (mu <= nodes_.front()) return value + broad_.front();
   if (mu >= nodes_.back()) return value + broad_.back();
   const std::size_t hi = static_cast<std::size_t>(std::upper_bound(nodes_.begin(), nodes_.end(), mu) - nodes_.begin());
   const double t = (mu - nodes_[hi - 1]) / (nodes_[hi] - nodes_[hi - 1]);
   return value + (1.0 - t) * broad_[hi - 1] + t * broad_[hi];
+}
+
+double EnteringRadiance::multiple_transmission_from_normal(double mu) const {
+  return std::max(0.0, multiple_->transmission_at(true, 1.0, mu, 0.0));  // uniform in azimuth from the normal
 }
 
 }  // namespace skinlayer

@@ -9,14 +9,19 @@
 // the entering radiance continuous in mu = cos(theta):
 //   L(mu) = f_t(n, d(mu)) + interpolated(t_j - t_j,single)(mu)                                   [1/sr]
 // with f_t the top's microfacet BTDF from the normal n into the direction d(mu) (a radiance BTDF, microfacet.h; the
-// light per unit area is 1), and the rest of the node radiance (the interface's multiply scattered lobe; under diffuse
-// light all of it) linear in mu between the nodes and held beyond the end ones: it is broad, and the nodes resolve it.
+// light per unit area is 1), and the rest of the node radiance. Under diffuse light that is all of it, linear in mu
+// between the nodes and held beyond the end ones. Under a rough top of MicrofacetModel::Multiple it is the interface's
+// multiply scattered lobe, which peaks along the normal, beyond the last node: its own shape at normal incidence
+// (core/interfaces/multiple_scattering.h, clamped at 0), scaled to carry the nodes' flux of it:
+//   rest(mu) = s f_ms,t(n -> d(mu)),   s = sum_j a_j mu_j (t_j - t_j,single) / int_0^1 f_ms,t(n -> d(mu)) mu d mu,
+// the integral on the directions() below.
 #pragma once
 
 #include <optional>
 #include <vector>
 
 #include "core/interfaces/microfacet.h"
+#include "core/interfaces/multiple_scattering.h"
 #include "core/series/quadrature.h"
 #include "core/spatial/lateral_top_interface.h"
 
@@ -40,8 +45,13 @@ class EnteringRadiance {
   double lobe_width() const { return lobe_width_; }
 
  private:
+  double multiple_transmission_from_normal(double mu) const;
+
   std::optional<RoughDielectric> lobe_;
   std::vector<double> nodes_, broad_;  // ascending cosines, and the broad part's radiance on them
+  // The multiply scattered lobe's transmission from the normal and its scale s (none without one).
+  std::optional<MultipleScatteringLobe> multiple_;
+  double multiple_scale_ = 0.0;
   double collimated_ = 0.0, lobe_width_ = 0.0;
   QuadratureRule directions_;
 };

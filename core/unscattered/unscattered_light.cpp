@@ -136,14 +136,30 @@ std::vector<SlopeNode> slope_nodes() {
 
 }  // namespace
 
-UnscatteredLight::UnscatteredLight(const Material& material)
+UnscatteredLight::UnscatteredLight(const Material& material,
+                                   std::span<const std::shared_ptr<const MultipleScatteringLobe>> built)
     : tau_(material.total_tau()),
       index_below_(material.bottom.kind == BottomKind::Matched
                        ? material.eta * material.internal_index_ratio()
                        : material.eta * material.internal_index_ratio() / material.bottom_eta()) {
-  const bool top_open = material.eta == 1.0;
   top_ = top_interface(material);
   bottom_ = bottom_interface(material);
+  set_path(material);
+  // The lobe of a rough interface under MicrofacetModel::Multiple: one already built, or a new one (its modes are
+  // not used here; one is the least it holds).
+  const auto lobe = [&](const RoughDielectric& interface) -> std::shared_ptr<const MultipleScatteringLobe> {
+    if (!has_multiple_scattering(interface)) return nullptr;
+    for (const std::shared_ptr<const MultipleScatteringLobe>& given : built) {
+      if (given != nullptr && given->interface() == interface) return given;
+    }
+    return std::make_shared<const MultipleScatteringLobe>(interface, 1);
+  };
+  if (material.eta != 1.0) top_multiple_ = lobe(top_interface(material));
+  if (path_ == UnscatteredPath::BottomOnly) bottom_multiple_ = lobe(bottom_);
+}
+
+void UnscatteredLight::set_path(const Material& material) {
+  const bool top_open = material.eta == 1.0;
   if (std::isinf(tau_)) return;
   if (material.has_internal_interfaces()) {
     set_stack_path(material);
@@ -213,23 +229,41 @@ std::pair<Vec3, Vec3> transmission_directions(double theta_i, double theta_o, do
           Vec3(std::sin(theta_o) * std::cos(phi), std::sin(theta_o) * std::sin(phi), -std::cos(theta_o))};
 }
 
-// The single term of a path through one rough interface (TopOnly, BottomOnly); empty on the other paths.
-std::optional<DepthTerm> one_interface_term(UnscatteredPath path, const RoughDielectric& top,
-                                            const RoughDielectric& bottom, const Vec3& wi, const Vec3& wo) {
-  if (path == UnscatteredPath::TopOnly) return DepthTerm{microfacet_btdf(top, wi, wo), -wo.z()};
-  if (path == UnscatteredPath::BottomOnly) return DepthTerm{microfacet_btdf(bottom, wi, wo), wi.z()};
-  return std::nullopt;
+// A lobe's transmission from above to the exit direction below (wi at azimuth 0, so wo's azimuth is the relative one,
+// graphics convention: pi forward), and its reflection; each clamped at 0 where its polar interpolation dips below
+// (core/interfaces/multiple_scattering.h).
+double multiple_transmission(const MultipleScatteringLobe& lobe, const Vec3& wi, const Vec3& wo) {
+  return std::max(0.0, lobe.transmission_at(true, wi.z(), -wo.z(), std::atan2(wo.y(), wo.x())));
+}
+double multiple_reflection(const MultipleScatteringLobe& lobe, const Vec3& wi, const Vec3& wo, double phi) {
+  return std::max(0.0, lobe.reflection_at(true, wi.z(), wo.z(), phi));
 }
 
 }  // namespace
+
+// The single term of a path through one rough interface (TopOnly, BottomOnly): its single and multiply scattered
+// transmission, with the depth crossed after the interface (TopOnly) or before it (BottomOnly); empty otherwise.
+std::optional<DepthTerm> UnscatteredLight::one_interface_term(const Vec3& wi, const Vec3& wo) const {
+  if (path_ == UnscatteredPath::TopOnly) {
+    double f = microfacet_btdf(top_, wi, wo);
+    if (top_multiple_) f += multiple_transmission(*top_multiple_, wi, wo);
+    return DepthTerm{f, -wo.z()};
+  }
+  if (path_ == UnscatteredPath::BottomOnly) {
+    double f = microfacet_btdf(bottom_, wi, wo);
+    if (bottom_multiple_) f += multiple_transmission(*bottom_multiple_, wi, wo);
+    return DepthTerm{f, wi.z()};
+  }
+  return std::nullopt;
+}
 
 std::vector<DepthTerm> UnscatteredLight::btdf_terms(double theta_i, double theta_o, double phi) const {
   if (path_ == UnscatteredPath::None) return {};
   const auto [wi, wo] = transmission_directions(theta_i, theta_o, phi);
   std::vector<DepthTerm> terms = path_ == UnscatteredPath::TopThenBottom
                                      ? two_interface_btdf_terms(top_, bottom_, wi, wo)
-                                     : std::vector<DepthTerm>{*one_interface_term(path_, top_, bottom_, wi, wo)};
-  const double outer = outer_attenuation(wi, wo);
+                                     : std::vector<DepthTerm>{*one_interface_term(wi, wo)};
+  const double outer = weight_ * outer_attenuation(wi, wo);
   if (outer != 1.0) {
     for (DepthTerm& term : terms) term.coefficient *= outer;
   }
@@ -241,8 +275,21 @@ double UnscatteredLight::btdf(double theta_i, double theta_o, double phi) const 
   if (path_ == UnscatteredPath::None) return 0.0;
   if (path_ == UnscatteredPath::TopThenBottom) return sum_depth_terms(btdf_terms(theta_i, theta_o, phi), tau_);
   const auto [wi, wo] = transmission_directions(theta_i, theta_o, phi);
-  const DepthTerm term = *one_interface_term(path_, top_, bottom_, wi, wo);
-  return term.coefficient * attenuation(tau_, term.mu) * outer_attenuation(wi, wo);
+  const DepthTerm term = *one_interface_term(wi, wo);
+  return weight_ * term.coefficient * attenuation(tau_, term.mu) * outer_attenuation(wi, wo);
+}
+
+UnscatteredLight UnscatteredLight::scaled(double weight) const {
+  UnscatteredLight other = *this;
+  other.weight_ = weight;
+  return other;
+}
+
+bool UnscatteredLight::operator==(const UnscatteredLight& other) const {
+  return path_ == other.path_ && top_ == other.top_ && bottom_ == other.bottom_ && tau_ == other.tau_ &&
+         tau_before_ == other.tau_before_ && tau_after_ == other.tau_after_ && index_below_ == other.index_below_ &&
+         weight_ == other.weight_ && (top_multiple_ == nullptr) == (other.top_multiple_ == nullptr) &&
+         (bottom_multiple_ == nullptr) == (other.bottom_multiple_ == nullptr);
 }
 
 UnscatteredLight UnscatteredLight::at_depth(double tau) const {
@@ -252,10 +299,16 @@ UnscatteredLight UnscatteredLight::at_depth(double tau) const {
 }
 
 double UnscatteredLight::brdf(double theta_i, double theta_o, double phi) const {
-  if (path_ != UnscatteredPath::BottomOnly) return 0.0;
+  if (!reflects()) return 0.0;
   const Vec3 wi = direction_from_angles(theta_i, 0.0);
   const Vec3 wo = direction_from_angles(theta_o, phi);
-  return attenuation(tau_, wi.z()) * microfacet_brdf(bottom_, wi, wo) * attenuation(tau_, wo.z());
+  double value = top_multiple_ ? multiple_reflection(*top_multiple_, wi, wo, phi) : 0.0;
+  if (path_ == UnscatteredPath::BottomOnly) {
+    double f = microfacet_brdf(bottom_, wi, wo);
+    if (bottom_multiple_) f += multiple_reflection(*bottom_multiple_, wi, wo, phi);
+    value += attenuation(tau_, wi.z()) * f * attenuation(tau_, wo.z());
+  }
+  return weight_ * value;
 }
 
 std::vector<DepthTerm> two_interface_btdf_terms(const RoughDielectric& top, const RoughDielectric& bottom,

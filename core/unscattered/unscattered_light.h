@@ -17,15 +17,29 @@
 // f_t12, f_t23, f_r23 are the interfaces' microfacet BSDFs (core/interfaces/microfacet.h), radiance BTDFs, in 1/sr. The
 // solver removes exactly these paths from its ordinates (their node-sum images), so the tables carry only light that was
 // scattered at least once or reflected between the interfaces, which is smooth; LayerTables adds this part back.
+//
+// Under MicrofacetModel::Multiple each rough interface also scatters light more than once on its microsurface, into a
+// lobe of its own (core/interfaces/multiple_scattering.h, f_ms). Where one interface alone sends the light out, that
+// lobe is evaluated exactly here too, beside the single scattering above:
+//   every rough top (whatever is below):  f_R += f_ms,r12(omega_i, omega_o)                                       [1/sr]
+//   rough top, matched bottom:            f_T += f_ms,t12(omega_i -> omega_o) e^{-tau / |omega_o.z|}
+//   open top, rough bottom:               f_R += e^{-tau / mu_i} f_ms,r23(omega_i, omega_o) e^{-tau / mu_o}
+//                                         f_T += e^{-tau / mu_i} f_ms,t23(omega_i -> omega_o)
+// The lobe is forward and, at grazing light, as sharp in azimuth as a specular lobe: on the tables it would take
+// hundreds of Fourier modes. Through two interfaces its convolutions with the other's lobe are smooth, and stay in
+// the tables.
 // Light reflected by a rough bottom under a rough top without scattering, t12 R23 t21, stays in the tables: its lobe
 // is the bottom's reflection lobe (about 2 sigma3 wide inside, against sigma (1 - 1/eta) for a refracted one). Its
 // node image is put on four times the ordinates where it matters (core/unscattered/bottom_bounce.h).
 #pragma once
 
+#include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "core/interfaces/microfacet.h"
+#include "core/interfaces/multiple_scattering.h"
 
 namespace skinlayer {
 
@@ -59,9 +73,21 @@ class UnscatteredLight {
   // e^{-tau_after / |omega_o.z|} below the last (over a matched bottom); BottomOnly's reflection is then the first
   // interface's. Three or more rough crossings (a rough top, an interface between layers and a rough bottom) are
   // a convolution of their lobes, wider than each: None, and the light stays in the tables (core/solve/stack_solver.h).
-  explicit UnscatteredLight(const Material& material);
+  // `built`: lobes already built for the material's interfaces (a solve's kernels'), shared instead of rebuilt where
+  // one is the interface's.
+  explicit UnscatteredLight(const Material& material,
+                            std::span<const std::shared_ptr<const MultipleScatteringLobe>> built = {});
 
   UnscatteredPath path() const { return path_; }
+  // Whether brdf() can be nonzero: an open top over a rough interface, or a rough top's multiply scattered light.
+  bool reflects() const { return path_ == UnscatteredPath::BottomOnly || top_multiple_ != nullptr; }
+  // The multiply scattered lobes it evaluates (null where none): the top's (its reflection from above, and its
+  // transmission on TopOnly), and on BottomOnly the path's interface's, seen from the layer ("above" in its frame).
+  const MultipleScatteringLobe* top_multiple() const { return top_multiple_.get(); }
+  const MultipleScatteringLobe* bottom_multiple() const { return bottom_multiple_.get(); }
+  // The same light scaled by `weight`: a mix of channels that share it (core/series/weighted_tables.h).
+  UnscatteredLight scaled(double weight) const;
+  double weight() const { return weight_; }
 
   // The unscattered part of the layer BTDF and of the subsurface BRDF, in 1/sr (graphics convention, radians).
   double btdf(double theta_i, double theta_o, double phi) const;
@@ -84,11 +110,14 @@ class UnscatteredLight {
   // eta / eta3 otherwise; the centre of the unscattered BTDF lobe. Clamped at grazing.
   double straight_through_angle(double theta_i) const;
 
-  bool operator==(const UnscatteredLight&) const = default;
+  // The same light: the same paths, interfaces, depths and weight (the lobes follow from the interfaces).
+  bool operator==(const UnscatteredLight& other) const;
 
  private:
   UnscatteredPath path_ = UnscatteredPath::None;
+  void set_path(const Material& material);
   void set_stack_path(const Material& material);
+  std::optional<DepthTerm> one_interface_term(const Vec3& wi, const Vec3& wo) const;
   double outer_attenuation(const Vec3& wi, const Vec3& wo) const;  // e^{-tau_before/mu_i} e^{-tau_after/|wo.z|}
 
   RoughDielectric top_{};
@@ -97,6 +126,8 @@ class UnscatteredLight {
   double tau_before_ = 0.0;   // above the path's first interface, crossed along the incident direction
   double tau_after_ = 0.0;    // below its last, crossed along the exit direction
   double index_below_ = 1.0;  // n_below / n_above
+  double weight_ = 1.0;
+  std::shared_ptr<const MultipleScatteringLobe> top_multiple_, bottom_multiple_;  // immutable, shared by copies
 };
 
 // f_T of two rough interfaces in sequence (the TopThenBottom formula above) for unit vectors wi (z > 0) and wo

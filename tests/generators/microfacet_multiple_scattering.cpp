@@ -1,101 +1,163 @@
-// The generator of core/data/microfacet_multiple_scattering.csv: what a rough dielectric interface scatters more
-// than once on its microsurface, from the microsurface random walk (core/reference/microsurface_walk.h), tabulated
-// for core/interfaces/multiple_scattering.h.
+// The generator of core/data/microfacet_multiple_scattering.csv and core/data/microfacet_single_scattering_loss.csv:
+// the light a rough dielectric interface scatters more than once on its microsurface, its lobe on a grid of directions,
+// and the light single scattering leaves, which that lobe carries (core/interfaces/multiple_scattering_table.h).
 //
-// For each Beckmann sigma, relative index e = n_other / n_incident (light arriving from the side of index 1, e the
-// index beyond) and incident polar angle of the grids below, `kWalks` walks; those that met the microsurface more
-// than once are tallied by exit side and exit polar angle in kExitBins bins 5 degrees wide, whose centres are the
-// incident angles (so that the table's two directions share one grid). Each bin's value is the azimuthally averaged
-// BSDF of the multiply scattered light there, f = (walks in the bin / walks) / (pi (cos^2 lo - cos^2 hi)), in 1/sr:
-// reflection (back to the incident side) and transmission (beyond) in columns r0.. and t0...
+// For each Beckmann sigma and interface index E > 1 of the grids below, and each incident polar angle of the angle
+// grid from above and from below, the next-event estimate of core/reference/multiple_scattering_estimate.h (walks
+// until kWalksWithMeetings have met the microsurface twice or more) gives the BSDF at every exit polar angle of the
+// same grid, back and beyond, and at every azimuth of the azimuth grid. Reciprocity pairs the estimates, and their
+// mean is taken:
+//   reflection from above (kernel 0) and from below (kernel 1):  f(i, o, phi) = (f(i -> o) + f(o -> i)) / 2,
+//   transmission from above (kernel 2):  f(i, o, phi) = (f_above(i -> o) + E^2 f_below(o -> i)) / 2.
+// Its energy is matched to the single scattering's loss l at the grid angles (core's slope integrals;
+// core/interfaces/multiple_scattering_energy.h), which the loss table holds, and the lobe table holds its shape,
+// f(i, o) / sqrt(l(i) l(o)). A row holds one kernel and pair of polar angles over the azimuths, reflection only for
+// theta_o >= theta_i (the other half is its mirror): a unit (the row's largest value / kSteps) and each value as a
+// whole number of units, rounded. A value below kNegligible of its kernel's largest is written as 0, and a row of
+// zeros is left out.
 //
-//   cmake --build build --target microfacet-tables      (about 4 minutes on 2 cores)
+//   cmake --build build --target microfacet-tables      (about 25 minutes on 2 cores)
 //
-// writes the CSV in the source tree. The walks are seeded per row (from its indices), so the table is the same on
-// every run with the same thread count or any other.
+// writes both CSV files in the source tree; --sigmas= and --etas= take other grids (comma lists) for trials,
+// --output= and --loss-output= other files. The walks are seeded from each estimate's indices, so the tables are
+// the same on every run, whatever the thread count.
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <random>
+#include <span>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "core/conventions.h"
-#include "core/reference/microsurface_walk.h"
+#include "core/interfaces/interface_albedo.h"
+#include "core/interfaces/multiple_scattering_energy.h"
+#include "core/interfaces/multiple_scattering_table.h"
+#include "core/reference/multiple_scattering_estimate.h"
 
 namespace skinlayer {
 namespace {
 
-constexpr std::array<double, 13> kSigmas = {0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1.0};
-// Relative indices from the incident side: interfaces of eta in (1, 2.5] seen from above and from below.
-constexpr std::array<double, 21> kIndices = {0.4,  0.45, 0.5, 0.56, 0.63, 0.7, 0.77, 0.83, 0.9, 0.95, 1.0,
-                                             1.05, 1.1,  1.2, 1.3,  1.43, 1.6, 1.8,  2.0,  2.2, 2.5};
-// Incident polar angles, degrees: the centres of the exit bins, 2.5 to 87.5 in steps of 5.
-constexpr int kExitBins = 18;
-constexpr double kBinDegrees = 90.0 / kExitBins;
-constexpr std::array<double, kExitBins> kThetas = [] {
-  std::array<double, kExitBins> thetas{};
-  for (int k = 0; k < kExitBins; ++k) thetas[static_cast<std::size_t>(k)] = (k + 0.5) * kBinDegrees;
-  return thetas;
-}();
-constexpr long kWalks = 100000;
+std::vector<double> kSigmas = {0.05, 0.1, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0};
+// About 4 degrees of critical angle asin(1/E) apart, where the light from inside starts to be totally reflected.
+std::vector<double> kEtas = {1.05, 1.1, 1.15, 1.2, 1.27, 1.33, 1.4, 1.5, 1.6, 1.75, 1.95, 2.2, 2.5};
+// Azimuths phi = phi_o - phi_i in degrees, ascending, closest at the forward plane (180), where the lobe is sharp.
+constexpr std::array<double, 26> kPhis = {0.0,   30.0,  60.0,  90.0,  95.0,  100.0, 105.0, 110.0, 115.0,
+                                          120.0, 125.0, 130.0, 135.0, 140.0, 145.0, 150.0, 155.0, 160.0,
+                                          164.0, 168.0, 171.5, 174.5, 177.0, 178.5, 179.5, 180.0};
+// Polar angles 0 to 90 degrees in steps of 5; the grazing node is estimated at 89.5 degrees (no light leaves along
+// the horizon itself, where the BSDF is the limit of its values beside it).
+constexpr int kAngles = 19;
+constexpr long kWalksWithMeetings = 10'000;
+constexpr double kNegligible = 1e-4;
+constexpr double kSteps = 999.0;
 
-struct Row {
-  double sigma, index, mu;
-  std::array<double, kExitBins> reflection{}, transmission{};
-};
+double grid_degrees(int k) { return 5.0 * k; }
+std::vector<double> radians(std::span<const double> degrees) {
+  std::vector<double> result;
+  for (const double d : degrees) result.push_back(d * kPi / 180.0);
+  return result;
+}
+double estimated_degrees(int k) { return k == kAngles - 1 ? 89.5 : grid_degrees(k); }
 
-Row tabulate(std::size_t s, std::size_t e, std::size_t t) {
-  Row row{kSigmas[s], kIndices[e], std::cos(kThetas[t] * kPi / 180.0)};
-  if (row.index == 1.0) return row;  // no interface: nothing scatters
-  const MicrosurfaceWalk walk(RoughDielectric{row.index, row.sigma, MicrofacetModel::Multiple});
-  std::mt19937_64 random(1000003ULL * s + 1009ULL * e + t + 1);
-  const Vec3 wi = direction_from_angles(kThetas[t] * kPi / 180.0, 0.0);
-  for (long k = 0; k < kWalks; ++k) {
-    const MicrosurfaceExit exit = walk.walk(wi, random);
-    if (exit.order < 2) continue;
-    const double theta = std::acos(std::min(std::abs(exit.direction.z()), 1.0)) * 180.0 / kPi;
-    const int bin = std::min(static_cast<int>(theta / kBinDegrees), kExitBins - 1);
-    std::array<double, kExitBins>& tally = exit.direction.z() > 0.0 ? row.reflection : row.transmission;
-    tally[static_cast<std::size_t>(bin)] += 1.0;
-  }
-  for (int b = 0; b < kExitBins; ++b) {  // counts to the bin's mean BSDF: / (walks x its projected solid angle)
-    const double lo = std::cos(b * kBinDegrees * kPi / 180.0), hi = std::cos((b + 1) * kBinDegrees * kPi / 180.0);
-    const double projected = kPi * (lo * lo - hi * hi);
-    row.reflection[static_cast<std::size_t>(b)] /= static_cast<double>(kWalks) * projected;
-    row.transmission[static_cast<std::size_t>(b)] /= static_cast<double>(kWalks) * projected;
-  }
-  return row;
+std::vector<double> parse_list(const std::string& text) {
+  std::vector<double> values;
+  std::istringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) values.push_back(std::stod(item));
+  return values;
 }
 
-std::string format(double value) {
-  std::ostringstream out;
-  out.precision(6);
-  out << value;
-  return out.str();
+// One (sigma, eta): the estimates from above and below at every incident angle.
+struct Block {
+  std::array<std::vector<MultipleScatteringEstimate>, 2> from;  // [0] above, [1] below; [incident angle]
+};
+
+// The lobe of one (sigma, E) on the grid, each kernel the mean of the reciprocal estimates: reflection from above and
+// from below, f(i, o) = (f(i -> o) + f(o -> i)) / 2, and transmission from above, (f_above(i -> o) + E^2 f_below(o ->
+// i)) / 2. At normal incidence the azimuth means nothing, and the azimuths' mean is each one's value.
+MultipleScatteringSamples reciprocal_lobe(const Block& block, double eta) {
+  const std::size_t azimuths = kPhis.size();
+  const auto estimate = [&](int s, int i, int e, int o, std::size_t j) {
+    const MultipleScatteringEstimate& from = block.from[static_cast<std::size_t>(s)][static_cast<std::size_t>(i)];
+    if (i != 0) return from.at(e, static_cast<std::size_t>(o), j);
+    double mean = 0.0;
+    for (std::size_t k = 0; k < azimuths; ++k) mean += from.at(e, static_cast<std::size_t>(o), k) / azimuths;
+    return mean;
+  };
+  MultipleScatteringSamples lobe;
+  lobe.azimuths = radians(kPhis);
+  for (int kernel = 0; kernel < 3; ++kernel) {
+    Eigen::MatrixXd& k = lobe.kernels[static_cast<std::size_t>(kernel)];
+    k.resize(kAngles * kAngles, static_cast<Eigen::Index>(azimuths));
+    for (int i = 0; i < kAngles; ++i) {
+      for (int o = 0; o < kAngles; ++o) {
+        for (std::size_t j = 0; j < azimuths; ++j) {
+          k(i * kAngles + o, static_cast<Eigen::Index>(j)) =
+              kernel < 2 ? 0.5 * (estimate(kernel, i, 0, o, j) + estimate(kernel, o, 0, i, j))
+                         : 0.5 * (estimate(0, i, 1, o, j) + eta * eta * estimate(1, o, 1, i, j));
+        }
+      }
+    }
+  }
+  return lobe;
+}
+
+// The light single scattering leaves at the grid angles (core's slope integrals), from above or from below.
+std::vector<double> single_scattering_losses(double sigma, double eta, const std::vector<double>& angles, bool above) {
+  const RoughDielectric interface { eta, sigma, MicrofacetModel::Multiple };
+  std::vector<double> losses;
+  for (const double theta : angles) {
+    const Vec3 wi = direction_from_angles(theta, 0.0);
+    losses.push_back(
+        std::max(0.0, single_scattering_albedo(interface, above ? wi : Vec3(wi.x(), wi.y(), -wi.z())).loss()));
+  }
+  return losses;
+}
+
+std::string format(double value, int digits = 6) {
+  if (value == 0.0) return "0";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return text;
 }
 
 int run(int argc, char** argv) {
-  std::string output;
+  std::string output = "microfacet_multiple_scattering.csv", loss_output = "microfacet_single_scattering_loss.csv";
   for (int a = 1; a < argc; ++a) {
     const std::string argument = argv[a];
     if (argument.rfind("--output=", 0) == 0) output = argument.substr(9);
+    if (argument.rfind("--loss-output=", 0) == 0) loss_output = argument.substr(14);
+    if (argument.rfind("--sigmas=", 0) == 0) kSigmas = parse_list(argument.substr(9));
+    if (argument.rfind("--etas=", 0) == 0) kEtas = parse_list(argument.substr(7));
   }
-  const std::size_t count = kSigmas.size() * kIndices.size() * kThetas.size();
-  std::vector<Row> rows(count);
+  std::vector<double> angles;
+  for (int k = 0; k < kAngles; ++k) angles.push_back(estimated_degrees(k) * kPi / 180.0);
+  const std::vector<double> phis = radians(kPhis);
+  const std::size_t blocks = kSigmas.size() * kEtas.size();
+  std::vector<Block> results(blocks);
+  for (Block& block : results) {
+    for (auto& side : block.from) side.resize(kAngles);
+  }
+  const std::size_t count = blocks * 2 * kAngles;
   std::atomic<std::size_t> next{0}, done{0};
   const auto work = [&] {
-    for (std::size_t i = next++; i < count; i = next++) {
-      const std::size_t s = i / (kIndices.size() * kThetas.size());
-      const std::size_t e = (i / kThetas.size()) % kIndices.size();
-      rows[i] = tabulate(s, e, i % kThetas.size());
+    for (std::size_t task = next++; task < count; task = next++) {
+      const std::size_t b = task / (2 * kAngles), side = (task / kAngles) % 2, i = task % kAngles;
+      const double sigma = kSigmas[b / kEtas.size()], eta = kEtas[b % kEtas.size()];
+      MultipleScatteringEstimateOptions options;
+      options.walks_with_meetings = kWalksWithMeetings;
+      options.seed = 1 + task;
+      results[b].from[side][i] = estimate_multiple_scattering(RoughDielectric{eta, sigma, MicrofacetModel::Multiple},
+                                                              angles[i], side == 0, angles, phis, options);
       const std::size_t finished = ++done;
-      if (finished % 100 == 0) std::cerr << "microfacet tables: " << finished << " of " << count << " rows\n";
+      if (finished % 50 == 0 || finished == count) {
+        std::cerr << "microfacet tables: " << finished << " of " << count << " estimates\n";
+      }
     }
   };
   {
@@ -104,23 +166,60 @@ int run(int argc, char** argv) {
     for (unsigned h = 0; h < helpers; ++h) threads.emplace_back(work);
     work();
   }
-  std::ostringstream csv;
-  csv << "sigma,index,mu_i";
-  for (int b = 0; b < kExitBins; ++b) csv << ",r" << b;
-  for (int b = 0; b < kExitBins; ++b) csv << ",t" << b;
+
+  std::ostringstream csv, loss_csv;
+  csv << "sigma,eta,kernel,theta_i,theta_o,unit";
+  for (std::size_t j = 0; j < kPhis.size(); ++j) csv << ",p" << format(kPhis[j]);
   csv << "\n";
-  for (const Row& row : rows) {
-    csv << format(row.sigma) << "," << format(row.index) << "," << format(row.mu);
-    for (const double v : row.reflection) csv << "," << format(v);
-    for (const double v : row.transmission) csv << "," << format(v);
-    csv << "\n";
+  loss_csv << "sigma,eta,side";
+  for (int k = 0; k < kAngles; ++k) loss_csv << ",l" << format(grid_degrees(k));
+  loss_csv << "\n";
+  long written = 0, left_out = 0;
+  for (std::size_t b = 0; b < blocks; ++b) {
+    const double sigma = kSigmas[b / kEtas.size()], eta = kEtas[b % kEtas.size()];
+    // The walk's lobe, carrying exactly the light single scattering leaves, then as shapes: f / sqrt(l_i l_o).
+    MultipleScatteringSamples lobe = reciprocal_lobe(results[b], eta);
+    const std::vector<double> above = single_scattering_losses(sigma, eta, angles, true);
+    const std::vector<double> below = single_scattering_losses(sigma, eta, angles, false);
+    match_multiple_scattering_energy(lobe, above, below, eta);
+    for (int side = 0; side < 2; ++side) {
+      loss_csv << format(sigma) << "," << format(eta) << "," << side;
+      for (const double l : side == 0 ? above : below) loss_csv << "," << format(l, 8);
+      loss_csv << "\n";
+    }
+    for (int kernel = 0; kernel < 3; ++kernel) {
+      const std::vector<double>& incident = kernel == 1 ? below : above;
+      const std::vector<double>& exit = kernel == 0 ? above : below;
+      Eigen::MatrixXd shape = lobe.kernels[static_cast<std::size_t>(kernel)];
+      for (int i = 0; i < kAngles; ++i) {
+        for (int o = 0; o < kAngles; ++o) {
+          const double norm = std::sqrt(incident[static_cast<std::size_t>(i)] * exit[static_cast<std::size_t>(o)]);
+          shape.row(i * kAngles + o) *= norm > 0.0 ? 1.0 / norm : 0.0;
+        }
+      }
+      const double largest = shape.maxCoeff();
+      for (int i = 0; i < kAngles; ++i) {
+        for (int o = kernel < 2 ? i : 0; o < kAngles; ++o) {
+          Eigen::RowVectorXd row = shape.row(i * kAngles + o);
+          row = (row.array() > kNegligible * largest).select(row, 0.0);
+          if (row.maxCoeff() <= 0.0) {
+            ++left_out;
+            continue;
+          }
+          ++written;
+          const double unit = row.maxCoeff() / kSteps;
+          csv << format(sigma) << "," << format(eta) << "," << kernel << "," << format(grid_degrees(i)) << ","
+              << format(grid_degrees(o)) << "," << format(unit, 4);
+          for (const double v : row) csv << "," << std::lround(v / unit);
+          csv << "\n";
+        }
+      }
+    }
   }
-  if (output.empty()) {
-    std::cout << csv.str();
-  } else {
-    std::ofstream(output) << csv.str();
-    std::cerr << "microfacet tables: wrote " << output << "\n";
-  }
+  std::cerr << "microfacet tables: " << written << " rows written, " << left_out << " negligible rows left out\n";
+  std::ofstream(output) << csv.str();
+  std::ofstream(loss_output) << loss_csv.str();
+  std::cerr << "microfacet tables: wrote " << output << " and " << loss_output << "\n";
   return 0;
 }
 

@@ -63,8 +63,30 @@ TEST(WeightedTables, RefusesMismatchedGridsWeightsAndUnscatteredLight) {
                std::invalid_argument);
   EXPECT_THROW(weighted_sum(std::vector<LayerTables>{}, std::vector<double>{}), std::invalid_argument);
   Material thin;  // the paper's default: a finite layer under rough interfaces carries unscattered light
-  ASSERT_NE(solve(thin).unscattered().path(), UnscatteredPath::None);
-  EXPECT_THROW(weighted_sum(std::vector<LayerTables>{solve(thin)}, std::vector<double>{1.0}), std::invalid_argument);
+  thin.tau = 0.5;
+  Material thick = thin;
+  thick.tau = 1.0;
+  ASSERT_NE(solve(thin, small).unscattered().path(), UnscatteredPath::None);
+  EXPECT_THROW(weighted_sum(std::vector<LayerTables>{solve(thin, small), solve(thick, small)},
+                            std::vector<double>{0.5, 0.5}),
+               std::invalid_argument);
+}
+
+// One unscattered light in every table (a rough top's multiply scattered reflection does not depend on the albedo)
+// adds up: the sum carries it weighted by the sum of the weights.
+TEST(WeightedTables, TheSameUnscatteredLightAddsUpByItsWeights) {
+  Material dark;
+  dark.tau = std::numeric_limits<double>::infinity();
+  dark.albedo = 0.3;
+  Material bright = dark;
+  bright.albedo = 0.9;
+  const std::vector<LayerTables> tables = {solve(dark), solve(bright)};
+  ASSERT_TRUE(tables[0].unscattered().reflects());  // the default interfaces scatter more than once
+  const LayerTables sum = weighted_sum(tables, std::vector<double>{0.3, 0.5});
+  EXPECT_DOUBLE_EQ(sum.unscattered().weight(), 0.8);
+  const double one = tables[0].unscattered().brdf(0.7, 1.1, 2.5);
+  ASSERT_GT(one, 0.0);
+  EXPECT_NEAR(sum.unscattered().brdf(0.7, 1.1, 2.5), 0.8 * one, 1e-12 * one);
 }
 
 }  // namespace

@@ -24,11 +24,9 @@ TEST(ConservativeProfile, PapersHalfSpaceTotalsAreTheSolvers) {
   test::expect_totals_match_the_solver(m);
 }
 
-// Against the walk under the paper's single-scattering interfaces (§21.17 says why not the default ones at sigma 0.5),
-// on the 24 nodes of light through a finite layer.
+// Against the walk under the default interfaces, on the 24 nodes of light through a finite layer.
 TEST(ConservativeProfile, PapersLayerMatchesTheWalk) {
-  Material m;
-  m.microfacet = MicrofacetModel::Single;
+  const Material m;
   test::expect_profile_matches_the_walk(
       profile_layer(m), m, test::transmitted_radiance_options(),
       {0.0, 0.1, 0.2, 0.35, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0, 4.0, 6.0, 8.0, 12.0, 16.0});
