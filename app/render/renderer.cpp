@@ -1,6 +1,7 @@
 #include "app/render/renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
@@ -28,6 +29,15 @@ gl::Program build(std::string_view fragment, bool sphere) {
 }
 
 GLint location(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+
+// The most azimuth samples of a multiply scattered lobe the shaders hold (kMultipleMaxAzimuths in
+// shaders/unscattered.glsl).
+constexpr int kMultipleMaxAzimuths = 32;
+
+// The lobe whose reflection the shaders evaluate: a rough top's, or on BottomOnly its interface's (at most one).
+const MultipleScatteringLobe* multiple_reflection_lobe(const UnscatteredLight& light) {
+  return light.top_multiple() != nullptr ? light.top_multiple() : light.bottom_multiple();
+}
 
 // Every table texture is filtered linearly and clamped to its edges (shaders/table_layout.h).
 void set_linear_clamped(GLenum target) {
@@ -61,11 +71,14 @@ void bind_refilled_2d(GLuint program, const char* name, int unit, GLuint texture
 // default, 16 modes, came out 15% dark). So a pass is drawn in pieces whose loops stay well under the limit. Loop
 // iterations per sample of shaders/env_accumulate.frag: three table sums of `modes` terms (tables.glsl), the two
 // binary searches of the environment's CDFs (environment.glsl, about log2 of each side), the Sobol point's bits
-// (at most 32) and the sample loop itself.
+// (at most 32), the multiply scattered lobe's (unscattered.glsl: its azimuth bisection, two polar stencils of 4 and
+// their 4 x 4 pairs; twice their count, which is what one call of 1024 samples needed to add up as 64 calls of 16 do,
+// tests/app/render/environment_render_test.cpp) and the sample loop itself.
 int samples_per_draw(int modes, int environment_width, int environment_height) {
   const int searches = std::bit_width(static_cast<unsigned>(environment_width) + 1u) +
                        std::bit_width(static_cast<unsigned>(environment_height) + 1u);
-  const int per_sample = 3 * modes + searches + 32 + 1;
+  constexpr int kMultipleLobeIterations = 2 * (std::bit_width(static_cast<unsigned>(kMultipleMaxAzimuths)) + 2 * 4 + 4 + 4 * 4);
+  const int per_sample = 3 * modes + searches + 32 + kMultipleLobeIterations + 1;
   return std::max(1, 49152 / per_sample);
 }
 
@@ -96,6 +109,7 @@ Renderer::Renderer()
     slots_[slot].reflection = gl::create_texture();
     slots_[slot].transmission = gl::create_texture();
     slots_[slot].spread = gl::create_texture();
+    slots_[slot].multiple_lobe = gl::create_texture();
     upload(empty, slot);
     upload_spread({}, slot);
   }
@@ -157,6 +171,25 @@ void Renderer::upload(TableTextureData tables, int slot) {
   TableSlot& target = slots_.at(static_cast<std::size_t>(slot));
   upload_array(target.reflection.get(), tables.size, tables.modes, tables.reflection);
   upload_array(target.transmission.get(), tables.size, tables.modes, tables.transmission);
+  // The multiply scattered reflection lobe's samples (shaders/unscattered.glsl), or one zero texel.
+  const MultipleScatteringLobe* lobe = multiple_reflection_lobe(tables.unscattered);
+  std::vector<float> samples(1, 0.0f);
+  int azimuths = 1, rows = 1;
+  if (lobe != nullptr) {
+    const Eigen::MatrixXd& values = lobe->reflection_samples(true);
+    azimuths = static_cast<int>(values.cols());
+    rows = static_cast<int>(values.rows());
+    samples.resize(static_cast<std::size_t>(values.size()));
+    for (Eigen::Index r = 0; r < values.rows(); ++r) {
+      for (Eigen::Index c = 0; c < values.cols(); ++c) {
+        samples[static_cast<std::size_t>(r * values.cols() + c)] = static_cast<float>(values(r, c));
+      }
+    }
+  }
+  glBindTexture(GL_TEXTURE_2D, target.multiple_lobe.get());
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, azimuths, rows, 0, GL_RED, GL_FLOAT, samples.data());
+  set_linear_clamped(GL_TEXTURE_2D);
+  glBindTexture(GL_TEXTURE_2D, 0);
   target.data = std::move(tables);
   gl::check_errors("Renderer::upload");
 }
@@ -190,6 +223,21 @@ void Renderer::bind_tables(GLuint program, int slot) const {
   glUniform1f(location(program, "u_bottom_eta"), static_cast<float>(light.bottom().eta));
   glUniform1f(location(program, "u_bottom_sigma"), static_cast<float>(light.bottom().sigma));
   glUniform1i(location(program, "u_bottom_microfacet"), light.bottom().microfacet == MicrofacetModel::Multiple ? 1 : 0);
+  // The multiply scattered reflection lobe: a rough top's, or an open top's interface under the slab.
+  const MultipleScatteringLobe* lobe = multiple_reflection_lobe(light);
+  glUniform1i(location(program, "u_multiple_reflects"),
+              lobe == nullptr ? 0 : (light.path() == UnscatteredPath::BottomOnly ? 2 : 1));
+  glUniform1f(location(program, "u_multiple_weight"), static_cast<float>(light.weight()));
+  std::array<float, kMultipleMaxAzimuths> azimuths{};
+  const std::size_t count = lobe != nullptr ? lobe->azimuths().size() : 0;
+  if (count > azimuths.size()) throw std::logic_error("bind_tables: the lobe has more azimuths than the shader holds");
+  for (std::size_t a = 0; a < count; ++a) azimuths[a] = static_cast<float>(lobe->azimuths()[a]);
+  glUniform1fv(location(program, "u_multiple_azimuths"), kMultipleMaxAzimuths, azimuths.data());
+  glUniform1i(location(program, "u_multiple_azimuth_count"), static_cast<int>(count));
+  glActiveTexture(GL_TEXTURE10);
+  glBindTexture(GL_TEXTURE_2D, tables.multiple_lobe.get());
+  glUniform1i(location(program, "u_multiple_samples"), 10);
+  glActiveTexture(GL_TEXTURE0);
 }
 
 GLuint Renderer::begin_view(GLuint program, const SurfaceParams& surface, const Viewport& viewport, double margin,

@@ -144,6 +144,7 @@ class Renderer {
     TableTextureData data;  // what the textures hold
     gl::Texture spread;     // D(theta), RGB, one row
     int spread_samples = 0;
+    gl::Texture multiple_lobe;  // the multiply scattered reflection's samples, R (shaders/unscattered.glsl)
   };
 
   void bind_tables(GLuint program, int slot) const;

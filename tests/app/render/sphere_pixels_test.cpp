@@ -184,10 +184,15 @@ TEST(SpherePixels, SpreadSubsurfaceMatchesTheCpuConvolution) {
       const auto [cos_i, theta_i, theta_o, phi] = *a;
       const double surface = cos_i > 0.0 ? brdf_surface(tables.material.layer, theta_i, theta_o, phi) * cos_i : 0.0;
       for (int c = 0; c < 3; ++c) {
-        const double subsurface = tables.channels[static_cast<std::size_t>(c)].brdf_subsurface(
-            std::min(theta_i, kSpreadMaxTheta), theta_o, phi);
+        // The unscattered light (here the top's multiply scattered reflection) leaves where the light falls, as the
+        // surface term does; the scattered light is spread.
+        const LayerTables& channel = tables.channels[static_cast<std::size_t>(c)];
+        const double scattered = channel.brdf_scattered(std::min(theta_i, kSpreadMaxTheta), theta_o, phi);
+        const double unscattered =
+            cos_i > 0.0 ? channel.unscattered().brdf(theta_i, theta_o, phi) * cos_i : 0.0;
         const double expected =
-            (surface + subsurface * spreads[static_cast<std::size_t>(c)](theta_i)) * scene.sphere.irradiance;
+            (surface + unscattered + scattered * spreads[static_cast<std::size_t>(c)](theta_i)) *
+            scene.sphere.irradiance;
         const double gpu = pixels[(static_cast<std::size_t>(y) * size + x) * 4 + static_cast<std::size_t>(c)];
         EXPECT_NEAR(gpu, expected, 2e-3 * expected + 2e-5) << "pixel " << x << "," << y << " channel " << c;
       }

@@ -82,13 +82,19 @@ TEST(SpectralColorSolve, EachChannelIsTheWeightedSumOfTheWavelengthsSolves) {
   EXPECT_GT(tables.albedo[1].reflectance(), tables.albedo[2].reflectance());
 }
 
-// The subsurface reflectance at theta_i that a channel's table holds: 2 pi int S_0(theta_i, theta) cos sin d theta.
+// The subsurface reflectance at theta_i that a channel's table holds: 2 pi int S_0(theta_i, theta) cos sin d theta,
+// and its unscattered light's (the top's multiply scattered reflection, not uniform in azimuth), 2 int_0^pi over phi.
 double table_reflectance(const LayerTables& table, double theta_i) {
   const QuadratureRule theta = gauss_legendre(96, 0.0, 0.5 * kPi);
+  const QuadratureRule phi = gauss_legendre(96, 0.0, kPi);
   double sum = 0.0;
   for (int a = 0; a < theta.size(); ++a) {
     const double t = theta.nodes[a];
-    sum += 2.0 * kPi * theta.weights[a] * std::cos(t) * std::sin(t) * table.reflection_mode(0, theta_i, t);
+    double unscattered = 0.0;
+    for (int b = 0; b < phi.size(); ++b) {
+      unscattered += 2.0 * phi.weights[b] * table.unscattered().brdf(theta_i, t, phi.nodes[b]);
+    }
+    sum += theta.weights[a] * std::cos(t) * std::sin(t) * (2.0 * kPi * table.reflection_mode(0, theta_i, t) + unscattered);
   }
   return sum;
 }
