@@ -76,7 +76,7 @@ std::string validate_usage() {
   return "Usage: skinlayer validate [--quick] [-o DIR] [--set NAMES] [--seed N] [--threads N] [--microfacet M]\n"
          "\n"
          "Checks the solver against an independent Monte Carlo random walk through the same layer, over a grid of\n"
-         "parameter sets (the paper's figure settings; g 0, 0.5, 0.9; Ω 0.5, 0.99, 1; σ 0.1, 0.5, 1; η 1, 1.4, 2;\n"
+         "parameter sets (the paper's figure settings; g 0, 0.5, 0.9; Ω 0.5, 0.99, 1; σ 0.1, 0.5, 1; η 1, 1.2, 1.4, 2;\n"
          "thin and semi-infinite layers; air, matched and Lambertian bottoms). For each set it compares the\n"
          "directional albedos and the BSDF in angular bins in and across the plane of incidence, and prints the\n"
          "differences in Monte Carlo standard errors and in relative terms. A set agrees when every judged\n"
@@ -87,9 +87,8 @@ std::string validate_usage() {
          "  --seed N           Monte Carlo seed of the grid's first set; set k of the grid uses N + k (default 1)\n"
          "  --threads N        Monte Carlo threads, a whole number in [1, 256] (default: the cores)\n"
          "  --microfacet M     the interfaces of every set, multiple or single (default multiple). Under multiple\n"
-         "                     the photons walk on the microsurface; the solver keeps that light as a lobe uniform\n"
-         "                     in azimuth, so bins in the plane of incidence differ by up to ~15% where it matters\n"
-         "                     (rings of exit angle agree); single is Stam 2001's model, which agrees everywhere.\n"
+         "                     the photons walk on the microsurface, and the solver's interfaces keep the light\n"
+         "                     that meets it more than once; single is Stam 2001's model, where that light is lost.\n"
          "Exit status: 0 when every set agrees, 1 when any set disagrees.\n";
 }
 

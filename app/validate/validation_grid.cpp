@@ -159,6 +159,17 @@ std::vector<ValidationSet> validation_grid() {
   coat.below = {{INFINITY, 0.9, 0.3, std::nullopt}};
   grid.push_back(
       set("stack-thin-over-deep", "a thin layer (T 0.9, g 0.8) over a semi-infinite one (Ω 0.9, g 0.3)", coat, 30.0));
+  // The light that meets the microsurface more than once (issue 53), where its lobe carries the most: grazing light
+  // on a thin layer, whose interfaces send it back and forth; the roughest interfaces on a thin layer; and a low
+  // index contrast, where that light leaves near the refracted direction.
+  Material thin_grazing = thin;
+  grid.push_back(set("thin-grazing", "the thin layer (T 0.9, g 0.5, Ω 0.99) lit at 80 degrees", thin_grazing, 80.0));
+  Material rough_thin = thin;
+  rough_thin.sigma = 1.0;
+  grid.push_back(set("sigma-1-thin", "σ 1 on both interfaces of a thin layer (T 0.9, g 0.5, Ω 0.99)", rough_thin, 60.0));
+  Material low_contrast = paper;
+  low_contrast.eta = 1.2;
+  grid.push_back(set("eta-1.2", "η 1.2 on both interfaces of the paper's layer", low_contrast, 45.0));
   for (std::size_t k = 0; k < grid.size(); ++k) grid[k].grid_index = k;
   return grid;
 }
