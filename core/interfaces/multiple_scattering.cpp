@@ -223,6 +223,28 @@ double MultipleScatteringLobe::energy(bool from_above, bool reflected, double mu
                   Eigen::Map<const Eigen::RowVectorXd>(w.data(), static_cast<Eigen::Index>(w.size())).dot(energies));
 }
 
+MultipleScatteringReflectionSeries::MultipleScatteringReflectionSeries(const MultipleScatteringLobe& lobe,
+                                                                       bool from_above, int modes) {
+  if (lobe.modes() == 0 || modes <= 0) return;
+  coefficients_ = LogLinearAzimuthSeries(lobe.azimuths(), modes).coefficients(lobe.reflection_samples(from_above));
+}
+
+void MultipleScatteringReflectionSeries::add_to(std::vector<double>& series, double mu_i, double mu_o,
+                                                double scale) const {
+  if (coefficients_.size() == 0) return;
+  if (series.size() < static_cast<std::size_t>(modes())) series.resize(static_cast<std::size_t>(modes()), 0.0);
+  const PolarStencil si = polar_grid_stencil(mu_i), so = polar_grid_stencil(mu_o);
+  Eigen::Map<Eigen::RowVectorXd> out(series.data(), modes());
+  for (std::size_t p = 0; p < 4; ++p) {
+    for (std::size_t q = 0; q < 4; ++q) {
+      const double w = scale * si.weight[p] * so.weight[q];
+      if (w == 0.0) continue;
+      out += w * coefficients_.row(static_cast<Eigen::Index>(static_cast<std::size_t>(si.index[p]) * kAngles +
+                                                             static_cast<std::size_t>(so.index[q])));
+    }
+  }
+}
+
 std::optional<MultipleScatteringLobe> multiple_scattering_lobe(const RoughDielectric& interface, int modes) {
   if (!has_multiple_scattering(interface)) return std::nullopt;
   return MultipleScatteringLobe(interface, modes);

@@ -101,6 +101,21 @@ class MultipleScatteringLobe {
   std::array<Eigen::VectorXd, 2> reflected_, transmitted_;
 };
 
+// The reflection of a lobe from one side as a Fourier series of many modes at any pair of cosines, for exports,
+// where a grazing lobe wants hundreds: each grid pair's series computed once (the exact cosine series of its samples,
+// LogLinearAzimuthSeries), and the pairs weighted as the polar interpolation weighs them, which is exact for
+// reflection_at, unclamped:  f(mu_i, mu_o, phi) = sum_m c_m cos(m phi)   [1/sr, graphics convention].
+class MultipleScatteringReflectionSeries {
+ public:
+  MultipleScatteringReflectionSeries(const MultipleScatteringLobe& lobe, bool from_above, int modes);
+  // c_0 ... c_{modes - 1} at the pair, times `scale`, added into `series` (grown to `modes` if shorter).
+  void add_to(std::vector<double>& series, double mu_i, double mu_o, double scale) const;
+  int modes() const { return static_cast<int>(coefficients_.cols()); }
+
+ private:
+  Eigen::MatrixXd coefficients_;  // per grid pair (row i * angles + o), its modes
+};
+
 // The interface's lobe with `modes` modes, or none where it keeps no multiply scattered light
 // (has_multiple_scattering).
 std::optional<MultipleScatteringLobe> multiple_scattering_lobe(const RoughDielectric& interface, int modes);

@@ -230,13 +230,10 @@ std::pair<Vec3, Vec3> transmission_directions(double theta_i, double theta_o, do
 }
 
 // A lobe's transmission from above to the exit direction below (wi at azimuth 0, so wo's azimuth is the relative one,
-// graphics convention: pi forward), and its reflection; each clamped at 0 where its polar interpolation dips below
+// graphics convention: pi forward), clamped at 0 where its polar interpolation dips below
 // (core/interfaces/multiple_scattering.h).
 double multiple_transmission(const MultipleScatteringLobe& lobe, const Vec3& wi, const Vec3& wo) {
   return std::max(0.0, lobe.transmission_at(true, wi.z(), -wo.z(), std::atan2(wo.y(), wo.x())));
-}
-double multiple_reflection(const MultipleScatteringLobe& lobe, const Vec3& wi, const Vec3& wo, double phi) {
-  return std::max(0.0, lobe.reflection_at(true, wi.z(), wo.z(), phi));
 }
 
 }  // namespace
@@ -298,17 +295,32 @@ UnscatteredLight UnscatteredLight::at_depth(double tau) const {
   return other;
 }
 
-double UnscatteredLight::brdf(double theta_i, double theta_o, double phi) const {
-  if (!reflects()) return 0.0;
+double UnscatteredLight::brdf_single(double theta_i, double theta_o, double phi) const {
+  if (path_ != UnscatteredPath::BottomOnly) return 0.0;
   const Vec3 wi = direction_from_angles(theta_i, 0.0);
   const Vec3 wo = direction_from_angles(theta_o, phi);
-  double value = top_multiple_ ? multiple_reflection(*top_multiple_, wi, wo, phi) : 0.0;
-  if (path_ == UnscatteredPath::BottomOnly) {
-    double f = microfacet_brdf(bottom_, wi, wo);
-    if (bottom_multiple_) f += multiple_reflection(*bottom_multiple_, wi, wo, phi);
-    value += attenuation(tau_, wi.z()) * f * attenuation(tau_, wo.z());
+  return weight_ * attenuation(tau_, wi.z()) * microfacet_brdf(bottom_, wi, wo) * attenuation(tau_, wo.z());
+}
+
+std::vector<UnscatteredLight::MultipleReflection> UnscatteredLight::multiple_reflections(double theta_i,
+                                                                                        double theta_o) const {
+  std::vector<MultipleReflection> parts;
+  if (top_multiple_) parts.push_back({top_multiple_.get(), weight_});
+  if (bottom_multiple_ && path_ == UnscatteredPath::BottomOnly) {
+    parts.push_back({bottom_multiple_.get(), weight_ * attenuation(tau_, std::cos(theta_i)) *
+                                                 attenuation(tau_, std::cos(theta_o))});
   }
-  return weight_ * value;
+  return parts;
+}
+
+double UnscatteredLight::brdf(double theta_i, double theta_o, double phi) const {
+  if (!reflects()) return 0.0;
+  double value = brdf_single(theta_i, theta_o, phi);
+  const double mu_i = std::cos(theta_i), mu_o = std::cos(theta_o);
+  for (const MultipleReflection& part : multiple_reflections(theta_i, theta_o)) {
+    value += part.factor * std::max(0.0, part.lobe->reflection_at(true, mu_i, mu_o, phi));
+  }
+  return value;
 }
 
 std::vector<DepthTerm> two_interface_btdf_terms(const RoughDielectric& top, const RoughDielectric& bottom,

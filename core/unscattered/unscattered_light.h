@@ -21,7 +21,7 @@
 // Under MicrofacetModel::Multiple each rough interface also scatters light more than once on its microsurface, into a
 // lobe of its own (core/interfaces/multiple_scattering.h, f_ms). Where one interface alone sends the light out, that
 // lobe is evaluated exactly here too, beside the single scattering above:
-//   every rough top (whatever is below):  f_R += f_ms,r12(omega_i, omega_o)                                       [1/sr]
+//   every rough top (whatever is below):  f_R += f_ms,r12(omega_i, omega_o)                                      [1/sr]
 //   rough top, matched bottom:            f_T += f_ms,t12(omega_i -> omega_o) e^{-tau / |omega_o.z|}
 //   open top, rough bottom:               f_R += e^{-tau / mu_i} f_ms,r23(omega_i, omega_o) e^{-tau / mu_o}
 //                                         f_T += e^{-tau / mu_i} f_ms,t23(omega_i -> omega_o)
@@ -85,6 +85,15 @@ class UnscatteredLight {
   // transmission on TopOnly), and on BottomOnly the path's interface's, seen from the layer ("above" in its frame).
   const MultipleScatteringLobe* top_multiple() const { return top_multiple_.get(); }
   const MultipleScatteringLobe* bottom_multiple() const { return bottom_multiple_.get(); }
+  // brdf() in its parts: the open top's single scattering off its interface (BottomOnly; 0 otherwise), and the
+  // multiply scattered lobes, each with the factor it enters with (the weight, and on BottomOnly the slab's
+  // attenuation both ways at the pair): brdf = brdf_single + sum of factor * max(0, lobe.reflection_at(true, ...)).
+  double brdf_single(double theta_i, double theta_o, double phi) const;
+  struct MultipleReflection {
+    const MultipleScatteringLobe* lobe;
+    double factor;
+  };
+  std::vector<MultipleReflection> multiple_reflections(double theta_i, double theta_o) const;
   // The same light scaled by `weight`: a mix of channels that share it (core/series/weighted_tables.h).
   UnscatteredLight scaled(double weight) const;
   double weight() const { return weight_; }

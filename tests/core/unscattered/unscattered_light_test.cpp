@@ -50,7 +50,7 @@ TEST(UnscatteredLight, MatchedBottomWithoutScatteringIsTheClosedFormBetweenNodes
         for (const double phi_deg : {0.0, 90.0, 180.0}) {
           const double to = degrees_to_radians(to_deg), phi = degrees_to_radians(phi_deg);
           const double attenuation = std::exp(-m.tau / std::cos(to));
-          const double smooth = lobe.transmission_at(true, wi.z(), std::cos(to), phi) * attenuation;
+          const double smooth = std::max(0.0, lobe.transmission_at(true, wi.z(), std::cos(to), phi)) * attenuation;
           const double f = microfacet_btdf(top, wi, transmitted_direction(to, phi)) * attenuation + smooth;
           exact.push_back(f);
           smooth_part.push_back(smooth);
