@@ -48,7 +48,7 @@ __all__ = ["Material", "Solution", "solve", "presets"]
 
 # Keyword -> flag, for Material(**flags). Underscores become dashes; layers is the repeated --layer.
 _MATERIAL_FLAGS = ("sigma", "eta", "T", "tau", "albedo", "g", "mu_t", "layers", "bottom", "bottom_sigma", "bottom_eta",
-                   "ordinates", "skin")
+                   "ordinates", "skin", "microfacet")
 _LAYER_KEYS = ("T", "tau", "albedo", "g", "mu_t", "sigma", "eta")
 
 
@@ -122,6 +122,10 @@ def _flag_arguments(flags):
                 raise TypeError("bottom must be 'air', 'matched' or 'lambert:A'")
         elif name == "skin":
             text = _skin_text(value)
+        elif name == "microfacet":
+            if not isinstance(value, str):
+                raise TypeError("microfacet must be 'multiple' or 'single'")
+            text = value
         elif name == "ordinates":
             if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
                 raise TypeError("ordinates must be a whole number")
@@ -152,6 +156,8 @@ class Material:
       bottom_sigma, bottom_eta   the bottom interface's roughness and index (bottom="air" only)
       ordinates         the discrete ordinates per hemisphere (default automatic)
       skin              a biophysical skin: a dict such as {"melanin": 0.05, "blood": 0.02}, or the --skin text
+      microfacet        the interfaces: "multiple" (the default: the light that meets the microsurface more than once
+                        is kept) or "single" (Stam 2001's, where it is lost)
 
     Raises ValueError (the command line's message, naming the parameter and its range) for a value out of range
     or flags that conflict, and TypeError for an unknown keyword.
