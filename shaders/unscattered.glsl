@@ -44,7 +44,9 @@ void multiple_polar_weights(float mu, out int index[4], out float weight[4]) {
 
 float multiple_reflection(vec3 wi, vec3 wo) {
   float phi = 0.0;  // graphics convention: pi forward; the lobe is even in phi
-  if (length(wi.xy) > 1e-6 && length(wo.xy) > 1e-6) phi = acos(clamp(dot(normalize(wi.xy), normalize(wo.xy)), -1.0, 1.0));
+  if (length(wi.xy) > 1e-6 && length(wo.xy) > 1e-6) {
+    phi = acos(clamp(dot(normalize(wi.xy), normalize(wo.xy)), -1.0, 1.0));
+  }
   // The last azimuth sample at or before phi, by bisection.
   int k = 0;
   int hi = u_multiple_azimuth_count - 1;
@@ -54,7 +56,10 @@ float multiple_reflection(vec3 wi, vec3 wo) {
     if (u_multiple_azimuths[mid] <= phi) k = mid; else hi = mid;
   }
   bool last = k + 1 >= u_multiple_azimuth_count;
-  float t = last ? 0.0 : clamp((phi - u_multiple_azimuths[k]) / (u_multiple_azimuths[k + 1] - u_multiple_azimuths[k]), 0.0, 1.0);
+  float t = 0.0;
+  if (!last) {
+    t = clamp((phi - u_multiple_azimuths[k]) / (u_multiple_azimuths[k + 1] - u_multiple_azimuths[k]), 0.0, 1.0);
+  }
   int ii[4], io[4];
   float wti[4], wto[4];
   multiple_polar_weights(wi.z, ii, wti);

@@ -77,7 +77,8 @@ void bind_refilled_2d(GLuint program, const char* name, int unit, GLuint texture
 int samples_per_draw(int modes, int environment_width, int environment_height) {
   const int searches = std::bit_width(static_cast<unsigned>(environment_width) + 1u) +
                        std::bit_width(static_cast<unsigned>(environment_height) + 1u);
-  constexpr int kMultipleLobeIterations = 2 * (std::bit_width(static_cast<unsigned>(kMultipleMaxAzimuths)) + 2 * 4 + 4 + 4 * 4);
+  constexpr int kMultipleLobeIterations =
+      2 * (std::bit_width(static_cast<unsigned>(kMultipleMaxAzimuths)) + 2 * 4 + 4 + 4 * 4);
   const int per_sample = 3 * modes + searches + 32 + kMultipleLobeIterations + 1;
   return std::max(1, 49152 / per_sample);
 }

@@ -94,7 +94,8 @@ double table_reflectance(const LayerTables& table, double theta_i) {
     for (int b = 0; b < phi.size(); ++b) {
       unscattered += 2.0 * phi.weights[b] * table.unscattered().brdf(theta_i, t, phi.nodes[b]);
     }
-    sum += theta.weights[a] * std::cos(t) * std::sin(t) * (2.0 * kPi * table.reflection_mode(0, theta_i, t) + unscattered);
+    sum +=
+        theta.weights[a] * std::cos(t) * std::sin(t) * (2.0 * kPi * table.reflection_mode(0, theta_i, t) + unscattered);
   }
   return sum;
 }
