@@ -74,7 +74,8 @@ TableSolve solve_tables(std::span<const Material> channels, const Resolution& re
   const int k = resolution.table_size;
   std::vector<double> grid(k);
   for (int i = 0; i < k; ++i) grid[i] = std::cos(LayerTables::grid_angle(i, k));
-  const auto kernels = kernels_for(material, resolution, grid, grid, options);
+  const auto kernels = kernels_for(material, resolution, grid, grid, options,
+                                   options.exact_unscattered ? KernelSet::AllButSurfaceMultiple : KernelSet::All);
   const std::shared_ptr<const MultipleScatteringLobe> lobes[] = {kernels->top_multiple, kernels->bottom_multiple};
   const UnscatteredLight unscattered =
       options.exact_unscattered ? UnscatteredLight(material, lobes) : UnscatteredLight();

@@ -85,7 +85,8 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   const std::vector<double> down_out = negated(mu_out);
   const bool rough_bottom = geometry.base == LayerBase::Rough;
   const bool bottom_is_top = rough_bottom && geometry.bottom_mirrors_top && !geometry.top_open;
-  const bool all = set == KernelSet::All;
+  const bool all = set != KernelSet::BottomBounce;
+  const bool surface_multiple_rows = set == KernelSet::All;
 
   // Each rough interface's multiply scattered lobe, built once for all of its kernels and albedos (none under
   // MicrofacetModel::Single).
@@ -138,7 +139,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
         apply_quadrature_weights(top_rows, up, weights);
       });
     }
-    if (all && want_exit && top_lobe != nullptr) {
+    if (surface_multiple_rows && want_exit && top_lobe != nullptr) {
       tasks.emplace_back([&] {
         surface_multiple.multiple = multiple_scattering_fourier(*top_lobe, down_in, mu_out);
         surface_multiple.kernel = surface_multiple.multiple;
@@ -192,7 +193,7 @@ InterfaceKernels interface_kernels(const LayerGeometry& geometry, int ordinates,
   // The rows to outside directions are no quadrature: their multiply scattered parts carry, column by column, what
   // the albedos give them (the top's reflection from outside symmetrically, to stay reciprocal).
   if (top_lobe != nullptr) {
-    match_multiple_rows(surface_multiple, *top_lobe, down_in, true, k.top_outside, true);
+    if (surface_multiple_rows) match_multiple_rows(surface_multiple, *top_lobe, down_in, true, k.top_outside, true);
     match_multiple_rows(k.t_source_exterior, *top_lobe, down_in, false, k.top_outside);
     match_multiple_rows(top_rows, *top_lobe, up, true, top_inside_parts);
   }

@@ -77,10 +77,11 @@ struct InterfaceKernels {
 // The cosines with their signs flipped: the same polar angles travelling the other way.
 std::vector<double> negated(std::span<const double> cosines);
 
-// Which kernels to build: all that the geometry uses, or only those of the unscattered light's first bottom
-// reflection (t_source, t_exit, r_bottom; core/unscattered/bottom_bounce.h), which the solver builds again on finer
-// ordinates.
-enum class KernelSet { All, BottomBounce };
+// Which kernels to build: all that the geometry uses; all but the top's multiply scattered reflection from outside
+// to the exit rows (r_surface_multiple), where the exact unscattered light evaluates it instead; or only those of the
+// unscattered light's first bottom reflection (t_source, t_exit, r_bottom; core/unscattered/bottom_bounce.h), which
+// the solver builds again on finer ordinates.
+enum class KernelSet { All, AllButSurfaceMultiple, BottomBounce };
 
 // mu_in: the outside cosines light arrives along (clamped off 0 by the caller); mu_out: those the tables leave along,
 // either none (fluxes only) or the same as mu_in. ordinates N, Fourier modes projected and azimuth samples as the
