@@ -110,6 +110,8 @@ MultipleScatteringLobe::MultipleScatteringLobe(const RoughDielectric& interface,
     const bool swap = flipped && kernel == kTransmissionDown;
     const double factor = swap ? 1.0 / (index * index) : 1.0;
     samples_[kernel] = swap ? swapped(shape.shapes.kernels[from[kernel]], factor) : shape.shapes.kernels[from[kernel]];
+    const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> by_rows = samples_[kernel];
+    rows_[kernel].assign(by_rows.data(), by_rows.data() + by_rows.size());
     const Eigen::MatrixXd& c = coefficients[from[kernel]];
     for (std::size_t m = 0; m < modes_; ++m) {
       Eigen::MatrixXd mode = multiple_scattering_grid(c.col(static_cast<Eigen::Index>(m)));
@@ -180,15 +182,15 @@ double MultipleScatteringLobe::transmission(bool from_above, int m, double mu_i,
 
 double MultipleScatteringLobe::value_at(Kernel kernel, double mu_i, double mu_o, double phi) const {
   const PolarStencil si = polar_grid_stencil(mu_i), so = polar_grid_stencil(mu_o);
+  const LogLinearAzimuthSeries::Position at = series_->locate(phi);
+  const std::size_t samples = azimuths_.size();
   double sum = 0.0;
   for (std::size_t p = 0; p < 4; ++p) {
     for (std::size_t q = 0; q < 4; ++q) {
       const double w = si.weight[p] * so.weight[q];
       if (w == 0.0) continue;
-      const auto row = static_cast<Eigen::Index>(static_cast<std::size_t>(si.index[p]) * kAngles +
-                                                 static_cast<std::size_t>(so.index[q]));
-      const Eigen::RowVectorXd values = samples_[kernel].row(row);
-      sum += w * series_->value(std::span<const double>(values.data(), static_cast<std::size_t>(values.size())), phi);
+      const std::size_t row = static_cast<std::size_t>(si.index[p]) * kAngles + static_cast<std::size_t>(so.index[q]);
+      sum += w * series_->value(&rows_[kernel][row * samples], at);
     }
   }
   return sum;

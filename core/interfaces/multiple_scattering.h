@@ -95,6 +95,7 @@ class MultipleScatteringLobe {
   // This interface's kernels: per kernel, at the grid's (theta_i, theta_o), row i * angles + o, one column per
   // azimuth sample; and per kernel and mode, incident grid angles x exit grid angles. 1/sr.
   std::array<Eigen::MatrixXd, 3> samples_;
+  std::array<std::vector<double>, 3> rows_;  // the same samples row by row, for value_at
   std::array<std::vector<Eigen::MatrixXd>, 3> modes_of_;
   // Per incident grid angle, the reflected and transmitted energies (mode 0's hemisphere integral), [from above,
   // from below].

@@ -78,17 +78,26 @@ Eigen::MatrixXd LogLinearAzimuthSeries::coefficients(const Eigen::MatrixXd& valu
   return result;
 }
 
-double LogLinearAzimuthSeries::value(std::span<const double> values, double phi) const {
+LogLinearAzimuthSeries::Position LogLinearAzimuthSeries::locate(double phi) const {
   double folded = std::fmod(std::abs(phi), 2.0 * kPi);
   if (folded > kPi) folded = 2.0 * kPi - folded;
   const auto upper = std::upper_bound(azimuths_.begin(), azimuths_.end(), folded);
-  if (upper == azimuths_.begin()) return values.front();
-  if (upper == azimuths_.end()) return values.back();
+  if (upper == azimuths_.begin()) return {0, 0.0};
+  if (upper == azimuths_.end()) return {azimuths_.size() - 1, 0.0};
   const auto k = static_cast<std::size_t>(upper - azimuths_.begin()) - 1;
-  const double t = (folded - azimuths_[k]) / (azimuths_[k + 1] - azimuths_[k]);
-  const double fa = values[k], fb = values[k + 1];
-  if (fa > 0.0 && fb > 0.0) return fa * std::pow(fb / fa, t);
-  return (1.0 - t) * fa + t * fb;
+  return {k, (folded - azimuths_[k]) / (azimuths_[k + 1] - azimuths_[k])};
+}
+
+double LogLinearAzimuthSeries::value(const double* values, const Position& at) const {
+  const double fa = values[at.first];
+  if (at.t == 0.0) return fa;
+  const double fb = values[at.first + 1];
+  if (fa > 0.0 && fb > 0.0) return fa * std::pow(fb / fa, at.t);
+  return (1.0 - at.t) * fa + at.t * fb;
+}
+
+double LogLinearAzimuthSeries::value(std::span<const double> values, double phi) const {
+  return value(values.data(), locate(phi));
 }
 
 }  // namespace skinlayer

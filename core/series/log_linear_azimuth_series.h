@@ -28,6 +28,14 @@ class LogLinearAzimuthSeries {
   Eigen::MatrixXd coefficients(const Eigen::MatrixXd& values) const;
   // The function itself at |phi| (folded onto [0, pi]).
   double value(std::span<const double> values, double phi) const;
+  // The same in two steps, for many functions at one azimuth: where phi falls among the samples (the segment from
+  // sample `first`, at fraction t of it; first + 1 past the end where phi is beyond the last), then each function.
+  struct Position {
+    std::size_t first;
+    double t;
+  };
+  Position locate(double phi) const;
+  double value(const double* values, const Position& at) const;
 
  private:
   std::vector<double> azimuths_;
