@@ -1,4 +1,5 @@
-// The generator of core/data/microfacet_multiple_scattering.csv and core/data/microfacet_single_scattering_loss.csv:
+// The generator of core/data/microfacet_multiple_scattering.csv (kept xz-packed, in .tar.xz) and
+// core/data/microfacet_single_scattering_loss.csv:
 // the light a rough dielectric interface scatters more than once on its microsurface, its lobe on a grid of directions,
 // and the light single scattering leaves, which that lobe carries (core/interfaces/multiple_scattering_table.h).
 //
