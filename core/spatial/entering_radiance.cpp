@@ -31,7 +31,7 @@ EnteringRadiance::EnteringRadiance(const LateralTopInterface& top, const std::op
   const QuadratureRule theta = gauss_legendre_panels(graded_panels(0.0, 0.5 * kPi, lobe ? lobe_width_ : 0.0, 0.25), 8);
   if (lobe && has_multiple_scattering(*rough)) {
     // The lobe's flux on the directions below, scaled to the nodes' (the sums' common 2 pi left out).
-    multiple_.emplace(*rough, 1);
+    multiple_ = top.multiple != nullptr ? top.multiple : std::make_shared<const MultipleScatteringLobe>(*rough, 1);
     double nodes_flux = 0.0, lobe_flux = 0.0;
     for (int j = 0; j < ordinates; ++j) {
       nodes_flux += q.weights[static_cast<std::size_t>(j)] * q.nodes[static_cast<std::size_t>(j)] *

@@ -17,6 +17,7 @@
 // the integral on the directions() below.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -50,7 +51,7 @@ class EnteringRadiance {
   std::optional<RoughDielectric> lobe_;
   std::vector<double> nodes_, broad_;  // ascending cosines, and the broad part's radiance on them
   // The multiply scattered lobe's transmission from the normal and its scale s (none without one).
-  std::optional<MultipleScatteringLobe> multiple_;
+  std::shared_ptr<const MultipleScatteringLobe> multiple_;  // the top's (LateralTopInterface::multiple)
   double multiple_scale_ = 0.0;
   double collimated_ = 0.0, lobe_width_ = 0.0;
   QuadratureRule directions_;

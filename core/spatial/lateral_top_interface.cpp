@@ -30,6 +30,7 @@ LateralTopInterface lateral_top_interface(const RoughDielectric& top, int ordina
   const InterfaceKernels kernels = interface_kernels(geometry, ordinates, modes, azimuths, incident.nodes, {});
   LateralTopInterface interface;
   interface.reflection = kernels.r_top;
+  interface.multiple = kernels.top_multiple;
   // Mode 0 of each column is its light averaged over the incident azimuths, so diffuse light sums the columns.
   interface.source =
       kernels.t_source.kernel[0] *

@@ -8,9 +8,11 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 #include "core/interfaces/microfacet.h"
+#include "core/interfaces/multiple_scattering.h"
 #include "core/series/quadrature.h"
 
 namespace skinlayer {
@@ -34,6 +36,8 @@ struct LateralTopInterface {
   // The interface's own multiply scattered reflection of the beam (under MicrofacetModel::Multiple, else 0): it leaves
   // at the entry point, so it is in the BSDF's subsurface reflectance but not in the spatial profile.
   double surface_multiple_reflectance = 0.0;
+  // The interface's multiply scattered lobe the operators were built from (null under MicrofacetModel::Single).
+  std::shared_ptr<const MultipleScatteringLobe> multiple;
   // Under a smooth top the normal beam stays collimated inside: its flux there, 1 - F(1). 0 where the light enters as
   // node radiance (`source`).
   double collimated = 0.0;

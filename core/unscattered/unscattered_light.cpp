@@ -302,13 +302,12 @@ double UnscatteredLight::brdf_single(double theta_i, double theta_o, double phi)
   return weight_ * attenuation(tau_, wi.z()) * microfacet_brdf(bottom_, wi, wo) * attenuation(tau_, wo.z());
 }
 
-std::vector<UnscatteredLight::MultipleReflection> UnscatteredLight::multiple_reflections(double theta_i,
-                                                                                        double theta_o) const {
-  std::vector<MultipleReflection> parts;
-  if (top_multiple_) parts.push_back({top_multiple_.get(), weight_});
+UnscatteredLight::MultipleReflections UnscatteredLight::multiple_reflections(double theta_i, double theta_o) const {
+  MultipleReflections parts;
+  if (top_multiple_) parts.parts[parts.count++] = {top_multiple_.get(), weight_};
   if (bottom_multiple_ && path_ == UnscatteredPath::BottomOnly) {
-    parts.push_back({bottom_multiple_.get(), weight_ * attenuation(tau_, std::cos(theta_i)) *
-                                                 attenuation(tau_, std::cos(theta_o))});
+    parts.parts[parts.count++] = {
+        bottom_multiple_.get(), weight_ * attenuation(tau_, std::cos(theta_i)) * attenuation(tau_, std::cos(theta_o))};
   }
   return parts;
 }

@@ -15,8 +15,8 @@
 //     f_T(omega_i, omega_o) = int_disk f_t12(omega_i -> d) e^{-tau / |d.z|} f_t23(-d -> omega_o) dA(d)
 //
 // f_t12, f_t23, f_r23 are the interfaces' microfacet BSDFs (core/interfaces/microfacet.h), radiance BTDFs, in 1/sr. The
-// solver removes exactly these paths from its ordinates (their node-sum images), so the tables carry only light that was
-// scattered at least once or reflected between the interfaces, which is smooth; LayerTables adds this part back.
+// solver removes exactly these paths from its ordinates (their node-sum images), so the tables carry only light that
+// was scattered at least once or reflected between the interfaces, which is smooth; LayerTables adds this part back.
 //
 // Under MicrofacetModel::Multiple each rough interface also scatters light more than once on its microsurface, into a
 // lobe of its own (core/interfaces/multiple_scattering.h, f_ms). Where one interface alone sends the light out, that
@@ -33,6 +33,7 @@
 // node image is put on four times the ordinates where it matters (core/unscattered/bottom_bounce.h).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <span>
@@ -93,7 +94,14 @@ class UnscatteredLight {
     const MultipleScatteringLobe* lobe;
     double factor;
   };
-  std::vector<MultipleReflection> multiple_reflections(double theta_i, double theta_o) const;
+  // At most two (the top's, and on BottomOnly its interface's), without an allocation: brdf() is a hot path.
+  struct MultipleReflections {
+    std::array<MultipleReflection, 2> parts{};
+    std::size_t count = 0;
+    const MultipleReflection* begin() const { return parts.data(); }
+    const MultipleReflection* end() const { return parts.data() + count; }
+  };
+  MultipleReflections multiple_reflections(double theta_i, double theta_o) const;
   // The same light scaled by `weight`: a mix of channels that share it (core/series/weighted_tables.h).
   UnscatteredLight scaled(double weight) const;
   double weight() const { return weight_; }
