@@ -1,4 +1,4 @@
-// docs/model.md §22.3: GGX dielectric reflection with Turquin's energy compensation.
+// docs/model.md §22.3: GGX dielectric reflection with Turquin's energy compensation, as MaterialX's graph has it.
 #include "core/targets/ggx_dielectric_reflection.h"
 
 #include <algorithm>
@@ -21,31 +21,56 @@ double single_scattering(double alpha, const Vec3& omega_i, const Vec3& omega_o,
          (4.0 * omega_o.z());
 }
 
+// MaterialX's fit, numerators and denominators of a and b: each the sum over the monomials m(mu, alpha) below of
+// its coefficient times m. Monomials in the order 1, mu, alpha, mu alpha, mu^2, alpha^2, mu^2 alpha, mu alpha^2,
+// mu^2 alpha^2; the columns are a's numerator, b's numerator, a's denominator, b's denominator.
+constexpr std::array<std::array<double, 4>, 9> kAlbedoFit = {{
+    {0.1003, 0.9345, 1.0, 1.0},
+    {-0.6303, -2.323, -1.765, 0.2281},
+    {9.748, 2.229, 8.263, 15.94},
+    {-2.038, -3.748, 11.53, -55.83},
+    {29.34, 1.424, 28.96, 13.08},
+    {-8.245, -0.7684, -7.507, 41.26},
+    {-26.44, 1.436, -36.11, 54.9},
+    {19.99, 0.2913, 15.86, 300.2},
+    {-5.448, 0.6286, 33.37, -285.1},
+}};
+
+// MaterialX clamps alpha to [1e-8, 1] before the fit (its M_FLOAT_EPS).
+constexpr double kFitSmallestAlpha = 1e-8;
+
 }  // namespace
+
+GgxAlbedoTerms materialx_ggx_albedo_terms(double mu, double alpha) {
+  const double x = std::clamp(mu, 0.0, 1.0), y = std::clamp(alpha, kFitSmallestAlpha, 1.0);
+  const std::array<double, 9> monomials = {1.0, x, y, x * y, x * x, y * y, x * x * y, x * y * y, x * x * y * y};
+  std::array<double, 4> sums{};
+  for (std::size_t m = 0; m < monomials.size(); ++m) {
+    for (std::size_t k = 0; k < 4; ++k) sums[k] += kAlbedoFit[m][k] * monomials[m];
+  }
+  return {std::clamp(sums[0] / sums[2], 0.0, 1.0), std::clamp(sums[1] / sums[3], 0.0, 1.0)};
+}
 
 GgxDielectricReflection::GgxDielectricReflection(double eta, double alpha) : eta_(eta), alpha_(alpha) {
   if (!(eta > 0.0) || !std::isfinite(eta)) throw ParameterError("GGX reflection: eta must be positive");
   if (!(alpha >= 0.0) || !std::isfinite(alpha)) throw ParameterError("GGX reflection: alpha must be >= 0");
-  const double f0 = fresnel_dielectric(1.0, eta);
-  fresnel_average_ = f0 + (1.0 - f0) / 21.0;
+  f0_ = (eta - 1.0) * (eta - 1.0) / ((eta + 1.0) * (eta + 1.0));
+  fresnel_average_ = f0_ + (1.0 - f0_) / 21.0;
   for (int k = 0; k < kAngles; ++k) {
     const double theta = std::min(k * kAngleStep, degrees_to_radians(89.9));
     const Vec3 view(std::sin(theta), 0.0, std::cos(theta));
     if (smooth()) {
-      white_[static_cast<std::size_t>(k)] = 1.0;
       fresnel_[static_cast<std::size_t>(k)] = fresnel_dielectric(view.z(), eta);
       continue;
     }
     // Reciprocal: the albedo at the view is the integral over the light of the same single-scattering lobe.
-    const Rgb both = microfacet_lobe_albedo(
+    const Rgb single = microfacet_lobe_albedo(
         [&](const Vec3& light) {
           const double cos_h = std::max(0.0, light.dot((light + view).normalized()));
-          return Rgb(single_scattering(alpha, light, view, 1.0),
-                     single_scattering(alpha, light, view, fresnel_dielectric(cos_h, eta)), 0.0);
+          return Rgb(single_scattering(alpha, light, view, fresnel_dielectric(cos_h, eta)), 0.0, 0.0);
         },
         view, alpha, 16);
-    white_[static_cast<std::size_t>(k)] = both(0);
-    fresnel_[static_cast<std::size_t>(k)] = both(1);
+    fresnel_[static_cast<std::size_t>(k)] = single(0);
   }
 }
 
@@ -59,8 +84,8 @@ double GgxDielectricReflection::interpolate(const std::array<double, kAngles>& t
 }
 
 double GgxDielectricReflection::compensation(double mu_o) const {
-  if (smooth()) return 1.0;
-  const double white = interpolate(white_, mu_o);
+  const GgxAlbedoTerms fit = materialx_ggx_albedo_terms(mu_o, alpha_);
+  const double white = fit.a + fit.b;
   return 1.0 + fresnel_average_ * (1.0 - white) / white;
 }
 
@@ -71,5 +96,10 @@ double GgxDielectricReflection::cosine_weighted(const Vec3& omega_i, const Vec3&
 }
 
 double GgxDielectricReflection::albedo(double mu_o) const { return compensation(mu_o) * interpolate(fresnel_, mu_o); }
+
+double GgxDielectricReflection::layer_albedo(double mu_o) const {
+  const GgxAlbedoTerms fit = materialx_ggx_albedo_terms(mu_o, alpha_);
+  return compensation(mu_o) * (f0_ * fit.a + fit.b);
+}
 
 }  // namespace skinlayer

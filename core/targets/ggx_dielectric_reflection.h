@@ -1,14 +1,23 @@
-// A dielectric interface's reflection as OpenPBR Surface's specular and coat lobes have it (docs/model.md §22.3):
-// GGX with Smith's height-correlated masking and the exact dielectric Fresnel,
+// A dielectric interface's reflection as OpenPBR Surface's specular and coat lobes have it in MaterialX's node graph
+// (docs/model.md §22.3; the graph's dielectric_bsdf in reflection, as its GLSL generator implements it): GGX with
+// Smith's height-correlated masking and the exact dielectric Fresnel,
 //   f_ss cos(theta_i) = F(omega_i.h, eta) D(h) G2(mu_i, mu_o) / (4 mu_o),
-// made up for the light it loses to single scattering by Turquin 2019's scaling, in the form of MaterialX 1.39's
-// reference (mx_microfacet_specular.glsl, after its 1.39.5 release):
-//   f = f_ss (1 + F_avg (1 - E_ss(mu_o)) / E_ss(mu_o)),   F_avg = F0 + (1 - F0) / 21,
-// with E_ss the lobe's albedo for a white Fresnel (F = 1). The factor is the view's, so the lobe is not reciprocal,
-// and its albedo at the view is the factor times the single-scattering albedo E_F(mu_o). Both albedos are integrated
-// once (ggx_lobe.h, 16 nodes) on 33 view angles, 0 to 90 degrees, and interpolated by Catmull-Rom in the angle.
-// Below alpha 1e-4 the interface is smooth: a mirror, whose albedo is F(mu_o, eta) and whose f is 0 between mirror
-// pairs.
+// made up for the light it loses to single scattering by Turquin 2019's scaling,
+//   f = f_ss c(mu_o),   c(mu_o) = 1 + F_avg (1 - E_w(mu_o)) / E_w(mu_o),   F_avg = F0 + (1 - F0) / 21,
+// with E_w MaterialX's rational fit of the GGX albedo for a white Fresnel (materialx_ggx_albedo_terms below, a + b),
+// not the integral: the renderer's own numbers. The factor is the view's, so the lobe is not reciprocal. Two albedos
+// at the view follow:
+//   albedo(mu_o)        the lobe's own, int f cos(theta_i) d omega_i = c(mu_o) E_F(mu_o), E_F the single-scattering
+//                       albedo with the exact Fresnel, integrated once (ggx_lobe.h, 16 nodes) on 33 view angles, 0
+//                       to 90 degrees, and interpolated by Catmull-Rom in the angle: what a renderer that integrates
+//                       the lobe (under a white sky, by sampling) gets;
+//   layer_albedo(mu_o)  what MaterialX's layer node takes from the light under the lobe: c(mu_o) (F0 a + b), the fit
+//                       with Schlick's Fresnel of the same F0 = ((eta - 1)/(eta + 1))^2. Within about 1% of albedo,
+//                       and not equal to it: the graph does not conserve energy exactly.
+// MaterialX 1.39.5 itself weighs the compensation by F(omega_o.h) (under lights) or F(mu_o) (under its environment)
+// in place of F_avg; the F_avg form is the one its next releases take (after 1.39.5), and what this class computes.
+// Below alpha 1e-4 the interface is smooth: a mirror, whose albedo is c(mu_o) F(mu_o, eta) and whose f is 0 between
+// mirror pairs (MaterialX clamps alpha at 1e-8 and its fit is a polynomial in alpha, so c is the same there).
 #pragma once
 
 #include <array>
@@ -16,6 +25,14 @@
 #include "core/interfaces/microfacet.h"
 
 namespace skinlayer {
+
+// MaterialX's rational fit of GGX's directional albedo (its GLSL generator's default "analytic" method,
+// mx_microfacet_specular.glsl, MaterialX 1.39): with Schlick's Fresnel F0 + (F90 - F0)(1 - cos)^5 the albedo at the
+// view of cosine mu is F0 a + F90 b, each of a and b a ratio of polynomials in mu and alpha held to [0, 1].
+struct GgxAlbedoTerms {
+  double a = 0.0, b = 0.0;
+};
+GgxAlbedoTerms materialx_ggx_albedo_terms(double mu, double alpha);
 
 class GgxDielectricReflection {
  public:
@@ -32,15 +49,20 @@ class GgxDielectricReflection {
   // f cos(theta_i), compensated; 0 below either horizon.
   double cosine_weighted(const Vec3& omega_i, const Vec3& omega_o) const;
 
-  // int f cos(theta_i) d omega_i for the view at cosine mu_o: the compensation times E_F(mu_o).
+  // int f cos(theta_i) d omega_i for the view at cosine mu_o: c(mu_o) E_F(mu_o).
   double albedo(double mu_o) const;
 
- private:
+  // What a layer of this lobe takes from the light under it, in MaterialX's graph: c(mu_o) (F0 a + b).
+  double layer_albedo(double mu_o) const;
+
+  // Turquin's factor c(mu_o) with MaterialX's fit for E_w.
   double compensation(double mu_o) const;
+
+ private:
   double interpolate(const std::array<double, kAngles>& table, double mu) const;
 
-  double eta_, alpha_, fresnel_average_;
-  std::array<double, kAngles> white_{}, fresnel_{};  // E_ss and E_F on the angles
+  double eta_, alpha_, f0_, fresnel_average_;
+  std::array<double, kAngles> fresnel_{};  // E_F on the angles
 };
 
 }  // namespace skinlayer
