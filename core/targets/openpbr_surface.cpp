@@ -1,4 +1,5 @@
-// docs/model.md §22.3: OpenPBR Surface's opaque dielectric lobes, layered by albedo scaling.
+// docs/model.md §22.3: OpenPBR Surface's opaque dielectric lobes, layered by albedo scaling as MaterialX's graph
+// layers them.
 #include "core/targets/openpbr_surface.h"
 
 #include <algorithm>
@@ -6,9 +7,7 @@
 #include <string>
 
 #include "core/conventions.h"
-#include "core/interfaces/fresnel.h"
 #include "core/material.h"
-#include "core/series/quadrature.h"
 #include "core/targets/eon_diffuse.h"
 #include "core/targets/shader_inputs.h"
 #include "core/targets/zeltner_fuzz.h"
@@ -53,7 +52,7 @@ double specular_relative_index(const OpenPbrParameters& p) {
   return lerp(p.specular_ior, ratio >= 1.0 ? ratio : 1.0 / ratio, p.coat_weight);
 }
 
-// eta': the index whose normal reflectance is specular_weight times eta_s's.
+// eta': the index whose normal reflectance is specular_weight times eta_s's (held below 0.99999, as the graph does).
 double modulated_index(const OpenPbrParameters& p) {
   const double eta = specular_relative_index(p);
   const double root = std::sqrt(std::clamp(p.specular_weight * normal_reflectance(eta), 0.0, 0.99999));
@@ -79,14 +78,9 @@ OpenPbrSurface::OpenPbrSurface(const OpenPbrParameters& parameters)
     : parameters_(checked(parameters)),
       specular_(modulated_index(parameters), specular_alpha(parameters)),
       coat_(parameters.coat_ior, parameters.coat_roughness * parameters.coat_roughness) {
-  specular_f0_ = normal_reflectance(specular_relative_index(parameters));
-  // E_F: the coat's hemispherical Fresnel albedo from outside, 2 int F(mu) mu d mu.
-  const QuadratureRule mu = gauss_legendre(64, 0.0, 1.0);
-  double hemispherical = 0.0;
-  for (std::size_t k = 0; k < mu.nodes.size(); ++k) {
-    hemispherical += 2.0 * mu.weights[k] * mu.nodes[k] * fresnel_dielectric(mu.nodes[k], parameters.coat_ior);
-  }
-  coat_internal_ = 1.0 - (1.0 - hemispherical) / (parameters.coat_ior * parameters.coat_ior);
+  // The graph's Kcoat: the light the coat sends back down, from its normal reflectance alone.
+  const double n = parameters.coat_ior;
+  coat_internal_ = 1.0 - (1.0 - normal_reflectance(n)) / (n * n);
 }
 
 OpenPbrSurface OpenPbrSurface::with_diffuse_colors(const Rgb& base_color, const Rgb& subsurface_color) const {
@@ -97,19 +91,18 @@ OpenPbrSurface OpenPbrSurface::with_diffuse_colors(const Rgb& base_color, const 
   return surface;
 }
 
-Rgb OpenPbrSurface::darkening(double mu_o, const Rgb& base_albedo) const {
+Rgb OpenPbrSurface::darkening(const Rgb& base_albedo) const {
   const OpenPbrParameters& p = parameters_;
   const double amount = p.coat_weight * p.coat_darkening;
   if (amount == 0.0) return Rgb::Ones();
-  const double base_roughness = lerp(1.0, p.specular_roughness, std::min(1.0, p.specular_weight * specular_f0_));
-  const double K = lerp(fresnel_dielectric(mu_o, p.coat_ior), coat_internal_, base_roughness);
+  const double K = coat_internal_;
   const Rgb delta = (1.0 - K) / (1.0 - base_albedo * K);
   return 1.0 + (delta - 1.0) * amount;
 }
 
 Rgb OpenPbrSurface::base_albedo_color() const {
   const OpenPbrParameters& p = parameters_;
-  return p.base_weight * p.base_color * (1.0 - p.subsurface_weight) + p.subsurface_color * p.subsurface_weight;
+  return p.base_color * (1.0 - p.subsurface_weight) + p.subsurface_color * p.subsurface_weight;
 }
 
 OpenPbrSurface::LayerShares OpenPbrSurface::layer_shares(double mu_o, const Rgb& base_albedo) const {
@@ -120,10 +113,9 @@ OpenPbrSurface::LayerShares OpenPbrSurface::layer_shares(double mu_o, const Rgb&
     shares.outer = 1.0 - shares.fuzz;
   }
   if (p.coat_weight > 0.0) {
-    const double coat_albedo = coat_.albedo(mu_o);
-    shares.coat = p.coat_weight * coat_albedo;
-    shares.under_coat =
-        (1.0 + (p.coat_color * (1.0 - coat_albedo) - 1.0) * p.coat_weight) * darkening(mu_o, base_albedo);
+    shares.coat = p.coat_weight * coat_.albedo(mu_o);
+    const Rgb attenuation = 1.0 + (p.coat_color - 1.0) * p.coat_weight;
+    shares.under_coat = (1.0 - p.coat_weight * coat_.layer_albedo(mu_o)) * attenuation * darkening(base_albedo);
   }
   return shares;
 }
@@ -142,13 +134,12 @@ OpenPbrLobes OpenPbrSurface::lobes_cosine_weighted(const Vec3& omega_i, const Ve
   }
   const Rgb base = shares.outer * shares.under_coat;
   lobes.specular = base * p.specular_color * specular_.cosine_weighted(omega_i, omega_o);
-  const double sigma = p.base_diffuse_roughness;
-  Rgb diffuse = eon_diffuse_cosine_weighted(p.base_weight * p.base_color, sigma, omega_i, omega_o);
+  Rgb diffuse = p.base_weight * eon_diffuse_cosine_weighted(p.base_color, p.base_diffuse_roughness, omega_i, omega_o);
   if (p.subsurface_weight > 0.0) {
-    diffuse = diffuse * (1.0 - p.subsurface_weight) +
-              p.subsurface_weight * eon_diffuse_cosine_weighted(p.subsurface_color, sigma, omega_i, omega_o);
+    // Lambert's lobe of albedo subsurface_color.
+    diffuse = diffuse * (1.0 - p.subsurface_weight) + p.subsurface_weight * p.subsurface_color * omega_i.z() / kPi;
   }
-  lobes.diffuse = base * (1.0 - specular_.albedo(mu_o)) * diffuse;
+  lobes.diffuse = base * (1.0 - specular_.layer_albedo(mu_o)) * diffuse;
   return lobes;
 }
 
@@ -158,22 +149,25 @@ Rgb OpenPbrSurface::brdf_cosine_weighted(const Vec3& omega_i, const Vec3& omega_
 
 Rgb OpenPbrSurface::assembled_albedo(double mu_o, const Rgb& base_albedo, const Rgb& diffuse_albedo) const {
   const LayerShares shares = layer_shares(mu_o, base_albedo);
-  const double specular = specular_.albedo(mu_o);
-  const Rgb base = parameters_.specular_color * specular + (1.0 - specular) * diffuse_albedo;
+  const Rgb base =
+      parameters_.specular_color * specular_.albedo(mu_o) + (1.0 - specular_.layer_albedo(mu_o)) * diffuse_albedo;
   return shares.fuzz * parameters_.fuzz_color + shares.outer * (shares.coat + shares.under_coat * base);
 }
 
 Rgb OpenPbrSurface::albedo_with_diffuse_color(double mu_o, const Rgb& diffuse) const {
-  return assembled_albedo(mu_o, diffuse, eon_diffuse_albedo(diffuse, parameters_.base_diffuse_roughness, mu_o));
+  const OpenPbrParameters& p = parameters_;
+  const double S = p.subsurface_weight;
+  return assembled_albedo(
+      mu_o, diffuse,
+      p.base_weight * eon_diffuse_albedo(diffuse, p.base_diffuse_roughness, mu_o) * (1.0 - S) + diffuse * S);
 }
 
 Rgb OpenPbrSurface::albedo(double mu_o) const {
   const OpenPbrParameters& p = parameters_;
-  const double S = p.subsurface_weight, sigma = p.base_diffuse_roughness;
-  const Rgb base_color = p.base_weight * p.base_color;
+  const double S = p.subsurface_weight;
   return assembled_albedo(mu_o, base_albedo_color(),
-                          eon_diffuse_albedo(base_color, sigma, mu_o) * (1.0 - S) +
-                              eon_diffuse_albedo(p.subsurface_color, sigma, mu_o) * S);
+                          p.base_weight * eon_diffuse_albedo(p.base_color, p.base_diffuse_roughness, mu_o) * (1.0 - S) +
+                              p.subsurface_color * S);
 }
 
 }  // namespace skinlayer
