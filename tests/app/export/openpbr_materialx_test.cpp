@@ -77,6 +77,36 @@ TEST_F(OpenPbrMaterialX, CarriesTheFitAndTheMaterial) {
   EXPECT_EQ(std::string(root.child("surfacematerial").attribute("name").value()), "clear_coat_red");
 }
 
+// The radius says its unit with MaterialX's own attributes (the standard library's unit type "distance", whose unit
+// "millimeter" is 0.001 m), so that a renderer that sets a target distance unit converts it; no other input has one.
+TEST_F(OpenPbrMaterialX, TheRadiusCarriesItsUnitInMillimetres) {
+  for (const char* preset : {"skin-fair", "clear-coat-red"}) {
+    const std::string text = exported({"--preset", preset});
+    pugi::xml_document xml;
+    ASSERT_TRUE(xml.load_string(text.c_str()));
+    const pugi::xml_node shader = xml.child("materialx").child("open_pbr_surface");
+    int with_unit = 0;
+    for (const pugi::xml_node in : shader.children("input")) {
+      if (!in.attribute("unit")) continue;
+      ++with_unit;
+      EXPECT_EQ(std::string(in.attribute("name").value()), "subsurface_radius") << preset;
+      EXPECT_EQ(std::string(in.attribute("unittype").value()), "distance") << preset;
+      EXPECT_EQ(std::string(in.attribute("unit").value()), "millimeter") << preset;
+    }
+    EXPECT_EQ(with_unit, 1) << preset;
+  }
+  // skin-fair's radius is the dermis's mean free path, 0.026 mm: a number that only millimetres make right.
+  const std::string skin = exported({"--preset", "skin-fair"});
+  pugi::xml_document xml;
+  ASSERT_TRUE(xml.load_string(skin.c_str()));
+  const double radius = std::stod(xml.child("materialx")
+                                      .child("open_pbr_surface")
+                                      .find_child_by_attribute("input", "name", "subsurface_radius")
+                                      .attribute("value")
+                                      .value());
+  EXPECT_NEAR(radius, 0.0255, 0.001);
+}
+
 // The checker fails a file with an unknown input, a wrong type, a value out of range, a bad value and a material
 // that names no shader: it is not a check that passes anything.
 TEST_F(OpenPbrMaterialX, TheCheckCatchesWhatIsWrong) {
