@@ -60,6 +60,7 @@ GltfFit fit_gltf(const BrdfFitTarget& target, const GltfFitSettings& settings) {
   GltfFit fit;
   const GltfPbr surface = solved_surface(best.parameters, settings, at_normal, fit.albedo_miss);
   fit.parameters = surface.parameters();
+  if (fit.parameters.sheen_color.maxCoeff() == 0.0) fit.parameters.sheen_roughness = 0.0;  // no sheen: its default
   fit.albedo_matched = (fit.albedo_miss.abs() < 1e-9).all();
   fit.errors = fit_errors(
       target, [&](const Vec3& omega_i, const Vec3& omega_o) { return surface.brdf_cosine_weighted(omega_i, omega_o); },
