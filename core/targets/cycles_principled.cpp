@@ -86,6 +86,19 @@ Microfacet single_scattering(double alpha, const Vec3& omega_i, const Vec3& omeg
           omega_i.dot(h)};
 }
 
+// The specular's single-scattering albedos for a white Fresnel and for the blend s(c), on the same nodes; a mirror
+// reflects 1 and s(mu_o).
+Eigen::Array2d specular_albedos(const HalfVectorQuadrature& quadrature, double alpha, double mu, double eta) {
+  if (cycles_ggx_is_mirror(alpha)) return {1.0, cycles_fresnel_blend(mu, eta)};
+  const Vec3 view(std::sqrt(1.0 - mu * mu), 0.0, mu);
+  return quadrature.integrate(mu, std::max(alpha, 1e-3), [&](const Vec3& light) {
+    const Vec3 h = (light + view).normalized();
+    const double lobe =
+        ggx_distribution(h.z(), alpha) * ggx_height_correlated_masking(light.z(), mu, alpha) / (4.0 * mu);
+    return Eigen::Array2d(lobe, lobe * cycles_fresnel_blend(light.dot(h), eta));
+  });
+}
+
 // The view cosine of angle node k; the last is held at Cycles' least cosine, 1e-4, where the albedos' limit is.
 double angle_cosine(int k) { return std::max(std::cos(k * kAngleStep), 1e-4); }
 
@@ -121,18 +134,17 @@ CyclesPrincipled::CyclesPrincipled(const CyclesPrincipledParameters& parameters)
 
   const HalfVectorQuadrature quadrature(kAlbedoPolar);
   const double alpha = p.roughness * p.roughness, coat_alpha = p.coat_roughness * p.coat_roughness;
-  const double eta = specular_index_, coat_eta = p.coat_ior;
   for (int k = 0; k < kAngles; ++k) {
     const double mu = angle_cosine(k);
     const auto at = static_cast<std::size_t>(k);
     if (p.coat_weight > kWeightCutoff) {
-      coat_albedo_[at] =
-          ggx_reflection_albedo(quadrature, coat_alpha, mu, [&](double c) { return fresnel_dielectric(c, coat_eta); });
+      coat_albedo_[at] = ggx_reflection_albedo(quadrature, coat_alpha, mu,
+                                               [&](double c) { return fresnel_dielectric(c, p.coat_ior); });
     }
     if (specular_index_ != 1.0) {
-      specular_white_[at] = ggx_reflection_albedo(quadrature, alpha, mu, [](double) { return 1.0; });
-      specular_blend_[at] =
-          ggx_reflection_albedo(quadrature, alpha, mu, [&](double c) { return cycles_fresnel_blend(c, eta); });
+      const Eigen::Array2d both = specular_albedos(quadrature, alpha, mu, specular_index_);
+      specular_white_[at] = both(0);
+      specular_blend_[at] = both(1);
     }
   }
 }

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "core/conventions.h"
 #include "core/interfaces/microfacet.h"
@@ -23,12 +24,19 @@ class HalfVectorQuadrature {
       : azimuths_(gauss_legendre(polar, 0.0, kPi)), unit_(gauss_legendre(polar, 0.0, 1.0)) {}
 
   // int g(omega_i) d omega_i over the upper hemisphere, the view at cosine mu_o in the xz-plane; g(omega_i) must be
-  // even in omega_i.y and is called only above the horizon.
+  // even in omega_i.y and is called only above the horizon. g returns a double or an Eigen array (several integrals
+  // on the same nodes).
   template <class Integrand>
-  double integrate(double mu_o, double width, const Integrand& g) const {
+  auto integrate(double mu_o, double width, const Integrand& g) const {
+    using Value = std::decay_t<decltype(g(Vec3::UnitZ()))>;
     const double mu = std::clamp(mu_o, 0.0, 1.0), sine = std::sqrt(1.0 - mu * mu);
     const Vec3 view(sine, 0.0, mu);
-    double sum = 0.0;
+    Value sum;
+    if constexpr (std::is_arithmetic_v<Value>) {
+      sum = 0.0;
+    } else {
+      sum = Value::Zero();
+    }
     for (std::size_t b = 0; b < azimuths_.nodes.size(); ++b) {
       const double phi = azimuths_.nodes[b], cos_phi = std::cos(phi), sin_phi = std::sin(phi);
       const double theta_max = 0.5 * (0.5 * kPi + std::atan2(sine * cos_phi, mu));
@@ -43,7 +51,9 @@ class HalfVectorQuadrature {
         const Vec3 light = 2.0 * cos_oh * h - view;
         if (light.z() <= 0.0) continue;
         // 2: the folded azimuths (pi, 2 pi).
-        sum += 2.0 * v_max * unit_.weights[a] * dtheta_dv * sin_theta * azimuths_.weights[b] * 4.0 * cos_oh * g(light);
+        const double weight =
+            2.0 * v_max * unit_.weights[a] * dtheta_dv * sin_theta * azimuths_.weights[b] * 4.0 * cos_oh;
+        sum += weight * g(light);
       }
     }
     return sum;
