@@ -197,9 +197,13 @@ nlohmann::ordered_json gltf_fit_json(const DocumentFit<GltfFit>& fit) {
 }
 
 std::string gltf_export(const MaterialDocument& document, const DocumentFit<GltfFit>& fit) {
-  const Rgb at_normal = GltfPbr(fit.fit.parameters).albedo(1.0);
+  const GltfPbr model(fit.fit.parameters);
+  nlohmann::ordered_json off_normal;
+  for (const int degrees : {30, 60})
+    off_normal[std::to_string(degrees)] = channels(model.albedo(std::cos(degrees_to_radians(degrees))));
   const nlohmann::ordered_json extras = {{"skinlayer_fit", gltf_fit_json(fit)},
-                                         {"gltf_model_albedo_at_normal_incidence", channels(at_normal)},
+                                         {"gltf_model_albedo_at_normal_incidence", channels(model.albedo(1.0))},
+                                         {"gltf_model_albedo_at_degrees", off_normal},
                                          {"skinlayer_material", material_json(document)}};
   return gltf_asset(fit.fit.parameters, document.name.empty() ? "skinlayer" : document.name, extras).dump(2) + "\n";
 }

@@ -8,7 +8,8 @@
 //              extension: KHR_materials_ior, _specular, _sheen, _clearcoat; extensionsUsed lists exactly these.
 //              Its extras: "skinlayer_fit" (the fit's report, fit_report_json's form),
 //              "gltf_model_albedo_at_normal_incidence" (the fitted model's, core/targets/gltf_pbr.h: what a furnace
-//              test of a renderer compares with) and "skinlayer_material" (the material file's JSON).
+//              test of a renderer compares with), "gltf_model_albedo_at_degrees" (the same with the view at 30 and 60
+//              degrees, keyed "30", "60") and "skinlayer_material" (the material file's JSON).
 // Colours are linear (glTF's factors are linear), as skinlayer's are.
 #pragma once
 

@@ -195,6 +195,8 @@ TEST(GltfExport, CarriesTheFitOfAClearCoatedPreset) {
   for (int c = 0; c < 3; ++c) {
     EXPECT_EQ(material.at("extras").at("gltf_model_albedo_at_normal_incidence").at(c).get<double>(), model(c));
   }
+  const Rgb at_60 = GltfPbr(fit.fit.parameters).albedo(0.5);
+  EXPECT_NEAR(material.at("extras").at("gltf_model_albedo_at_degrees").at("60").at(0).get<double>(), at_60(0), 1e-12);
   std::printf("  clear-coat-red: %s\n", report.at("parameters").dump().c_str());
   std::printf("  errors: %s\n", report.at("errors").dump().c_str());
 }

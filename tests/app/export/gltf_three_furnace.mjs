@@ -11,8 +11,10 @@
 //   node gltf_three_furnace.mjs --tools <node_modules with three and puppeteer-core> [--png out.png]
 //        [--expect r,g,b --tolerance 0.05] file.gltf
 // Prints one JSON line: the centre pixel and the 5 x 5 mean about it (linear RGB), the expected albedo (the file's
-// materials[0].extras.gltf_model_albedo_at_normal_incidence, or --expect) and the relative differences. Exits 1 where
-// --tolerance is given and a channel differs by more (relative), 2 on bad use or a failed render.
+// materials[0].extras.gltf_model_albedo_at_normal_incidence, or --expect) and the relative differences, and the same
+// off the normal for each angle in extras.gltf_model_albedo_at_degrees (the pixel along the centre row whose normal is
+// nearest; the angle of its centre printed). Exits 1 where --tolerance is given and a channel of the centre pixel
+// differs by more (relative), 2 on bad use or a failed render.
 // Files are served from a server on 127.0.0.1 only; Chromium runs with a new, empty profile and without network
 // services.
 import { mkdtemp, readFile, rm, writeFile } from 'node:fs/promises';
@@ -38,10 +40,9 @@ if (!tools || !file) {
 const require = createRequire(import.meta.url);
 const puppeteer = require(path.resolve(tools, 'puppeteer-core'));
 const gltfText = await readFile(file, 'utf8');
-if (!expect) {
-  const extras = JSON.parse(gltfText).materials?.[0]?.extras ?? {};
-  expect = extras.gltf_model_albedo_at_normal_incidence ?? null;
-}
+const extras = JSON.parse(gltfText).materials?.[0]?.extras ?? {};
+if (!expect) expect = extras.gltf_model_albedo_at_normal_incidence ?? null;
+const offNormal = extras.gltf_model_albedo_at_degrees ?? {};  // {"30": [r, g, b], ...}
 
 const kSize = 256;
 const page = `<!DOCTYPE html>
@@ -95,10 +96,19 @@ try {
   for (let y = size / 2 - 2; y <= size / 2 + 2; ++y) {
     for (let x = size / 2 - 2; x <= size / 2 + 2; ++x) at(x, y).forEach((v, c) => { mean[c] += v / 25; });
   }
+  // Off the normal: along the centre row toward +x the sphere's normal makes the angle asin(x) with the view; the
+  // pixel whose centre is nearest sin(theta), and the angle its centre has.
+  const offNormal = {};
+  for (const degrees of ${JSON.stringify(Object.keys(offNormal))}) {
+    const x = Math.sin(degrees * Math.PI / 180);
+    const column = Math.min(size - 1, Math.round((x + 1.1) / 2.2 * size - 0.5));
+    const centreX = ((column + 0.5) / size) * 2.2 - 1.1;
+    offNormal[degrees] = { pixel: at(column, size / 2), degrees: Math.asin(Math.min(1, centreX)) * 180 / Math.PI };
+  }
   const gl = renderer.getContext();
   const debug = gl.getExtension('WEBGL_debug_renderer_info');
   window.__furnace = {
-    centre, mean, corner: at(2, 2),
+    centre, mean, corner: at(2, 2), offNormal,
     material: material && {
       type: material.type, color: material.color.toArray(), roughness: material.roughness,
       metalness: material.metalness, ior: material.ior, specularIntensity: material.specularIntensity,
@@ -172,7 +182,10 @@ if (!result || result.error) process.exit(2);
 
 if (png) await writeFile(png, Buffer.from(result.png.split(',')[1], 'base64'));
 const relative = expect ? result.centre.map((v, c) => (v - expect[c]) / expect[c]) : null;
+const off_normal = Object.fromEntries(Object.entries(result.offNormal).map(([degrees, measured]) => [degrees, {
+  pixel_degrees: measured.degrees, three: measured.pixel, expected: offNormal[degrees],
+  relative_difference: measured.pixel.map((v, c) => (v - offNormal[degrees][c]) / offNormal[degrees][c]) }]));
 console.log(JSON.stringify({ file: path.basename(file), three: result.three, gl: result.gl, centre: result.centre,
                              mean_5x5: result.mean, background: result.corner, expected: expect,
-                             relative_difference: relative, material: result.material }));
+                             relative_difference: relative, off_normal, material: result.material }));
 if (tolerance !== null && relative && relative.some((d) => !(Math.abs(d) <= tolerance))) process.exit(1);
