@@ -17,7 +17,7 @@ namespace skinlayer {
 constexpr double kMinFittedSheenRoughness = 0.3;
 
 struct GltfFitSettings {
-  double ior = 1.5;        // the base's index: the top interface's, or without a coat the one under the coat
+  double ior = 1.5;        // the base's: the top interface's index, or under a clearcoat the relative index below it
   bool clearcoat = false;  // a clear layer on top: clearcoat 1
 };
 
