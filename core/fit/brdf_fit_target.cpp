@@ -97,4 +97,22 @@ BoundedFit fit_shape(const BrdfFitTarget& target, const std::function<FittedShap
   return best;
 }
 
+Rgb color_for_albedo(const std::function<Rgb(const Rgb&)>& albedo, const Rgb& target, Rgb& miss) {
+  Rgb lo = Rgb::Zero(), hi = Rgb::Ones();
+  for (int step = 0; step < 52; ++step) {
+    const Rgb middle = 0.5 * (lo + hi);
+    const Rgb value = albedo(middle);
+    for (int c = 0; c < 3; ++c) (value(c) < target(c) ? lo(c) : hi(c)) = middle(c);
+  }
+  Rgb color = 0.5 * (lo + hi);
+  const Rgb darkest = albedo(Rgb::Zero()), brightest = albedo(Rgb::Ones());
+  for (int c = 0; c < 3; ++c) {
+    if (target(c) <= darkest(c)) color(c) = 0.0;
+    if (target(c) >= brightest(c)) color(c) = 1.0;
+  }
+  const Rgb off = albedo(color) - target;
+  miss = ((color > 0.0) && (color < 1.0)).select(Rgb::Zero(), off);
+  return color;
+}
+
 }  // namespace skinlayer

@@ -69,6 +69,11 @@ struct FittedShape {
   Rgb albedo_miss = Rgb::Zero();
 };
 
+// The diffuse colour in [0, 1] whose albedo at normal incidence, `albedo(color)` (rising in each channel), is
+// `target`: by bisection per channel, 0 or 1 where the range holds no such colour, and then what the albedo misses in
+// `miss` (0 where matched). For a shader whose albedo is not linear in its colour (an Oren-Nayar or EON diffuse).
+Rgb color_for_albedo(const std::function<Rgb(const Rgb&)>& albedo, const Rgb& target, Rgb& miss);
+
 // The least squares both shader fits solve (bounded_least_squares.h): for each pair sqrt(weight) times the fitted
 // f cos less the target's, per channel, then the albedo's miss times kAlbedoMissWeight. Started from each of `starts`
 // (the least squares find the nearest minimum), keeping the fit with the smaller residual.

@@ -25,24 +25,11 @@ OpenPbrParameters with_shape(const Eigen::VectorXd& x, const OpenPbrFitSettings&
   return p;
 }
 
-// The diffuse colour that gives the target albedo at normal incidence, by bisection on each channel, and what the
-// albedo misses where [0, 1] holds no such colour.
+// The colour that gives the target albedo at normal incidence (color_for_albedo), and what the albedo misses where
+// [0, 1] holds no such colour.
 OpenPbrSurface with_solved_color(const OpenPbrSurface& surface, const Rgb& target, Rgb& miss) {
-  Rgb lo = Rgb::Zero(), hi = Rgb::Ones();
-  for (int step = 0; step < 52; ++step) {
-    const Rgb middle = 0.5 * (lo + hi);
-    const Rgb albedo = surface.albedo_with_diffuse_color(1.0, middle);
-    for (int c = 0; c < 3; ++c) (albedo(c) < target(c) ? lo(c) : hi(c)) = middle(c);
-  }
-  Rgb color = 0.5 * (lo + hi);
-  const Rgb darkest = surface.albedo_with_diffuse_color(1.0, Rgb::Zero());
-  const Rgb brightest = surface.albedo_with_diffuse_color(1.0, Rgb::Ones());
-  for (int c = 0; c < 3; ++c) {
-    if (target(c) <= darkest(c)) color(c) = 0.0;
-    if (target(c) >= brightest(c)) color(c) = 1.0;
-  }
-  const Rgb off = surface.albedo_with_diffuse_color(1.0, color) - target;
-  miss = ((color > 0.0) && (color < 1.0)).select(Rgb::Zero(), off);
+  const Rgb color = color_for_albedo(
+      [&](const Rgb& diffuse) { return surface.albedo_with_diffuse_color(1.0, diffuse); }, target, miss);
   return surface.with_diffuse_colors(color, color);
 }
 
