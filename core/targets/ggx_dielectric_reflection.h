@@ -15,7 +15,9 @@
 //                       with Schlick's Fresnel of the same F0 = ((eta - 1)/(eta + 1))^2. Within about 1% of albedo,
 //                       and not equal to it: the graph does not conserve energy exactly.
 // MaterialX 1.39.5 itself weighs the compensation by F(omega_o.h) (under lights) or F(mu_o) (under its environment)
-// in place of F_avg; the F_avg form is the one its next releases take (after 1.39.5), and what this class computes.
+// in place of F_avg; the F_avg form is the one its next releases take (after 1.39.5), and what this class computes:
+// F(mu_o) of a low index rises to 1 at grazing views and inflates the lobe there by up to 11% (docs/model.md §22.3
+// gives what that changes).
 // Below alpha 1e-4 the interface is smooth: a mirror, whose albedo is c(mu_o) F(mu_o, eta) and whose f is 0 between
 // mirror pairs (MaterialX clamps alpha at 1e-8 and its fit is a polynomial in alpha, so c is the same there).
 #pragma once
