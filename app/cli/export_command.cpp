@@ -21,7 +21,7 @@
 
 namespace skinlayer::cli {
 std::string export_usage() {
-  return "Usage: skinlayer export --format bsdf|merl|rgl|blender|mtlx [material flags] [--albedo A | r,g,b]\n"
+  return "Usage: skinlayer export --format bsdf|merl|rgl|blender|blender-3.4|mtlx|gltf [material flags] [--albedo A | r,g,b]\n"
          "                        [--model M] -o FILE [--nodes N | --rgb --resolution N | --scene]\n"
          "\n"
          "Writes the solved material in a tabulated format that other programs read, or as a renderer's own\n"
@@ -50,16 +50,23 @@ std::string export_usage() {
          std::to_string(RglOptions{}.samples) +
          "); the\n"
          "                       file grows as N^2\n"
-         "  --format blender     a Python script for Blender 3.4 (blender -b --python FILE.py) that builds the\n"
-         "                       Principled BSDF `skinlayer fit --target principled` finds, distribution GGX,\n"
-         "                       with the material's JSON and the fit's errors as data and as custom properties\n"
-         "                       of the Blender material (docs/examples/blender)\n"
-         "  --scene              blender: also replace the scene by a preview: a unit sphere, an orthographic\n"
-         "                       camera on +z, a sun from the upper left, Cycles on the CPU\n"
+         "  --format blender     a Python script for Blender 4.2-5.x (blender -b --python-exit-code 1 --python\n"
+         "                       FILE.py) that builds the Principled BSDF `skinlayer fit --target principled`\n"
+         "                       finds, distribution Multiscatter GGX, with the material's JSON and the fit's\n"
+         "                       errors as data and as custom properties of the Blender material; in Blender\n"
+         "                       3.x it stops with one line (docs/examples/blender)\n"
+         "  --format blender-3.4 the same for Blender 3.x's Principled BSDF (`fit --target principled-3.4`,\n"
+         "                       distribution GGX); in Blender 4 and later it stops with one line\n"
+         "  --scene              blender, blender-3.4: also replace the scene by a preview: a unit sphere, an\n"
+         "                       orthographic camera on +z, a sun from the upper left, Cycles on the CPU\n"
          "  --format mtlx        a MaterialX 1.39 document with an OpenPBR Surface 1.1 material, the one\n"
          "                       `skinlayer fit --target openpbr` finds (Maya, Arnold, 3ds Max, Houdini, Unreal);\n"
          "                       the fit's report and the material's JSON ride along as the nodes' doc strings\n"
-         "                       (docs/examples/openpbr)\n" +
+         "                       (docs/examples/openpbr)\n"
+         "  --format gltf        a glTF 2.0 file (.gltf, its buffer embedded) with a unit sphere wearing the\n"
+         "                       material `skinlayer fit --target gltf` finds: metallic-roughness with the KHR\n"
+         "                       extensions it needs (three.js, Babylon.js, Godot, Blender's importer;\n"
+         "                       docs/examples/gltf)\n" +
          rgb_albedo_usage() +
          "  --model M            subsurface model: stam (default), lambert or hk\n"
          "  -o, --output FILE    the file to write (required; written whole or not at all)\n"
@@ -91,7 +98,7 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   };
   if (const auto* fitted = std::get_if<FittedExportSettings>(&request)) {
     if (model_from_flags(flags, SubsurfaceModel::Stam) != SubsurfaceModel::Stam) {
-      throw UsageError("--model is for the tabulated formats: --format blender and mtlx fit the layer model (stam)");
+      throw UsageError("--model is for the tabulated formats: the fitted formats (blender, blender-3.4, mtlx, gltf) fit the layer model (stam)");
     }
     progress << "export: fitting " << fitted_format_label(fitted->format) << "\n" << std::flush;
     const std::string text = fitted_export_text(document, *fitted, parallel_for_threads);

@@ -1,5 +1,6 @@
 #include "app/cli/export_flags.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <filesystem>
@@ -44,12 +45,21 @@ std::span<const std::string_view> export_switch_names() { return kExportSwitches
 
 ExportRequest export_request_from_flags(const ParsedFlags& flags) {
   const std::optional<std::string_view> format = flags.value("format");
-  if (!format) throw UsageError("export needs --format bsdf, merl, rgl, blender or mtlx (the format to write)");
-  if (*format != "merl" && *format != "bsdf" && *format != "rgl" && *format != "blender" && *format != "mtlx")
-    throw UsageError("format = " + quoted(*format) + " is not one of: bsdf, merl, rgl, blender, mtlx");
-  const bool bsdf = *format == "bsdf", rgl = *format == "rgl", blender = *format == "blender";
-  if (!blender && flags.has("scene")) throw UsageError("--scene is for --format blender");
-  if (blender || *format == "mtlx") {
+  if (!format) {
+    throw UsageError("export needs --format bsdf, merl, rgl, blender, blender-3.4, mtlx or gltf (the format to write)");
+  }
+  static constexpr std::array<std::pair<std::string_view, FittedFormat>, 4> kFitted = {
+      {{"blender", FittedFormat::BlenderScript},
+       {"blender-3.4", FittedFormat::BlenderScript34},
+       {"mtlx", FittedFormat::MaterialX},
+       {"gltf", FittedFormat::Gltf}}};
+  const auto fitted_format = std::find_if(kFitted.begin(), kFitted.end(), [&](const auto& f) { return f.first == *format; });
+  if (*format != "merl" && *format != "bsdf" && *format != "rgl" && fitted_format == kFitted.end())
+    throw UsageError("format = " + quoted(*format) + " is not one of: bsdf, merl, rgl, blender, blender-3.4, mtlx, gltf");
+  const bool bsdf = *format == "bsdf", rgl = *format == "rgl";
+  const bool blender = *format == "blender" || *format == "blender-3.4";
+  if (!blender && flags.has("scene")) throw UsageError("--scene is for --format blender or blender-3.4");
+  if (fitted_format != kFitted.end()) {
     for (const std::string_view tabulated : {"nodes", "resolution", "rgb"}) {
       if (flags.has(tabulated)) {
         throw UsageError("--" + std::string(tabulated) + " is for the tabulated formats, not --format " +
@@ -57,7 +67,7 @@ ExportRequest export_request_from_flags(const ParsedFlags& flags) {
       }
     }
     FittedExportSettings fitted;
-    fitted.format = blender ? FittedFormat::BlenderScript : FittedFormat::MaterialX;
+    fitted.format = fitted_format->second;
     fitted.scene = flags.has("scene");
     return fitted;
   }

@@ -27,7 +27,36 @@ nlohmann::ordered_json report(const char* target, const char* renderer, const nl
 
 }  // namespace
 
-nlohmann::ordered_json principled_fit_json(const DocumentFit<PrincipledFit>& fit) {
+nlohmann::ordered_json principled_fit_json(const DocumentFit<CyclesPrincipledFit>& fit) {
+  const CyclesPrincipledParameters& p = fit.fit.parameters;
+  nlohmann::ordered_json parameters;
+  parameters["base_color"] = channels(p.base_color);
+  parameters["metallic"] = p.metallic;
+  parameters["roughness"] = p.roughness;
+  parameters["ior"] = p.ior;
+  parameters["diffuse_roughness"] = p.diffuse_roughness;
+  parameters["subsurface_weight"] = p.subsurface_weight;
+  parameters["subsurface_radius"] = channels(p.subsurface_radius);
+  parameters["subsurface_scale"] = p.subsurface_scale;
+  parameters["subsurface_anisotropy"] = p.subsurface_anisotropy;
+  parameters["specular_ior_level"] = p.specular_ior_level;
+  parameters["specular_tint"] = channels(p.specular_tint);
+  parameters["transmission_weight"] = p.transmission_weight;
+  parameters["coat_weight"] = p.coat_weight;
+  parameters["coat_roughness"] = p.coat_roughness;
+  parameters["coat_ior"] = p.coat_ior;
+  parameters["coat_tint"] = channels(p.coat_tint);
+  parameters["sheen_weight"] = p.sheen_weight;
+  parameters["sheen_roughness"] = p.sheen_roughness;
+  parameters["sheen_tint"] = channels(p.sheen_tint);
+  parameters["distribution"] =
+      p.distribution == CyclesDistribution::kMultiscatterGgx ? "MULTI_GGX" : "GGX";  // Blender's enum names
+  return report("principled",
+                "Blender 4.2-5.x (Cycles), Principled BSDF, distribution Multiscatter GGX; Diffuse Roughness needs 4.3",
+                parameters, fit.radius_source, fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
+}
+
+nlohmann::ordered_json principled_3_4_fit_json(const DocumentFit<PrincipledFit>& fit) {
   const PrincipledParameters& p = fit.fit.parameters;
   nlohmann::ordered_json parameters;
   parameters["base_color"] = channels(p.base_color);
@@ -46,7 +75,7 @@ nlohmann::ordered_json principled_fit_json(const DocumentFit<PrincipledFit>& fit
   parameters["subsurface_color"] = channels(p.subsurface_color);
   parameters["subsurface_radius"] = channels(p.subsurface_radius);
   parameters["subsurface_anisotropy"] = p.subsurface_anisotropy;
-  return report("principled", "Blender 3.4 (Cycles), Principled BSDF, distribution GGX", parameters, fit.radius_source,
+  return report("principled-3.4", "Blender 3.4 (Cycles), Principled BSDF, distribution GGX", parameters, fit.radius_source,
                 fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
 }
 

@@ -7,7 +7,8 @@
 #include "core/conventions.h"
 #include "core/series/brdf_projection.h"
 #include "core/targets/openpbr_surface.h"
-#include "core/targets/principled_bsdf.h"
+#include "app/solution/principled_fit_document.h"
+#include "core/targets/cycles_principled.h"
 
 namespace skinlayer {
 namespace {
@@ -38,9 +39,9 @@ FittedTables fitted_tables(const ColorTables& shown, ShaderTarget target, const 
   Rgb reflected;  // the fit's albedo at the shown tables' angle
   FittedTables result;
   if (target == ShaderTarget::Principled) {
-    const DocumentFit<PrincipledFit> fit = fit_principled(document, parallel_for);
+    const DocumentFit<CyclesPrincipledFit> fit = fit_cycles_principled(document, parallel_for);
     brdf = as_brdf(fitted_brdf_cosine(fit.fit));
-    reflected = principled_albedo(fit.fit.parameters, direction_from_angles(shown.albedo_theta_i, 0.0));
+    reflected = CyclesPrincipled(fit.fit.parameters).albedo(std::cos(shown.albedo_theta_i));
     result.summary = summary("Principled", fit.fit.errors);
   } else {
     const DocumentFit<OpenPbrFit> fit = fit_openpbr(document, parallel_for);

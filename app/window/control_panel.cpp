@@ -76,7 +76,7 @@ void ab_controls(ComparisonState& comparison, const PanelStatus& status, PanelAc
     ImGui::SameLine();
     if (ImGui::Button("B: Principled fit")) actions.pin_fit = ShaderTarget::Principled;
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-      ImGui::SetTooltip(tooltip, "Blender 3.4's Principled BSDF", "principled");
+      ImGui::SetTooltip(tooltip, "the Principled BSDF of Blender 4.2-5.x", "principled");
     }
     ImGui::SameLine();
     if (ImGui::Button("B: OpenPBR fit")) actions.pin_fit = ShaderTarget::OpenPbr;
@@ -146,9 +146,10 @@ bool screenshot_controls(ExportOptions& options, const PanelStatus& status, Pane
                     "MB;\nno transmission: Export BSDF keeps it); to the path above with .rgl.bsdf (empty: "
                     "timestamped).");
   actions.export_blender = export_button("Export Blender", busy,
-                                         "The shown material as Blender 3.4's Principled BSDF, fitted (skinlayer fit "
-                                         "--target principled):\na Python script for blender -b --python FILE.py "
-                                         "with a preview scene; to the path above with .py (empty: timestamped).");
+                                         "The shown material as the Principled BSDF of Blender 4.2-5.x, fitted "
+                                         "(skinlayer fit --target principled):\na Python script for blender -b "
+                                         "--python-exit-code 1 --python FILE.py with a preview scene; to the path "
+                                         "above with .py (empty: timestamped).");
   ImGui::SameLine();
   actions.export_mtlx = export_button("Export MaterialX", busy,
                                       "The shown material as OpenPBR Surface, fitted (skinlayer fit --target "
