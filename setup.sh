@@ -4,7 +4,9 @@
 #   ./setup.sh         install the packages only
 #   ./setup.sh run     install, configure, build and start the previewer (build/skinlayer; without a display it
 #                      says so and points to the headless `skinlayer render`)
-#   ./setup.sh test    install, configure, build everything and run every test; then build core, the command line's
+#   ./setup.sh test    install, configure, build everything and run every test (with the glTF tools of npm in
+#                      build-tools/, and, where it can and CI is not set, Blender 4.3 and 5.2 in debootstrap chroots
+#                      in build-blender/: 80 s and 1.0-1.35 GB each); then build core, the command line's
 #                      GL-free parsers, the readers' fuzz targets and their tests again with clang under
 #                      AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/: SKINLAYER_SANITIZE=address,
 #                      SKINLAYER_FUZZ=ON, SKINLAYER_BUILD_APP=OFF), run those tests too but the slowest
@@ -25,7 +27,13 @@ readonly packages=(
   clang libclang-rt-14-dev
   pybind11-dev python3-dev python3-numpy python3-pytest
   blender  # Blender 3.4: the exported Principled BSDF rendered in headless Cycles (tests/app/export, label blender)
+  chromium  # three.js renders the glTF export in headless Chromium (tests/app/export/gltf_three_furnace.mjs)
+  debootstrap  # Blender 4.3 and 5.2 from Debian 13 and unstable, in chroots (tests/app/export/make_blender_chroot.sh)
 )
+readonly tools_dir=build-tools
+# Khronos' glTF-Validator, three.js and puppeteer-core (which drives Debian's chromium), pinned; puppeteer-core 25
+# needs Node.js 22.
+readonly npm_tools=(gltf-validator@2.0.0-dev.3.10 three@0.187.0 puppeteer-core@24.43.1)
 readonly build_dir=build
 readonly sanitize_dir=build-sanitize
 readonly tsan_dir=build-tsan
@@ -60,11 +68,50 @@ install_packages() {
 }
 
 configure() {
+  local options=(-DCMAKE_BUILD_TYPE=Release "$@")
   if [[ -f "$build_dir/CMakeCache.txt" ]]; then
-    cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release  # keep the generator the folder was made with
+    cmake -S . -B "$build_dir" "${options[@]}"  # keep the generator the folder was made with
   else
-    cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release
+    cmake -S . -B "$build_dir" -G Ninja "${options[@]}"
   fi
+}
+
+# The npm tools of the glTF checks, in build-tools/node_modules; Node.js from Debian where the machine has none.
+# Prints the CMake option that points the tests at them, or nothing where npm cannot install them (the tests are then
+# left out, and configuring says so).
+install_npm_tools() {
+  if ! command -v npm > /dev/null; then
+    echo "setup.sh: installing nodejs npm" >&2
+    local as_root=()
+    ((EUID == 0)) || as_root=(sudo)
+    "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -o DPkg::Lock::Timeout=600 nodejs npm >&2 ||
+      return 0
+  fi
+  if [[ ! -d "$tools_dir/node_modules/gltf-validator" || ! -d "$tools_dir/node_modules/puppeteer-core" ]]; then
+    mkdir -p "$tools_dir"
+    npm install --no-audit --no-fund --prefix "$tools_dir" "${npm_tools[@]}" >&2 ||
+      { echo "setup.sh: npm could not install ${npm_tools[*]}; the glTF tool tests are left out" >&2; return 0; }
+  fi
+  echo "-DSKINLAYER_GLTF_TOOLS=$PWD/$tools_dir/node_modules"
+}
+
+# Debian's Blender 4.3 (trixie) and 5.2 (sid) in chroots for the Blender tests (docs/examples/blender): made where this
+# runs as root with debootstrap and 3 GiB free, and not under CI (whose 45 minutes they do not fit: 80 s each, and 60
+# renders).
+make_blender_chroots() {
+  if [[ "${CI:-}" == true ]]; then
+    echo "setup.sh: CI is set: the Blender 4.3 and 5.2 tests are left out (tests/app/export/make_blender_chroot.sh)"
+    return
+  fi
+  if ((EUID != 0)) || ! command -v debootstrap > /dev/null; then
+    echo "setup.sh: the Blender 4.3 and 5.2 chroots need root and debootstrap; their tests are left out"
+    return
+  fi
+  local suite
+  for suite in trixie sid; do
+    tests/app/export/make_blender_chroot.sh "$suite" ||
+      echo "setup.sh: no Blender chroot for $suite; its tests are left out"
+  done
 }
 
 # Left out of the sanitized run (each passes in the plain run before it): the slowest checks under the sanitizers,
@@ -163,7 +210,9 @@ case "${1:-}" in
     exec "$build_dir/skinlayer" "${@:2}"
     ;;
   test)
-    configure
+    make_blender_chroots
+    gltf_tools_option=$(install_npm_tools)
+    configure ${gltf_tools_option:+"$gltf_tools_option"}
     cmake --build "$build_dir" -j2
     ctest --test-dir "$build_dir" --output-on-failure -j2
     sanitize_test
