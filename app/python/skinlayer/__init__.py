@@ -376,10 +376,11 @@ class Solution:
                     "bsdf": the SCATFUN Fourier BSDF of pbrt-v3 (reflection and transmission); nodes sets its
                     polar nodes per hemisphere (default 64)
                     "merl": the MERL .binary table (reflection only)
-                    "blender": a Python script for Blender 3.4 that builds the fitted Principled BSDF (the
+                    "blender": a Python script for Blender 4.2-5.x that builds the fitted Principled BSDF (the
                     material's layer model, as `skinlayer fit --target principled` finds it); with scene=True it
-                    also builds a preview scene
+                    also builds a preview scene; "blender-3.4" the same for Blender 3.x's node
                     "mtlx": a MaterialX 1.39 document with the fitted OpenPBR Surface material
+                    "gltf": a glTF 2.0 file with a sphere wearing the fitted glTF material
         ValueError names a bad option.
         """
         arguments = ["--format", str(format)]
