@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "core/fit/surface_fit.h"
+
 namespace skinlayer {
 namespace {
 
@@ -40,13 +42,6 @@ GltfPbr solved_surface(const Eigen::VectorXd& x, const GltfFitSettings& settings
 }  // namespace
 
 GltfFit fit_gltf(const BrdfFitTarget& target, const GltfFitSettings& settings) {
-  check_fit_target(target);
-  const Rgb& at_normal = target.albedo.front();
-  const auto shape = [&](const Eigen::VectorXd& x) {
-    Rgb miss;
-    const GltfPbr surface = solved_surface(x, settings, at_normal, miss);
-    return FittedShape{[surface](const Vec3& i, const Vec3& o) { return surface.brdf_cosine_weighted(i, o); }, miss};
-  };
   const int fitted = fitted_count(settings);
   Eigen::VectorXd lo = Eigen::VectorXd::Zero(fitted), hi = Eigen::VectorXd::Ones(fitted);
   lo(0) = kMinFittedRoughness;
@@ -55,16 +50,12 @@ GltfFit fit_gltf(const BrdfFitTarget& target, const GltfFitSettings& settings) {
   // A glossy start and a matte one.
   const Eigen::VectorXd starts[] = {(Eigen::VectorXd(5) << 0.4, 1.0, 0.0, 0.5, 0.3).finished().head(fitted),
                                     (Eigen::VectorXd(5) << 0.8, 0.5, 0.3, 0.5, 0.3).finished().head(fitted)};
-  const BoundedFit best = fit_shape(target, shape, starts, lo, hi);
-
-  GltfFit fit;
-  const GltfPbr surface = solved_surface(best.parameters, settings, at_normal, fit.albedo_miss);
-  fit.parameters = surface.parameters();
+  const auto found = fit_surface(
+      target,
+      [&](const Eigen::VectorXd& x, Rgb& miss) { return solved_surface(x, settings, target.albedo.front(), miss); },
+      starts, lo, hi);
+  GltfFit fit{found.surface.parameters(), found.albedo_matched, found.albedo_miss, found.errors};
   if (fit.parameters.sheen_color.maxCoeff() == 0.0) fit.parameters.sheen_roughness = 0.0;  // no sheen: its default
-  fit.albedo_matched = (fit.albedo_miss.abs() < 1e-9).all();
-  fit.errors = fit_errors(
-      target, [&](const Vec3& omega_i, const Vec3& omega_o) { return surface.brdf_cosine_weighted(omega_i, omega_o); },
-      [&](double theta) { return surface.albedo(std::cos(theta)); });
   return fit;
 }
 

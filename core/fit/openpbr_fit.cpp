@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "core/fit/surface_fit.h"
+
 namespace skinlayer {
 namespace {
 
@@ -42,13 +44,6 @@ OpenPbrSurface solved_surface(const Eigen::VectorXd& x, const OpenPbrFitSettings
 }  // namespace
 
 OpenPbrFit fit_openpbr(const BrdfFitTarget& target, const OpenPbrFitSettings& settings) {
-  check_fit_target(target);
-  const Rgb& at_normal = target.albedo.front();
-  const auto shape = [&](const Eigen::VectorXd& x) {
-    Rgb miss;
-    const OpenPbrSurface surface = solved_surface(x, settings, at_normal, miss);
-    return FittedShape{[surface](const Vec3& i, const Vec3& o) { return surface.brdf_cosine_weighted(i, o); }, miss};
-  };
   const int fitted = fitted_count(settings);
   Eigen::VectorXd lo = Eigen::VectorXd::Zero(fitted), hi = Eigen::VectorXd::Ones(fitted);
   lo(0) = lo(4) = kMinFittedRoughness;
@@ -56,16 +51,11 @@ OpenPbrFit fit_openpbr(const BrdfFitTarget& target, const OpenPbrFitSettings& se
   // A glossy start and a matte one.
   const Eigen::VectorXd starts[] = {(Eigen::VectorXd(6) << 0.4, 1.0, 0.0, 0.0, 0.5, 0.3).finished().head(fitted),
                                     (Eigen::VectorXd(6) << 0.8, 0.5, 0.5, 0.3, 0.5, 0.3).finished().head(fitted)};
-  const BoundedFit best = fit_shape(target, shape, starts, lo, hi);
-
-  OpenPbrFit fit;
-  const OpenPbrSurface surface = solved_surface(best.parameters, settings, at_normal, fit.albedo_miss);
-  fit.parameters = surface.parameters();
-  fit.albedo_matched = (fit.albedo_miss.abs() < 1e-9).all();
-  fit.errors = fit_errors(
-      target, [&](const Vec3& omega_i, const Vec3& omega_o) { return surface.brdf_cosine_weighted(omega_i, omega_o); },
-      [&](double theta) { return surface.albedo(std::cos(theta)); });
-  return fit;
+  const auto found = fit_surface(
+      target,
+      [&](const Eigen::VectorXd& x, Rgb& miss) { return solved_surface(x, settings, target.albedo.front(), miss); },
+      starts, lo, hi);
+  return {found.surface.parameters(), found.albedo_matched, found.albedo_miss, found.errors};
 }
 
 }  // namespace skinlayer
