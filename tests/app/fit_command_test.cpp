@@ -2,6 +2,7 @@
 // is the material's, the errors it reports, the file it writes, and one line for what it cannot take.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,8 @@
 #include "core/fit/principled_fit.h"
 #include "core/material.h"
 #include "core/solver.h"
+#include "core/targets/gltf_pbr.h"
+#include "tests/app/csv_output.h"
 #include "tests/app/error_expectations.h"
 #include "tests/app/principled_report.h"
 #include "tests/app/process_runner.h"
@@ -134,6 +137,45 @@ TEST(FitCommand, TheOpenPbrFitKeepsTheMaterialsAlbedoAndInterfaces) {
                   openpbr_mm, 1e-9 * openpbr_mm)
           << target;
     }
+  }
+}
+
+// glTF: a clear top layer over a refracting interface is clearcoat 1, and the fitted material, evaluated by
+// skinlayer's own model of glTF's BRDF, reflects at normal incidence what `skinlayer albedo` says the material does.
+TEST(FitCommand, TheGltfFitKeepsTheMaterialsAlbedoAtNormalIncidence) {
+  const ProcessResult result = fit({"--target", "gltf", "--preset", "clear-coat-red"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json json = nlohmann::json::parse(result.out);
+  EXPECT_EQ(json.at("target"), "gltf");
+  EXPECT_TRUE(json.at("albedo_matched_at_normal_incidence").get<bool>());
+  const nlohmann::json& p = json.at("parameters");
+  EXPECT_EQ(p.at("clearcoat"), 1.0);
+  EXPECT_EQ(p.at("metallic"), 0.0);
+  GltfPbrParameters parameters;
+  parameters.base_color = rgb_of(p.at("base_color"));
+  parameters.metallic = p.at("metallic");
+  parameters.roughness = p.at("roughness");
+  parameters.ior = p.at("ior");
+  parameters.specular = p.at("specular");
+  parameters.specular_color = rgb_of(p.at("specular_color"));
+  parameters.sheen_color = rgb_of(p.at("sheen_color"));
+  parameters.sheen_roughness = p.at("sheen_roughness");
+  parameters.clearcoat = p.at("clearcoat");
+  parameters.clearcoat_roughness = p.at("clearcoat_roughness");
+  const Rgb fitted = GltfPbr(parameters).albedo(1.0);
+
+  const ProcessResult albedo = run_skinlayer({"albedo", "--preset", "clear-coat-red", "--theta-i", "0"});
+  ASSERT_EQ(albedo.exit_code, 0) << albedo.err;
+  const CsvOutput table = parse_csv_output(albedo.out);
+  ASSERT_EQ(table.rows.size(), 1u);
+  for (int c = 0; c < 3; ++c) {
+    const std::string column = std::string("reflectance_") + "rgb"[c];
+    const auto at = std::find(table.header.begin(), table.header.end(), column);
+    ASSERT_NE(at, table.header.end()) << column;
+    const double material = table.rows[0][static_cast<std::size_t>(at - table.header.begin())];
+    std::printf("  %s: material %.6f  glTF model %.6f\n", column.c_str(), material, fitted(c));
+    // The CLI prints 17 significant digits; the fit solves the base colour in closed form.
+    EXPECT_NEAR(fitted(c), material, 1e-6 * material) << column;
   }
 }
 

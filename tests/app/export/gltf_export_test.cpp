@@ -9,12 +9,17 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "app/material/presets.h"
 #include "app/process/parallel_for.h"
 #include "app/solution/gltf_fit_document.h"
 #include "core/targets/gltf_pbr.h"
+#include "tests/app/error_expectations.h"
+#include "tests/app/process_runner.h"
+#include "tests/app/scratch_folder.h"
 
 namespace skinlayer {
 namespace {
@@ -199,6 +204,80 @@ TEST(GltfExport, CarriesTheFitOfAClearCoatedPreset) {
   EXPECT_NEAR(material.at("extras").at("gltf_model_albedo_at_degrees").at("60").at(0).get<double>(), at_60(0), 1e-12);
   std::printf("  clear-coat-red: %s\n", report.at("parameters").dump().c_str());
   std::printf("  errors: %s\n", report.at("errors").dump().c_str());
+}
+
+// The material's factors as a reader finds them: pbrMetallicRoughness's, and each extension's where the material has
+// it, glTF's defaults where it has not (the extensions' own schemas), by GltfPbrParameters' names as the fit's report
+// has them.
+Json factors_in(const Json& material) {
+  const Json& pbr = material.at("pbrMetallicRoughness");
+  const Json none = Json::object();
+  const Json& extensions = material.contains("extensions") ? material.at("extensions") : none;
+  const auto extension = [&](const char* name) -> const Json& {
+    return extensions.contains(name) ? extensions.at(name) : none;
+  };
+  const Json base = pbr.value("baseColorFactor", Json{1.0, 1.0, 1.0, 1.0});
+  return {{"base_color", {base.at(0), base.at(1), base.at(2)}},
+          {"metallic", pbr.value("metallicFactor", 1.0)},
+          {"roughness", pbr.value("roughnessFactor", 1.0)},
+          {"ior", extension("KHR_materials_ior").value("ior", 1.5)},
+          {"specular", extension("KHR_materials_specular").value("specularFactor", 1.0)},
+          {"specular_color", extension("KHR_materials_specular").value("specularColorFactor", Json{1.0, 1.0, 1.0})},
+          {"sheen_color", extension("KHR_materials_sheen").value("sheenColorFactor", Json{0.0, 0.0, 0.0})},
+          {"sheen_roughness", extension("KHR_materials_sheen").value("sheenRoughnessFactor", 0.0)},
+          {"clearcoat", extension("KHR_materials_clearcoat").value("clearcoatFactor", 0.0)},
+          {"clearcoat_roughness", extension("KHR_materials_clearcoat").value("clearcoatRoughnessFactor", 0.0)}};
+}
+
+class GltfExportCommand : public test::ScratchFolderTest {};
+
+// `skinlayer export --format gltf` writes the material `skinlayer fit --target gltf` prints: every factor a reader
+// takes from the file (defaults included) is the fit's parameter, the report rides in the extras, and the base's
+// alpha is 1 (opaque).
+TEST_F(GltfExportCommand, TheFileCarriesTheFitsParameters) {
+  const std::string file = path("clear-coat-red.gltf");
+  const test::ProcessResult exported =
+      test::run_skinlayer({"export", "--format", "gltf", "--preset", "clear-coat-red", "-o", file});
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  EXPECT_NE(exported.out.find("wrote " + file), std::string::npos) << exported.out;
+  const test::ProcessResult fitted = test::run_skinlayer({"fit", "--target", "gltf", "--preset", "clear-coat-red"});
+  ASSERT_EQ(fitted.exit_code, 0) << fitted.err;
+  const Json report = Json::parse(fitted.out);
+
+  std::ifstream in(file);
+  ASSERT_TRUE(in);
+  const Json asset = Json::parse(in);
+  const Json& material = asset.at("materials").at(0);
+  EXPECT_EQ(material.at("pbrMetallicRoughness").at("baseColorFactor").at(3), 1.0);
+  const Json factors = factors_in(material);
+  const Json& parameters = report.at("parameters");
+  for (const auto& [name, value] : factors.items()) {
+    ASSERT_TRUE(parameters.contains(name)) << name;
+    const Json& expected = parameters.at(name);
+    if (value.is_array()) {
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(value.at(c).get<double>(), expected.at(c).get<double>(), 1e-12) << name;
+    } else {
+      EXPECT_NEAR(value.get<double>(), expected.get<double>(), 1e-12) << name;
+    }
+  }
+  EXPECT_EQ(factors.at("clearcoat"), 1.0);
+  EXPECT_EQ(material.at("extras").at("skinlayer_fit").at("parameters"), parameters);
+  EXPECT_EQ(material.at("extras").at("skinlayer_fit").at("errors"), report.at("errors"));
+}
+
+// The flags of other formats are refused with one line naming the flag and the formats it is for, and no file.
+TEST_F(GltfExportCommand, FlagsOfOtherFormatsAreOneLine) {
+  const std::string file = path("x.gltf");
+  EXPECT_TRUE(test::failed_with_one_line(
+      test::run_skinlayer({"export", "--format", "gltf", "--scene", "--preset", "jade", "-o", file}), 2,
+      {"--scene", "blender", "blender-3.4"}));
+  EXPECT_TRUE(test::failed_with_one_line(
+      test::run_skinlayer({"export", "--format", "gltf", "--nodes", "9", "--preset", "jade", "-o", file}), 2,
+      {"--nodes", "gltf"}));
+  EXPECT_TRUE(test::failed_with_one_line(
+      test::run_skinlayer({"export", "--format", "gltf", "--model", "hk", "--preset", "jade", "-o", file}), 2,
+      {"--model", "gltf"}));
+  EXPECT_FALSE(std::filesystem::exists(file));
 }
 
 }  // namespace
