@@ -50,7 +50,7 @@ std::string fit_usage() {
          "              and roughness, specular roughness and weight, fuzz weight and roughness, coat roughness.\n"
          "              Where the radius is known, subsurface_weight is 1 (at the BRDF's scale the same lobe).\n"
          "  gltf        glTF 2.0's metallic-roughness material with KHR_materials_ior, _specular, _sheen and\n"
-         "              _clearcoat, as the Khronos specification writes it (section 22.6): the material's own\n"
+         "              _clearcoat, as the Khronos specification writes it (section 22.7): the material's own\n"
          "              index, fitted base colour, roughness, specular, sheen and clearcoat roughness. glTF has\n"
          "              no subsurface radius among these extensions.\n"
          "The subsurface radius comes from the material's mean free path 1/mu_t and g (its deepest layer's; a skin's\n"
