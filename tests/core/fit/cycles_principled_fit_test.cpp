@@ -9,21 +9,12 @@
 #include <cstdio>
 #include <numbers>
 
+#include "tests/core/fit/surface_fit_target.h"
+
 namespace skinlayer {
 namespace {
 
-BrdfFitTarget target_of(const CyclesPrincipled& truth) {
-  BrdfFitTarget target;
-  target.pairs = fit_pairs();
-  for (const DirectionPair& pair : target.pairs) {
-    target.brdf_cosine.push_back(truth.brdf_cosine_weighted(pair.omega_i, pair.omega_o));
-  }
-  for (const double angle : {0.0, 0.5, 1.0, 1.3}) {
-    target.albedo_angles.push_back(angle);
-    target.albedo.push_back(truth.albedo(std::cos(angle)));
-  }
-  return target;
-}
+using test::target_of;
 
 void expect_found(const CyclesPrincipledParameters& truth, const CyclesPrincipledFitSettings& settings) {
   const CyclesPrincipledFit fit = fit_cycles_principled(target_of(CyclesPrincipled(truth)), settings);
@@ -83,7 +74,8 @@ TEST(CyclesPrincipledFit, MatchesTheAlbedoAtNormalIncidenceExactly) {
   const Rgb lambert(0.5, 0.3, 0.1);
   BrdfFitTarget target;
   target.pairs = fit_pairs();
-  for (const DirectionPair& pair : target.pairs) target.brdf_cosine.push_back(lambert * pair.omega_i.z() / std::numbers::pi);
+  for (const DirectionPair& pair : target.pairs)
+    target.brdf_cosine.push_back(lambert * pair.omega_i.z() / std::numbers::pi);
   for (const double angle : {0.0, 0.7, 1.2}) {
     target.albedo_angles.push_back(angle);
     target.albedo.push_back(lambert);

@@ -8,22 +8,12 @@
 #include <cstdio>
 
 #include "core/conventions.h"
+#include "tests/core/fit/surface_fit_target.h"
 
 namespace skinlayer {
 namespace {
 
-BrdfFitTarget target_of(const OpenPbrSurface& truth) {
-  BrdfFitTarget target;
-  target.pairs = fit_pairs();
-  for (const DirectionPair& pair : target.pairs) {
-    target.brdf_cosine.push_back(truth.brdf_cosine_weighted(pair.omega_i, pair.omega_o));
-  }
-  for (const double angle : {0.0, 0.5, 1.0, 1.3}) {
-    target.albedo_angles.push_back(angle);
-    target.albedo.push_back(truth.albedo(std::cos(angle)));
-  }
-  return target;
-}
+using test::target_of;
 
 void expect_found(const OpenPbrParameters& truth, const OpenPbrFitSettings& settings) {
   const OpenPbrFit fit = fit_openpbr(target_of(OpenPbrSurface(truth)), settings);
