@@ -26,7 +26,9 @@ std::string python_json(const nlohmann::ordered_json& json) {
 }
 
 std::string color(const Rgb& c, bool with_alpha) {
-  return "(" + number(c(0)) + ", " + number(c(1)) + ", " + number(c(2)) + (with_alpha ? ", 1.0)" : ")");
+  std::ostringstream out;
+  out << '(' << number(c(0)) << ", " << number(c(1)) << ", " << number(c(2)) << (with_alpha ? ", 1.0)" : ")");
+  return out.str();
 }
 
 // The node's inputs by the names Blender 4.2-5.x gives them (node_shader_bsdf_principled.cc), those the fit sets.
@@ -94,8 +96,12 @@ def check_blender_version():
     version = bpy.app.version
     if version >= first and (past is None or version < past):
         return
+    if first >= (4, 0, 0) and (4, 0, 0) <= version < first:  # today's node, but older than this fit needs
+        advice = "open it in Blender %d.%d or later" % first[:2]
+    else:
+        advice = f"make {OTHER_EXPORT} instead"
     message = (f"skinlayer: this script builds {NODE_NAME}, fitted for it; this is Blender "
-               f"{bpy.app.version_string}: make {OTHER_EXPORT} instead")
+               f"{bpy.app.version_string}: {advice}")
     if bpy.app.background:
         raise SystemExit(message)  # blender -b exits with status 1 and renders nothing
     raise RuntimeError(message)

@@ -126,7 +126,7 @@ TEST_F(BlenderScript, InTheOtherNodesBlenderItStopsWithOneLine) {
   ASSERT_EQ(run_skinlayer({"export", "--format", "blender", "--preset", "wax", "-o", today}).exit_code, 0);
   ASSERT_EQ(run_skinlayer({"export", "--format", "blender-3.4", "--preset", "wax", "-o", old}).exit_code, 0);
   for (const auto& [script, version, other] : {std::tuple{today, "3, 4, 1", "--format blender-3.4"},
-                                               std::tuple{today, "4, 1, 0", "--format blender-3.4"},
+                                               std::tuple{today, "4, 1, 0", "Blender 4.2 or later"},
                                                std::tuple{old, "4, 3, 2", "--format blender`"},
                                                std::tuple{old, "5, 2, 2", "--format blender`"}}) {
     const ProcessResult result = run_script(script, version);
@@ -136,6 +136,13 @@ TEST_F(BlenderScript, InTheOtherNodesBlenderItStopsWithOneLine) {
     EXPECT_NE(result.err.find(other), std::string::npos) << result.err;
   }
   EXPECT_EQ(run_script(today, "4, 2, 0").exit_code, 0);  // wax's fit leaves Diffuse Roughness at 0
+  // Jade's uses it, which Blender 4.3 added: in 4.2 the script asks for 4.3, not for the other export.
+  const std::string jade = path("jade.py");
+  ASSERT_EQ(run_skinlayer({"export", "--format", "blender", "--preset", "jade", "-o", jade}).exit_code, 0);
+  const ProcessResult too_old = run_script(jade, "4, 2, 0");
+  EXPECT_EQ(too_old.exit_code, 1);
+  EXPECT_NE(too_old.err.find("Blender 4.3 or later"), std::string::npos) << too_old.err;
+  EXPECT_EQ(run_script(jade, "4, 3, 0").exit_code, 0);
   EXPECT_EQ(run_script(today, "5, 2, 2").exit_code, 0);
   EXPECT_EQ(run_script(old, "3, 6, 0").exit_code, 0);
 }
