@@ -107,4 +107,23 @@ nlohmann::ordered_json openpbr_fit_json(const DocumentFit<OpenPbrFit>& fit) {
                 fit.radius_source, fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
 }
 
+nlohmann::ordered_json gltf_fit_json(const DocumentFit<GltfFit>& fit) {
+  const GltfPbrParameters& p = fit.fit.parameters;
+  nlohmann::ordered_json parameters;
+  parameters["base_color"] = channels(p.base_color);
+  parameters["metallic"] = p.metallic;
+  parameters["roughness"] = p.roughness;
+  parameters["ior"] = p.ior;
+  parameters["specular"] = p.specular;
+  parameters["specular_color"] = channels(p.specular_color);
+  parameters["sheen_color"] = channels(p.sheen_color);
+  parameters["sheen_roughness"] = p.sheen_roughness;
+  parameters["clearcoat"] = p.clearcoat;
+  parameters["clearcoat_roughness"] = p.clearcoat_roughness;
+  return report("gltf",
+                "glTF 2.0 metallic-roughness (Appendix B) with KHR_materials_ior, _specular, _sheen and _clearcoat; "
+                "the renderer's choices as three.js r187's",
+                parameters, fit.radius_source, fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
+}
+
 }  // namespace skinlayer

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/solution/gltf_fit_document.h"
 #include "app/solution/principled_fit_document.h"
 #include "app/solution/shader_fit.h"
 
@@ -20,5 +21,8 @@ nlohmann::ordered_json principled_3_4_fit_json(const DocumentFit<PrincipledFit>&
 
 // The same for "openpbr", its parameters by OpenPBR Surface 1.1's input names (subsurface_radius in millimetres).
 nlohmann::ordered_json openpbr_fit_json(const DocumentFit<OpenPbrFit>& fit);
+
+// The same for "gltf", its parameters by glTF's names (the metallic-roughness factors and the KHR extensions').
+nlohmann::ordered_json gltf_fit_json(const DocumentFit<GltfFit>& fit);
 
 }  // namespace skinlayer

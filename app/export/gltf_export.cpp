@@ -5,6 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "app/export/fit_report_json.h"
 #include "app/material/material_json.h"
 #include "core/conventions.h"
 #include "core/fit/brdf_fit_target.h"
@@ -164,36 +165,6 @@ nlohmann::ordered_json gltf_asset(const GltfPbrParameters& parameters, const std
   asset["buffers"] = {
       {{"byteLength", bytes.size()}, {"uri", "data:application/octet-stream;base64," + base64_encode(bytes)}}};
   return asset;
-}
-
-nlohmann::ordered_json gltf_fit_json(const DocumentFit<GltfFit>& fit) {
-  const GltfPbrParameters& p = fit.fit.parameters;
-  const FitErrors& e = fit.fit.errors;
-  nlohmann::ordered_json parameters;
-  parameters["base_color"] = channels(p.base_color);
-  parameters["metallic"] = p.metallic;
-  parameters["roughness"] = p.roughness;
-  parameters["ior"] = p.ior;
-  parameters["specular"] = p.specular;
-  parameters["specular_color"] = channels(p.specular_color);
-  parameters["sheen_color"] = channels(p.sheen_color);
-  parameters["sheen_roughness"] = p.sheen_roughness;
-  parameters["clearcoat"] = p.clearcoat;
-  parameters["clearcoat_roughness"] = p.clearcoat_roughness;
-  nlohmann::ordered_json json;
-  json["target"] = "gltf";
-  json["renderer"] =
-      "glTF 2.0 metallic-roughness (Appendix B) with KHR_materials_ior, _specular, _sheen and _clearcoat; "
-      "the renderer's choices as three.js r187's";
-  json["parameters"] = parameters;
-  json["subsurface_radius_source"] = fit.radius_source;
-  json["albedo_matched_at_normal_incidence"] = fit.fit.albedo_matched;
-  json["albedo_miss_at_normal_incidence"] = channels(fit.fit.albedo_miss);
-  json["errors"] = {{"lobe_rms", channels(e.lobe_rms)},
-                    {"lobe_worst", channels(e.lobe_worst)},
-                    {"albedo_rms", channels(e.albedo_rms)},
-                    {"albedo_worst", channels(e.albedo_worst)}};
-  return json;
 }
 
 std::string gltf_export(const MaterialDocument& document, const DocumentFit<GltfFit>& fit) {

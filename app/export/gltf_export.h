@@ -23,9 +23,6 @@
 
 namespace skinlayer {
 
-// The fit's report: {"target": "gltf", "renderer", "parameters": {glTF's names}, "subsurface_radius_source",
-// "albedo_matched_at_normal_incidence", "albedo_miss_at_normal_incidence", "errors"}, as the other fits'.
-nlohmann::ordered_json gltf_fit_json(const DocumentFit<GltfFit>& fit);
 
 // The names of the KHR extensions the material's factors need, in a fixed order (ior, specular, sheen, clearcoat).
 std::vector<std::string> gltf_extensions_used(const GltfPbrParameters& parameters);
