@@ -21,8 +21,9 @@
 
 namespace skinlayer::cli {
 std::string export_usage() {
-  return "Usage: skinlayer export --format bsdf|merl|rgl|blender|blender-3.4|mtlx|gltf [material flags] [--albedo A | r,g,b]\n"
-         "                        [--model M] -o FILE [--nodes N | --rgb --resolution N | --scene]\n"
+  return "Usage: skinlayer export --format bsdf|merl|rgl|blender|blender-3.4|mtlx|gltf\n"
+         "                        [material flags] [--albedo A | r,g,b] [--model M] -o FILE\n"
+         "                        [--nodes N | --rgb --resolution N | --scene]\n"
          "\n"
          "Writes the solved material in a tabulated format that other programs read, or as a renderer's own\n"
          "shader with fitted parameters.\n"
@@ -98,7 +99,9 @@ int run_export_command(std::span<const std::string_view> arguments, std::ostream
   };
   if (const auto* fitted = std::get_if<FittedExportSettings>(&request)) {
     if (model_from_flags(flags, SubsurfaceModel::Stam) != SubsurfaceModel::Stam) {
-      throw UsageError("--model is for the tabulated formats: the fitted formats (blender, blender-3.4, mtlx, gltf) fit the layer model (stam)");
+      throw UsageError(
+          "--model is for the tabulated formats: the fitted formats (blender, blender-3.4, mtlx, gltf) fit the layer "
+          "model (stam)");
     }
     progress << "export: fitting " << fitted_format_label(fitted->format) << "\n" << std::flush;
     const std::string text = fitted_export_text(document, *fitted, parallel_for_threads);
