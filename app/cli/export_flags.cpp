@@ -53,9 +53,11 @@ ExportRequest export_request_from_flags(const ParsedFlags& flags) {
        {"blender-3.4", FittedFormat::BlenderScript34},
        {"mtlx", FittedFormat::MaterialX},
        {"gltf", FittedFormat::Gltf}}};
-  const auto fitted_format = std::find_if(kFitted.begin(), kFitted.end(), [&](const auto& f) { return f.first == *format; });
+  const auto fitted_format =
+      std::find_if(kFitted.begin(), kFitted.end(), [&](const auto& f) { return f.first == *format; });
   if (*format != "merl" && *format != "bsdf" && *format != "rgl" && fitted_format == kFitted.end())
-    throw UsageError("format = " + quoted(*format) + " is not one of: bsdf, merl, rgl, blender, blender-3.4, mtlx, gltf");
+    throw UsageError("format = " + quoted(*format) +
+                     " is not one of: bsdf, merl, rgl, blender, blender-3.4, mtlx, gltf");
   const bool bsdf = *format == "bsdf", rgl = *format == "rgl";
   const bool blender = *format == "blender" || *format == "blender-3.4";
   if (!blender && flags.has("scene")) throw UsageError("--scene is for --format blender or blender-3.4");

@@ -176,7 +176,6 @@ if BUILD_SCENE:
     build_preview_scene(material)
 )";
 
-
 // What a script is for: the node's name, the Blender versions [first, past) that have it, its distribution and the
 // export to make in another Blender.
 struct NodeTarget {
@@ -196,7 +195,8 @@ std::string script(const MaterialDocument& document, const NodeTarget& target, c
   std::ostringstream out;
   out << "# " << target.node_name << " fitted by skinlayer to the material " << nlohmann::json(name).dump(-1, ' ', true)
       << ".\n"
-      << "# Run: blender -b --python-exit-code 1 --python THIS.py  (add -o //preview_#### -f 1 to render, with --scene's\n"
+      << "# Run: blender -b --python-exit-code 1 --python THIS.py  (add -o //preview_#### -f 1 to render, with "
+         "--scene's\n"
       << "# preview). In another Blender than " << target.node_name << "'s it stops with one line.\n"
       << "#\n"
       << "# The fit's error, red green blue, relative to the material's own values (skinlayer fit --help):\n"

@@ -75,8 +75,8 @@ nlohmann::ordered_json principled_3_4_fit_json(const DocumentFit<PrincipledFit>&
   parameters["subsurface_color"] = channels(p.subsurface_color);
   parameters["subsurface_radius"] = channels(p.subsurface_radius);
   parameters["subsurface_anisotropy"] = p.subsurface_anisotropy;
-  return report("principled-3.4", "Blender 3.4 (Cycles), Principled BSDF, distribution GGX", parameters, fit.radius_source,
-                fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
+  return report("principled-3.4", "Blender 3.4 (Cycles), Principled BSDF, distribution GGX", parameters,
+                fit.radius_source, fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
 }
 
 nlohmann::ordered_json openpbr_fit_json(const DocumentFit<OpenPbrFit>& fit) {

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/solution/principled_fit_document.h"
 #include "core/conventions.h"
 #include "core/series/brdf_projection.h"
-#include "core/targets/openpbr_surface.h"
-#include "app/solution/principled_fit_document.h"
 #include "core/targets/cycles_principled.h"
+#include "core/targets/openpbr_surface.h"
 
 namespace skinlayer {
 namespace {

@@ -41,9 +41,8 @@ TEST(FitCommand, ThePrincipledFitsKeepTheMaterialsAlbedoAtNormalIncidence) {
     const nlohmann::json json = nlohmann::json::parse(result.out);
     EXPECT_EQ(json.at("target"), target);
     EXPECT_TRUE(json.at("albedo_matched_at_normal_incidence").get<bool>());
-    const Rgb fitted = target == "principled"
-                           ? CyclesPrincipled(cycles_principled_parameters(json)).albedo(1.0)
-                           : principled_albedo(principled_parameters(json), Vec3::UnitZ());
+    const Rgb fitted = target == "principled" ? CyclesPrincipled(cycles_principled_parameters(json)).albedo(1.0)
+                                              : principled_albedo(principled_parameters(json), Vec3::UnitZ());
     std::printf("  %s: material %.6f  fitted %.6f  lobe rms %.4f\n", target.c_str(), material, fitted(0),
                 json.at("errors").at("lobe_rms").at(0).get<double>());
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(fitted(c), material, 1e-6) << target;
@@ -133,8 +132,8 @@ TEST(FitCommand, TheOpenPbrFitKeepsTheMaterialsAlbedoAndInterfaces) {
     const double mm = s.at("subsurface_radius").get<double>();
     for (int channel = 0; channel < 3; ++channel) {
       const double openpbr_mm = mm * s.at("subsurface_radius_scale").at(channel).get<double>();
-      EXPECT_NEAR(principled.at("subsurface_radius").at(channel).get<double>() * scale * 1000.0 * (1.0 - g),
-                  openpbr_mm, 1e-9 * openpbr_mm)
+      EXPECT_NEAR(principled.at("subsurface_radius").at(channel).get<double>() * scale * 1000.0 * (1.0 - g), openpbr_mm,
+                  1e-9 * openpbr_mm)
           << target;
     }
   }

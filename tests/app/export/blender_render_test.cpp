@@ -1,9 +1,10 @@
 // The exported Blender scripts rendered by a real Blender (headless Cycles on the CPU), compared ring by ring with
 // skinlayer's own implementation of that Blender's Principled BSDF for the parameters the script carries; and,
 // reported, with skinlayer's exact BRDF for the material it was fitted to (issues 44 and 54). The Blender is
-// SKINLAYER_BLENDER_COMMAND (a command line, its words separated by '|': `blender`, or tests/app/export/blender_in_chroot.sh with a
-// chroot of Debian's Blender 4.3 or 5.2); its version picks the export: `--format blender-3.4` and
-// core/targets/principled_bsdf.h before 4.0, `--format blender` and core/targets/cycles_principled.h after.
+// SKINLAYER_BLENDER_COMMAND (a command line, its words separated by '|': `blender`, or
+// tests/app/export/blender_in_chroot.sh with a chroot of Debian's Blender 4.3 or 5.2); its version picks the export:
+// `--format blender-3.4` and core/targets/principled_bsdf.h before 4.0, `--format blender` and
+// core/targets/cycles_principled.h after.
 //
 // The exported script builds the material and its preview scene: a unit sphere under an orthographic camera on +z.
 // tests/app/export/blender_lighting.py then lights it (a white furnace, or a delta sun of irradiance 1) and writes
@@ -185,19 +186,9 @@ class BlenderRender : public ScratchFolderTest {
         run_skinlayer({"export", "--format", blender_format(), "--scene", "--preset", preset, "-o", script});
     if (exported.exit_code != 0) throw std::runtime_error("export failed: " + exported.err);
     std::vector<std::string> argv = blender_command();
-    argv.insert(argv.end(), {"-b",
-                                     "--factory-startup",
-                                     "--python-exit-code",
-                                     "1",
-                                     "--python",
-                                     script,
-                                     "--python",
-                                     SKINLAYER_BLENDER_LIGHTING,
-                                     "--",
-                                     mode,
-                                     std::to_string(kSize),
-                                     std::to_string(kSamples),
-                                     image});
+    argv.insert(argv.end(),
+                {"-b", "--factory-startup", "--python-exit-code", "1", "--python", script, "--python",
+                 SKINLAYER_BLENDER_LIGHTING, "--", mode, std::to_string(kSize), std::to_string(kSamples), image});
     if (mode == "sun") {
       for (int c = 0; c < 3; ++c) argv.push_back(std::to_string(kTowardSun(c)));
     }
@@ -231,9 +222,9 @@ ExactDifference compare(const std::vector<Ring>& ring_list, const char* what) {
       const double relative = ring.rendered(c) / ring.principled(c) - 1.0;
       const double noise = ring.noise(c) / ring.principled(c);
       EXPECT_LT(noise, 0.007) << what << " ring " << r << " channel " << c << ": too noisy to judge 2%";
-      EXPECT_LT(std::abs(relative), 0.02) << what << " ring " << 10 * r << "-" << 10 * r + 10 << " degrees, channel "
-                                          << c << ": Blender " << ring.rendered(c) << ", skinlayer's node "
-                                          << ring.principled(c) << " (noise " << ring.noise(c) << ")";
+      EXPECT_LT(std::abs(relative), 0.02)
+          << what << " ring " << 10 * r << "-" << 10 * r + 10 << " degrees, channel " << c << ": Blender "
+          << ring.rendered(c) << ", skinlayer's node " << ring.principled(c) << " (noise " << ring.noise(c) << ")";
       const double off = std::abs(ring.rendered(c) / ring.exact(c) - 1.0);
       exact.worst(c) = std::max(exact.worst(c), off);
       exact.excess(c) = std::max(exact.excess(c), off - std::abs(ring.principled(c) / ring.exact(c) - 1.0));
@@ -252,9 +243,10 @@ ExactDifference compare(const std::vector<Ring>& ring_list, const char* what) {
 
 // Under a white furnace every pixel is the light the BSDF sends toward its view: skinlayer's model of the node
 // within 2% in every ring. Against the exact material, the render shows the fit's albedo error, and may be no further
-// from it than the fit itself in the same ring, plus kFurnaceAllowance. Not for Blender 3.4's clearcoat: Cycles 3.4 samples its half
-// vectors from GGX but weighs them as GTR1's, so under any sky it renders another BSDF than it evaluates (jade's
-// fit: 5.4% bright in red at the centre); under the sun, where only the evaluation counts, it is exact.
+// from it than the fit itself in the same ring, plus kFurnaceAllowance. Not for Blender 3.4's clearcoat: Cycles 3.4
+// samples its half vectors from GGX but weighs them as GTR1's, so under any sky it renders another BSDF than it
+// evaluates (jade's fit: 5.4% bright in red at the centre); under the sun, where only the evaluation counts, it is
+// exact.
 void check_furnace(BlenderRender& test, const std::string& preset) {
   const auto [script, pixels] = test.render(preset, "furnace");
   const nlohmann::json fit = fit_report(script);
@@ -284,12 +276,13 @@ void check_furnace(BlenderRender& test, const std::string& preset) {
       compare(rings(pixels, principled, exact_values, [](const Pixel& pixel) { return std::acos(pixel.normal.z()); }),
               (preset + ", furnace").c_str());
   const std::vector<double> reported = fit.at("errors").at("albedo_worst").get<std::vector<double>>();
-  std::printf("  %s furnace: the render against the exact material, worst ring %.1f / %.1f / %.1f%%; the fit "
-              "reported %.1f / %.1f / %.1f%% at 0, 20, ..., 80 degrees; beyond the fit's own error in a ring by up to "
-              "%.2f / %.2f / %.2f%%\n",
-              preset.c_str(), 100.0 * exact.worst(0), 100.0 * exact.worst(1), 100.0 * exact.worst(2),
-              100.0 * reported[0], 100.0 * reported[1], 100.0 * reported[2], 100.0 * exact.excess(0),
-              100.0 * exact.excess(1), 100.0 * exact.excess(2));
+  std::printf(
+      "  %s furnace: the render against the exact material, worst ring %.1f / %.1f / %.1f%%; the fit "
+      "reported %.1f / %.1f / %.1f%% at 0, 20, ..., 80 degrees; beyond the fit's own error in a ring by up to "
+      "%.2f / %.2f / %.2f%%\n",
+      preset.c_str(), 100.0 * exact.worst(0), 100.0 * exact.worst(1), 100.0 * exact.worst(2), 100.0 * reported[0],
+      100.0 * reported[1], 100.0 * reported[2], 100.0 * exact.excess(0), 100.0 * exact.excess(1),
+      100.0 * exact.excess(2));
   for (int c = 0; c < 3; ++c) {
     EXPECT_LT(exact.excess(c), kFurnaceAllowance)
         << "channel " << c << ": the render is further from the exact material than the fit is";
@@ -349,8 +342,8 @@ TEST_F(BlenderRender, TheOtherNodesScriptStopsWithOneLine) {
   const std::string script = path("other.py");
   ASSERT_EQ(run_skinlayer({"export", "--format", other, "--scene", "--preset", "wax", "-o", script}).exit_code, 0);
   std::vector<std::string> argv = blender_command();
-  argv.insert(argv.end(), {"-b", "--factory-startup", "--python", script, "-o", path("other_####"), "-F", "PNG",
-                           "-f", "1"});
+  argv.insert(argv.end(),
+              {"-b", "--factory-startup", "--python", script, "-o", path("other_####"), "-F", "PNG", "-f", "1"});
   const ProcessResult rendered = run_process(argv);
   EXPECT_EQ(rendered.exit_code, 1) << rendered.out << rendered.err;
   EXPECT_NE(rendered.err.find("skinlayer export --format " + blender_format() + "`"), std::string::npos)

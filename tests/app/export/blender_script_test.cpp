@@ -27,8 +27,12 @@ ProcessResult run_script(const std::string& script, const std::string& version) 
       "import json, sys\n"
       "from unittest import mock\n"
       "bpy = mock.MagicMock()\n"
-      "bpy.app.version = (" + version + ")\n"
-      "bpy.app.version_string = '" + version + "'\n"
+      "bpy.app.version = (" +
+      version +
+      ")\n"
+      "bpy.app.version_string = '" +
+      version +
+      "'\n"
       "bpy.app.background = True\n"
       "sys.modules['bpy'] = bpy\n"
       "data = {}\n"
@@ -125,10 +129,9 @@ TEST_F(BlenderScript, InTheOtherNodesBlenderItStopsWithOneLine) {
   const std::string today = path("today.py"), old = path("old.py");
   ASSERT_EQ(run_skinlayer({"export", "--format", "blender", "--preset", "wax", "-o", today}).exit_code, 0);
   ASSERT_EQ(run_skinlayer({"export", "--format", "blender-3.4", "--preset", "wax", "-o", old}).exit_code, 0);
-  for (const auto& [script, version, other] : {std::tuple{today, "3, 4, 1", "--format blender-3.4"},
-                                               std::tuple{today, "4, 1, 0", "Blender 4.2 or later"},
-                                               std::tuple{old, "4, 3, 2", "--format blender`"},
-                                               std::tuple{old, "5, 2, 2", "--format blender`"}}) {
+  for (const auto& [script, version, other] :
+       {std::tuple{today, "3, 4, 1", "--format blender-3.4"}, std::tuple{today, "4, 1, 0", "Blender 4.2 or later"},
+        std::tuple{old, "4, 3, 2", "--format blender`"}, std::tuple{old, "5, 2, 2", "--format blender`"}}) {
     const ProcessResult result = run_script(script, version);
     EXPECT_EQ(result.exit_code, 1) << version << ": " << result.out << result.err;
     EXPECT_EQ(result.out, "") << version;
