@@ -8,7 +8,6 @@
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
-#include "app/cli/numbers.h"
 #include "app/cli/numeric_table.h"
 #include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
@@ -16,6 +15,7 @@
 #include "app/material/color_channels.h"
 #include "app/process/parallel_for.h"
 #include "app/solution/document_albedo.h"
+#include "app/text/numbers.h"
 #include "core/conventions.h"
 #include "core/solver.h"
 
@@ -96,7 +96,6 @@ NumericTable albedo_table(const Material& material, std::span<const double> thet
   }
   return table;
 }
-
 
 }  // namespace
 

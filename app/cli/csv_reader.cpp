@@ -7,8 +7,8 @@
 #include <string_view>
 
 #include "app/cli/errors.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/text/numbers.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -47,17 +47,17 @@ std::string at_line(std::size_t line_number) { return "line " + std::to_string(l
 
 double parse_angle(std::string_view field, std::size_t column, std::size_t line_number) {
   const std::string name(kColumnNames[column]);
-  const std::optional<double> value = parse_number(field);
+  const std::optional<double> value = text::parse_number(field);
   if (!value) {
-    throw InputError(at_line(line_number) + name + " = " + quoted(field) + " " + number_rejection(field));
+    throw InputError(at_line(line_number) + name + " = " + quoted(field) + " " + text::number_rejection(field));
   }
   const bool is_polar = column < 2;
   if (is_polar && !(*value >= 0.0 && *value <= kMaxPolarDegrees)) {
-    throw InputError(at_line(line_number) + name + " = " + format_number(*value) +
+    throw InputError(at_line(line_number) + name + " = " + text::format_number(*value) +
                      " is out of range; valid range is [0, 90] (degrees)");
   }
   if (!std::isfinite(*value)) {
-    throw InputError(at_line(line_number) + name + " = " + format_number(*value) +
+    throw InputError(at_line(line_number) + name + " = " + text::format_number(*value) +
                      " is not finite; phi may be any finite number (degrees)");
   }
   return *value;

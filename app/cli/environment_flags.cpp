@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "app/cli/errors.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/text/numbers.h"
 #include "core/conventions.h"
 
 namespace skinlayer::cli {
@@ -43,7 +43,7 @@ LightingFlags lighting_from_flags(const ParsedFlags& flags) {
   if (!backdrop) throw UsageError("background = " + quoted(background) + " is not one of: show, blur, hide");
   lighting.view.background = static_cast<EnvironmentBackground>(*backdrop);
   if (const std::optional<std::string_view> text = flags.value("samples")) {
-    const std::optional<double> value = parse_number(*text);
+    const std::optional<double> value = text::parse_number(*text);
     if (!value || *value != std::floor(*value) || *value < 1 || *value > kMaxEnvironmentSamples) {
       throw UsageError("samples = " + quoted(*text) + " must be a whole number in [1, " +
                        std::to_string(kMaxEnvironmentSamples) + "] (estimates per pixel)");

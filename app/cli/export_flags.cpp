@@ -8,8 +8,8 @@
 #include <string>
 
 #include "app/cli/errors.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/text/numbers.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -19,7 +19,7 @@ constexpr std::array<std::string_view, 2> kExportSwitches = {"rgb", "scene"};
 
 int parse_nodes(std::optional<std::string_view> text) {
   if (!text) return kDefaultScatfunNodes;
-  const std::optional<double> value = parse_number(*text);
+  const std::optional<double> value = text::parse_number(*text);
   if (!value || *value != std::floor(*value) || *value < kMinScatfunNodes || *value > kMaxScatfunNodes) {
     throw UsageError("nodes = " + quoted(*text) + " must be a whole number in [" + std::to_string(kMinScatfunNodes) +
                      ", " + std::to_string(kMaxScatfunNodes) + "] (polar nodes per hemisphere)");
@@ -29,7 +29,7 @@ int parse_nodes(std::optional<std::string_view> text) {
 
 int parse_resolution(std::optional<std::string_view> text) {
   if (!text) return RglOptions{}.samples;
-  const std::optional<double> value = parse_number(*text);
+  const std::optional<double> value = text::parse_number(*text);
   if (!value || *value != std::floor(*value) || *value < RglOptions::kMinSamples || *value > RglOptions::kMaxSamples) {
     throw UsageError("resolution = " + quoted(*text) + " must be a whole number in [" +
                      std::to_string(RglOptions::kMinSamples) + ", " + std::to_string(RglOptions::kMaxSamples) +

@@ -8,12 +8,12 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/figures/figure_builder.h"
 #include "app/figures/figure_index.h"
 #include "app/figures/figure_set.h"
 #include "app/figures/font.h"
+#include "app/text/numbers.h"
 
 namespace skinlayer::cli {
 
@@ -35,7 +35,7 @@ int run_figures_command(std::span<const std::string_view> arguments, std::ostrea
   if (!output) throw UsageError("figures needs -o DIR (the folder to write)");
   int size = 640;
   if (const std::optional<std::string_view> text = flags.value("size")) {
-    const std::optional<double> value = parse_number(*text);
+    const std::optional<double> value = text::parse_number(*text);
     if (!value || *value != static_cast<int>(*value) || *value < 160 || *value > 4096) {
       throw UsageError("size = " + quoted(*text) + " must be a whole number of pixels in [160, 4096]");
     }

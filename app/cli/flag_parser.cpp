@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "app/cli/errors.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/text/numbers.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -92,10 +92,10 @@ double number_flag(const ParsedFlags& flags, std::string_view name, double fallb
                    std::string_view note) {
   const std::optional<std::string_view> text = flags.value(name);
   if (!text) return fallback;
-  const std::optional<double> value = parse_number(*text);
+  const std::optional<double> value = text::parse_number(*text);
   if (!value || !(*value >= low && *value <= high)) {
     throw UsageError(std::string(name) + " = " + quoted(*text) + " is out of range; valid range is [" +
-                     format_short(low) + ", " + format_short(high) + "]" + std::string(note));
+                     text::format_short(low) + ", " + text::format_short(high) + "]" + std::string(note));
   }
   return *value;
 }

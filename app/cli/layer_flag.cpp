@@ -7,9 +7,9 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/material/exact_transparency.h"
+#include "app/text/numbers.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -20,9 +20,9 @@ constexpr std::string_view kExample = "as in --layer T=0.5,albedo=0.9,g=0.8";
 std::string prefix(int place) { return "layer " + std::to_string(place) + ": "; }
 
 double checked(const ParameterInfo& info, std::string_view key, std::string_view text, int place) {
-  const std::optional<double> value = parse_number(text);
+  const std::optional<double> value = text::parse_number(text);
   if (!value) {
-    throw UsageError(prefix(place) + std::string(key) + " = " + quoted(text) + " " + number_rejection(text) +
+    throw UsageError(prefix(place) + std::string(key) + " = " + quoted(text) + " " + text::number_rejection(text) +
                      "; valid range is " + range_text(info) + " (" + std::string(info.description) + ")");
   }
   try {
@@ -108,16 +108,16 @@ std::string format_layer_spec(const StackedLayer& layer, const AlbedoRgb& albedo
   // Appended piece by piece: GCC 12 reports a false -Wrestrict overlap for a literal prepended to a temporary.
   const std::optional<double> transparency = exact_transparency(layer.tau);
   std::string text = transparency ? "T=" : "tau=";
-  text.append(format_shortest(transparency.value_or(layer.tau)));
-  text.append(",albedo=").append(format_shortest(albedo[0]));
+  text.append(text::format_shortest(transparency.value_or(layer.tau)));
+  text.append(",albedo=").append(text::format_shortest(albedo[0]));
   if (albedo[1] != albedo[0] || albedo[2] != albedo[0]) {
-    text.append(":").append(format_shortest(albedo[1])).append(":").append(format_shortest(albedo[2]));
+    text.append(":").append(text::format_shortest(albedo[1])).append(":").append(text::format_shortest(albedo[2]));
   }
-  text.append(",g=").append(format_shortest(layer.g));
-  if (layer.extinction) text.append(",mu_t=").append(format_shortest(*layer.extinction));
+  text.append(",g=").append(text::format_shortest(layer.g));
+  if (layer.extinction) text.append(",mu_t=").append(text::format_shortest(*layer.extinction));
   if (layer.interface) {
-    text.append(",sigma=").append(format_shortest(layer.interface->sigma));
-    text.append(",eta=").append(format_shortest(layer.interface->eta));
+    text.append(",sigma=").append(text::format_shortest(layer.interface->sigma));
+    text.append(",eta=").append(text::format_shortest(layer.interface->eta));
   }
   return text;
 }

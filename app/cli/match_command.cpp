@@ -13,13 +13,13 @@
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
 #include "app/material/color_match.h"
 #include "app/material/material_file.h"
 #include "app/material/material_json.h"
 #include "app/process/parallel_for.h"
+#include "app/text/numbers.h"
 #include "core/color/spectral_color.h"
 #include "core/conventions.h"
 #include "core/fit/skin_fit.h"
@@ -55,12 +55,12 @@ std::array<double, 3> parse_color(std::string_view text) {
   const std::vector<std::string_view> parts = split_list(text, ',');
   if (parts.size() != 3) throw UsageError("color = " + quoted(text) + " must be R,G,B (each in [0, 1]) or #RRGGBB");
   for (std::size_t c = 0; c < 3; ++c) {
-    const std::optional<double> value = parse_number(parts[c]);
+    const std::optional<double> value = text::parse_number(parts[c]);
     if (!value) {
-      throw UsageError("color = " + quoted(text) + ": " + quoted(parts[c]) + " " + number_rejection(parts[c]));
+      throw UsageError("color = " + quoted(text) + ": " + quoted(parts[c]) + " " + text::number_rejection(parts[c]));
     }
     if (!(*value >= 0.0 && *value <= 1.0)) {
-      throw ParameterError("color = " + quoted(text) + ": " + format_number(*value) +
+      throw ParameterError("color = " + quoted(text) + ": " + text::format_number(*value) +
                            " is out of range; valid range is [0, 1] (each channel)");
     }
     rgb[c] = *value;
@@ -104,7 +104,7 @@ void read_spectrum(const std::string& path, std::vector<double>& wavelengths, st
     const std::vector<std::string_view> fields = split_list(line, ',');
     const auto where = [&] { return path + ":" + std::to_string(number) + ": "; };
     if (fields.size() != 2) throw InputError(where() + "expected wavelength_nm,reflectance");
-    const std::optional<double> w = parse_number(fields[0]), r = parse_number(fields[1]);
+    const std::optional<double> w = text::parse_number(fields[0]), r = text::parse_number(fields[1]);
     if (!w || !r) {
       if (number == 1) continue;  // a header
       throw InputError(where() + "expected two numbers, wavelength_nm,reflectance");
@@ -125,8 +125,8 @@ int match_spectrum(const ParsedFlags& flags, const MaterialDocument& document, s
   double from = 400.0, to = 700.0;
   if (const auto range = flags.value(kRangeFlag)) {
     const std::vector<std::string_view> ends = split_list(*range, ':');
-    const std::optional<double> a = ends.size() == 2 ? parse_number(ends[0]) : std::nullopt;
-    const std::optional<double> b = ends.size() == 2 ? parse_number(ends[1]) : std::nullopt;
+    const std::optional<double> a = ends.size() == 2 ? text::parse_number(ends[0]) : std::nullopt;
+    const std::optional<double> b = ends.size() == 2 ? text::parse_number(ends[1]) : std::nullopt;
     if (!a || !b || !(*a >= 360.0 && *b <= 830.0 && *a < *b)) {
       throw UsageError("range = " + quoted(*range) + " must be FROM:TO in nm, 360 <= FROM < TO <= 830");
     }
@@ -139,8 +139,8 @@ int match_spectrum(const ParsedFlags& flags, const MaterialDocument& document, s
   matched.skin = fit.skin;
   write_document(matched, flags, out);
   err << "skinlayer: match: RMS residual " << fixed_text(fit.rms, 4) << " in reflectance over "
-      << fit.wavelengths_nm.size() << " wavelengths, " << format_number(fit.wavelengths_nm.front()) << "-"
-      << format_number(fit.wavelengths_nm.back()) << " nm, at " << format_number(theta) << " degrees\n";
+      << fit.wavelengths_nm.size() << " wavelengths, " << text::format_number(fit.wavelengths_nm.front()) << "-"
+      << text::format_number(fit.wavelengths_nm.back()) << " nm, at " << text::format_number(theta) << " degrees\n";
   return kExitSuccess;
 }
 

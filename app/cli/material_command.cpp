@@ -11,13 +11,13 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
-#include "app/cli/numbers.h"
 #include "app/cli/skin_flag.h"
 #include "app/material/material_file.h"
 #include "app/material/material_json.h"
 #include "app/material/presets.h"
 #include "app/process/parallel_for.h"
 #include "app/solution/document_albedo.h"
+#include "app/text/numbers.h"
 #include "core/color/spectral_color.h"
 #include "core/interfaces/microfacet_model.h"
 
@@ -94,7 +94,7 @@ void write_preset_colors(const std::optional<MicrofacetModel> microfacet, std::o
     const Eigen::Array3d reflectance = document_reflectance_rgb(document, normal, parallel_for_threads).front();
     const std::array<double, 3> rgb = {reflectance(0), reflectance(1), reflectance(2)};
     out << preset.name << ',' << microfacet_model_name(document.layer.microfacet);
-    for (const double value : rgb) out << ',' << format_number(value);
+    for (const double value : rgb) out << ',' << text::format_number(value);
     out << ',' << srgb_hex(rgb) << '\n';
   }
 }

@@ -7,12 +7,12 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/layer_flag.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
 #include "app/material/exact_transparency.h"
 #include "app/material/material_file.h"
 #include "app/material/presets.h"
+#include "app/text/numbers.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -34,10 +34,10 @@ std::optional<double> checked_number(const ParsedFlags& flags, std::string_view 
   const std::optional<std::string_view> text = flags.value(name);
   if (!text) return std::nullopt;
   const ParameterInfo& info = parameter_info(name);
-  const std::optional<double> value = parse_number(*text);
+  const std::optional<double> value = text::parse_number(*text);
   if (!value) {
-    throw UsageError(std::string(name) + " = " + quoted(*text) + " " + number_rejection(*text) + "; valid range is " +
-                     range_text(info) + " (" + std::string(info.description) + ")");
+    throw UsageError(std::string(name) + " = " + quoted(*text) + " " + text::number_rejection(*text) +
+                     "; valid range is " + range_text(info) + " (" + std::string(info.description) + ")");
   }
   check_parameter(info, *value);
   return value;
@@ -48,7 +48,7 @@ std::optional<int> checked_ordinates(const ParsedFlags& flags) {
   if (!value) return std::nullopt;
   if (*value != std::floor(*value)) {
     const ParameterInfo& info = parameter_info("ordinates");
-    throw UsageError("ordinates = " + format_number(*value) + " is not a whole number; valid range is " +
+    throw UsageError("ordinates = " + text::format_number(*value) + " is not a whole number; valid range is " +
                      range_text(info) + " (" + std::string(info.description) + ")");
   }
   return static_cast<int>(*value);
@@ -59,7 +59,7 @@ std::string usage_entry(const ParameterInfo& info) {
   const std::string flag(info.flag);
   const std::string meaning = std::string(info.description) + " (" + std::string(info.symbol) + ")";
   const std::string range = "Range " + range_text(info);
-  const std::string default_number = format_short(info.default_value);
+  const std::string default_number = text::format_short(info.default_value);
   std::string spelling = "--" + flag + " X";
   std::string body = meaning + ". " + range + "; default " + default_number + ".";
   if (info.flag == kLambertParameter) {
@@ -74,7 +74,7 @@ std::string usage_entry(const ParameterInfo& info) {
     body += " Not together with --tau.";
   } else if (info.flag == "tau") {
     body = meaning + ". " + range + "; default " + default_number +
-           " (T = " + format_short(parameter_info("T").default_value) + "). Not together with --T.";
+           " (T = " + text::format_short(parameter_info("T").default_value) + "). Not together with --T.";
   } else if (info.flag == "bottom-sigma") {
     body = meaning + ". " + range + "; default the top's --sigma. Only with --bottom air.";
   } else if (info.flag == "bottom-eta") {
@@ -107,8 +107,8 @@ std::array<double, 3> albedo_rgb_from_text(std::string_view text) {
   }
   for (std::size_t c = 0; c < 3; ++c) {
     const std::string_view part = parts[parts.size() == 1 ? 0 : c];
-    const std::optional<double> value = parse_number(part);
-    if (!value) throw UsageError("albedo = " + quoted(text) + ": " + quoted(part) + " " + number_rejection(part));
+    const std::optional<double> value = text::parse_number(part);
+    if (!value) throw UsageError("albedo = " + quoted(text) + ": " + quoted(part) + " " + text::number_rejection(part));
     check_parameter(parameter_info("albedo"), *value);
     rgb[c] = *value;
   }
@@ -240,35 +240,38 @@ Material material_from_flags(const ParsedFlags& flags) { return single_channel(m
 
 Material single_channel(const MaterialDocument& document) {
   if (document.skin) {
-    throw UsageError("the material is a spectral skin (--skin) and this command solves one grey material; give"
-                     " --wavelength NM for one wavelength's");
+    throw UsageError(
+        "the material is a spectral skin (--skin) and this command solves one grey material; give"
+        " --wavelength NM for one wavelength's");
   }
   if (!document.grey()) {
-    throw UsageError("the material's albedo is RGB (" + format_shortest(document.albedo_rgb[0]) + ", " +
-                     format_shortest(document.albedo_rgb[1]) + ", " + format_shortest(document.albedo_rgb[2]) +
+    throw UsageError("the material's albedo is RGB (" + text::format_shortest(document.albedo_rgb[0]) + ", " +
+                     text::format_shortest(document.albedo_rgb[1]) + ", " +
+                     text::format_shortest(document.albedo_rgb[2]) +
                      ") and this command solves one channel; give --albedo A");
   }
   return document.layer;
 }
 
 std::string material_to_flags(const Material& material) {
-  std::string text = "--sigma " + format_shortest(material.sigma) + " --eta " + format_shortest(material.eta);
+  std::string text =
+      "--sigma " + text::format_shortest(material.sigma) + " --eta " + text::format_shortest(material.eta);
   if (material.below.empty()) {
     // T with the fewest digits that give back the same tau (0.1, not exp(-(-ln 0.1)) = 0.10000000000000002).
     const std::optional<double> transparency = exact_transparency(material.tau);
     const std::string depth =
-        transparency ? " --T " + format_shortest(*transparency) : " --tau " + format_shortest(material.tau);
+        transparency ? " --T " + text::format_shortest(*transparency) : " --tau " + text::format_shortest(material.tau);
     text += depth;
-    text += " --albedo " + format_shortest(material.albedo) + " --g " + format_shortest(material.g);
-    if (material.extinction) text += " --mu-t " + format_shortest(*material.extinction);
+    text += " --albedo " + text::format_shortest(material.albedo) + " --g " + text::format_shortest(material.g);
+    if (material.extinction) text += " --mu-t " + text::format_shortest(*material.extinction);
   } else {
     for (const StackedLayer& layer : stack_layers(material)) {
       text += " --layer " + format_layer_spec(layer, {layer.albedo, layer.albedo, layer.albedo});
     }
   }
   text += " --bottom " + format_bottom(material.bottom);
-  if (material.bottom.sigma) text += " --bottom-sigma " + format_shortest(*material.bottom.sigma);
-  if (material.bottom.eta) text += " --bottom-eta " + format_shortest(*material.bottom.eta);
+  if (material.bottom.sigma) text += " --bottom-sigma " + text::format_shortest(*material.bottom.sigma);
+  if (material.bottom.eta) text += " --bottom-eta " + text::format_shortest(*material.bottom.eta);
   if (material.ordinates) text += " --ordinates " + std::to_string(*material.ordinates);
   if (material.microfacet != Material{}.microfacet) {
     text += " --microfacet " + std::string(microfacet_model_name(material.microfacet));
@@ -279,7 +282,7 @@ std::string material_to_flags(const Material& material) {
 std::string rgb_albedo_usage() {
   const ParameterInfo& albedo = parameter_info("albedo");
   return "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in " + range_text(albedo) +
-         " (default " + format_short(albedo.default_value) + ")\n";
+         " (default " + text::format_short(albedo.default_value) + ")\n";
 }
 
 std::string material_flags_usage() {

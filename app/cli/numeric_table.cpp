@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "app/cli/numbers.h"
+#include "app/text/numbers.h"
 
 namespace skinlayer::cli {
 
@@ -24,9 +24,8 @@ void NumericTable::require_finite() const {
   for (std::size_t index = 0; index < values_.size(); ++index) {
     if (!std::isfinite(values_[index])) {
       const std::size_t row = index / columns_.size() + 1;
-      throw std::runtime_error("output row " + std::to_string(row) + ": " +
-                               columns_[index % columns_.size()] + " = " + format_number(values_[index]) +
-                               " is not finite; no output was written");
+      throw std::runtime_error("output row " + std::to_string(row) + ": " + columns_[index % columns_.size()] + " = " +
+                               text::format_number(values_[index]) + " is not finite; no output was written");
     }
   }
 }
@@ -40,7 +39,7 @@ void NumericTable::write_csv(std::ostream& out) const {
   text += '\n';
   for (std::size_t index = 0; index < values_.size(); ++index) {
     const bool is_input = index % columns_.size() < input_columns_;
-    text += is_input ? format_shortest(values_[index]) : format_number(values_[index]);
+    text += is_input ? text::format_shortest(values_[index]) : text::format_number(values_[index]);
     text += (index + 1) % columns_.size() == 0 ? '\n' : ',';
   }
   out << text;

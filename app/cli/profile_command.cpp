@@ -8,12 +8,12 @@
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
-#include "app/cli/numbers.h"
 #include "app/cli/numeric_table.h"
 #include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
 #include "app/process/parallel_for.h"
 #include "app/solution/document_profile.h"
+#include "app/text/numbers.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -24,7 +24,7 @@ constexpr std::string_view kRadiiFlag = "radii";
 constexpr int kMaxAnnuli = 10000;
 
 double positive_number(std::string_view flag, std::string_view text) {
-  const std::optional<double> value = parse_number(text);
+  const std::optional<double> value = text::parse_number(text);
   if (!value || !(*value > 0.0) || !std::isfinite(*value)) {
     throw UsageError(std::string(flag) + " = " + quoted(text) + " must be a number > 0");
   }
@@ -41,7 +41,7 @@ std::vector<double> annulus_edges(std::optional<std::string_view> text, double d
   const std::vector<std::string_view> parts = split_list(*text, ':');
   if (parts.size() != 2) throw UsageError("annuli = " + quoted(*text) + " must be DR:N, as in --annuli 0.05:40");
   const double width = positive_number("annuli's width DR", parts[0]);
-  const std::optional<double> count = parse_number(parts[1]);
+  const std::optional<double> count = text::parse_number(parts[1]);
   if (!count || *count != std::floor(*count) || *count < 1 || *count > kMaxAnnuli) {
     throw UsageError("annuli = " + quoted(*text) + ": the count N must be a whole number in [1, " +
                      std::to_string(kMaxAnnuli) + "]");

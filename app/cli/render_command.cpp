@@ -10,7 +10,6 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
 #include "app/gl/osmesa_context.h"
@@ -25,6 +24,7 @@
 #include "app/render/table_textures.h"
 #include "app/solution/material_solve.h"
 #include "app/solution/sphere_spread.h"
+#include "app/text/numbers.h"
 #include "core/conventions.h"
 
 namespace skinlayer::cli {
@@ -34,8 +34,8 @@ constexpr int kMaxSide = 8192;
 
 std::pair<int, int> parse_size(std::string_view text) {
   const std::size_t x = text.find('x');
-  const std::optional<double> w = parse_number(text.substr(0, x));
-  const std::optional<double> h = x == std::string_view::npos ? std::nullopt : parse_number(text.substr(x + 1));
+  const std::optional<double> w = text::parse_number(text.substr(0, x));
+  const std::optional<double> h = x == std::string_view::npos ? std::nullopt : text::parse_number(text.substr(x + 1));
   if (!w || !h || *w != static_cast<int>(*w) || *h != static_cast<int>(*h) || *w < 16 || *h < 16 || *w > kMaxSide ||
       *h > kMaxSide) {
     throw UsageError("size = " + quoted(text) + " must be WIDTHxHEIGHT in pixels, each a whole number in [16, " +

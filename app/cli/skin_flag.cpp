@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "app/cli/errors.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/text/numbers.h"
 #include "core/skin/skin_optics.h"
 
 namespace skinlayer::cli {
@@ -42,10 +42,11 @@ SkinParameters parse_skin_spec(std::string_view text, const SkinParameters& base
       throw UsageError("skin: key " + std::string(key) + " is given more than once");
     }
     seen.push_back(key);
-    const std::optional<double> value = parse_number(value_text);
+    const std::optional<double> value = text::parse_number(value_text);
     if (!value) {
-      throw UsageError("skin: " + std::string(key) + " = " + quoted(value_text) + " " + number_rejection(value_text) +
-                       "; valid range is " + range_text(*info) + " (" + std::string(info->description) + ")");
+      throw UsageError("skin: " + std::string(key) + " = " + quoted(value_text) + " " +
+                       text::number_rejection(value_text) + "; valid range is " + range_text(*info) + " (" +
+                       std::string(info->description) + ")");
     }
     try {
       check_parameter(*info, *value);
@@ -63,7 +64,7 @@ std::string format_skin_spec(const SkinParameters& skin) {
     if (!text.empty()) text += ',';
     text.append(info.flag);
     text += '=';
-    text += format_shortest(skin_parameter(skin, info.flag));
+    text += text::format_shortest(skin_parameter(skin, info.flag));
   }
   return text;
 }
@@ -71,13 +72,14 @@ std::string format_skin_spec(const SkinParameters& skin) {
 std::optional<double> wavelength_from_flags(const ParsedFlags& flags) {
   const std::optional<std::string_view> text = flags.value(kWavelengthFlag);
   if (!text) return std::nullopt;
-  const std::optional<double> value = parse_number(*text);
+  const std::optional<double> value = text::parse_number(*text);
   if (!value) {
-    throw UsageError("wavelength = " + quoted(*text) + " " + number_rejection(*text) +
+    throw UsageError("wavelength = " + quoted(*text) + " " + text::number_rejection(*text) +
                      "; valid range is [360, 830] (nm)");
   }
   if (!(*value >= 360.0 && *value <= 830.0)) {
-    throw ParameterError("wavelength = " + format_number(*value) + " is out of range; valid range is [360, 830] (nm)");
+    throw ParameterError("wavelength = " + text::format_number(*value) +
+                         " is out of range; valid range is [360, 830] (nm)");
   }
   return value;
 }
@@ -106,7 +108,7 @@ std::string skin_flags_usage(bool with_wavelength) {
   for (const ParameterInfo& info : skin_parameter_table()) {
     text += "        " + std::string(info.flag) + std::string(12 - info.flag.size(), ' ') +
             std::string(info.description) + "; range " + range_text(info) + ", default " +
-            format_shortest(info.default_value) + "\n";
+            text::format_shortest(info.default_value) + "\n";
   }
   if (!with_wavelength) return text;
   text +=

@@ -5,22 +5,22 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/text/numbers.h"
 
 namespace skinlayer::cli {
 
 std::vector<double> parse_theta_list(std::string_view list) {
   std::vector<double> thetas;
   for (const std::string_view item : split_list(list, ',')) {
-    const std::optional<double> value = parse_number(item);
+    const std::optional<double> value = text::parse_number(item);
     if (!value) {
-      throw UsageError(std::string(kThetaFlag) + " = " + quoted(item) + " " + number_rejection(item) +
+      throw UsageError(std::string(kThetaFlag) + " = " + quoted(item) + " " + text::number_rejection(item) +
                        "; give a comma-separated list of angles in [0, 90] degrees, as in "
                        "--theta-i 0,30,60,80");
     }
     if (!(*value >= 0.0 && *value <= 90.0)) {
-      throw UsageError(std::string(kThetaFlag) + " = " + format_number(*value) +
+      throw UsageError(std::string(kThetaFlag) + " = " + text::format_number(*value) +
                        " is out of range; valid range is [0, 90] (degrees)");
     }
     thetas.push_back(*value);

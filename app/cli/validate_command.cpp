@@ -13,10 +13,10 @@
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
 #include "app/figures/font.h"
 #include "app/material/picture_metadata.h"
+#include "app/text/numbers.h"
 #include "app/validate/validation_grid.h"
 #include "app/validate/validation_plot.h"
 #include "app/validate/validation_report.h"
@@ -29,10 +29,10 @@ constexpr double kProgressInterval = 2.0;  // seconds between progress lines wit
 
 // A whole number in [lo, hi] from a flag's text, or UsageError naming the flag and the range.
 std::uint64_t whole_number(std::string_view flag, std::string_view text, double lo, double hi) {
-  const std::optional<double> value = parse_number(text);
+  const std::optional<double> value = text::parse_number(text);
   if (!value || !(*value >= lo && *value <= hi) || *value != std::floor(*value)) {
-    throw UsageError(std::string(flag) + " = " + quoted(text) + " must be a whole number in [" + format_short(lo) +
-                     ", " + format_short(hi) + "]");
+    throw UsageError(std::string(flag) + " = " + quoted(text) + " must be a whole number in [" +
+                     text::format_short(lo) + ", " + text::format_short(hi) + "]");
   }
   return static_cast<std::uint64_t>(*value);
 }
@@ -76,7 +76,8 @@ std::string validate_usage() {
   return "Usage: skinlayer validate [--quick] [-o DIR] [--set NAMES] [--seed N] [--threads N] [--microfacet M]\n"
          "\n"
          "Checks the solver against an independent Monte Carlo random walk through the same layer, over a grid of\n"
-         "parameter sets (the paper's figure settings; g 0, 0.5, 0.9; Ω 0.5, 0.99, 1; σ 0.1, 0.5, 1; η 1, 1.2, 1.4, 2;\n"
+         "parameter sets (the paper's figure settings; g 0, 0.5, 0.9; Ω 0.5, 0.99, 1; σ 0.1, 0.5, 1; η 1, 1.2, 1.4, "
+         "2;\n"
          "thin and semi-infinite layers; air, matched and Lambertian bottoms). For each set it compares the\n"
          "directional albedos and the BSDF in angular bins in and across the plane of incidence, and prints the\n"
          "differences in Monte Carlo standard errors and in relative terms. A set agrees when every judged\n"
@@ -98,9 +99,8 @@ int run_validate_command(std::span<const std::string_view> arguments, std::ostre
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer validate", switches);
   const bool quick = flags.has("quick");
   const std::uint64_t seed = flags.has("seed") ? whole_number("seed", *flags.value("seed"), 0, 1e15) : 1;
-  const int threads = flags.has("threads")
-                          ? static_cast<int>(whole_number("threads", *flags.value("threads"), 1, 256))
-                          : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = flags.has("threads") ? static_cast<int>(whole_number("threads", *flags.value("threads"), 1, 256))
+                                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::vector<validation::ValidationSet> sets = chosen_sets(flags.value("set"));
   if (const auto text = flags.value("microfacet")) {
     const MicrofacetModel model = microfacet_from_text(*text);
@@ -134,8 +134,8 @@ int run_validate_command(std::span<const std::string_view> arguments, std::ostre
           << std::flush;
     };
     char header[256];
-    std::snprintf(header, sizeof header, "[%zu/%zu] %s: %s, θi %g°, %s paths\n", k + 1, sets.size(),
-                  set.name.c_str(), set.description.c_str(), set.theta_i_deg, with_thousands(options.paths).c_str());
+    std::snprintf(header, sizeof header, "[%zu/%zu] %s: %s, θi %g°, %s paths\n", k + 1, sets.size(), set.name.c_str(),
+                  set.description.c_str(), set.theta_i_deg, with_thousands(options.paths).c_str());
     out << header << std::flush;
     results.push_back(validation::run_validation_set(set, options));
     validation::print_set_table(out, results.back());
@@ -153,8 +153,8 @@ int run_validate_command(std::span<const std::string_view> arguments, std::ostre
   validation::print_summary(out, results);
   validation::write_markdown_report(dir, results, {quick ? "quick" : "full", seed, threads, seconds});
   char footer[320];
-  std::snprintf(footer, sizeof footer, "wrote %s and %zu plots in %.1f s\n",
-                (dir / "validation.md").string().c_str(), results.size(), seconds);
+  std::snprintf(footer, sizeof footer, "wrote %s and %zu plots in %.1f s\n", (dir / "validation.md").string().c_str(),
+                results.size(), seconds);
   out << footer;
   const bool all_agree =
       std::all_of(results.begin(), results.end(), [](const validation::SetResult& r) { return r.agrees(); });

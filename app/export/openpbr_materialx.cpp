@@ -5,14 +5,14 @@
 #include <pugixml.hpp>
 #include <sstream>
 
-#include "app/cli/numbers.h"
 #include "app/export/fit_report_json.h"
 #include "app/material/material_json.h"
+#include "app/text/numbers.h"
 
 namespace skinlayer {
 namespace {
 
-std::string number(double value) { return cli::format_shortest(value); }  // reads back to the last bit
+std::string number(double value) { return text::format_shortest(value); }  // reads back to the last bit
 
 std::string color(const Rgb& value) { return number(value(0)) + ", " + number(value(1)) + ", " + number(value(2)); }
 

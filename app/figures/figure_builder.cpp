@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "app/cli/layer_flag.h"
-#include "app/cli/numbers.h"
 #include "app/figures/model_spheres.h"
 #include "app/figures/polar_plot.h"
 #include "app/figures/skin_figures.h"
 #include "app/material/picture_metadata.h"
+#include "app/text/numbers.h"
 #include "core/conventions.h"
 #include "core/interfaces/layer_interfaces.h"
 #include "core/interfaces/microfacet.h"
@@ -28,8 +28,8 @@ struct Sample {
 };
 
 struct Lobe {
-  std::string curve;   // the CSV's curve label
-  std::string value;   // the varied parameter's value
+  std::string curve;  // the CSV's curve label
+  std::string value;  // the varied parameter's value
   LayerParams params;
   SubsurfaceModel model;
   double theta_i_deg;
@@ -88,27 +88,26 @@ std::string csv_field(std::string text) {
 }
 
 void write_csv(const std::vector<Lobe>& lobes, const FigureSpec& spec, const std::filesystem::path& path) {
-  using cli::format_number;
-  using cli::format_shortest;
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path.string());
   out << "curve,parameter,value,theta_i,theta_o,phi,side,quantity,f" << (spec.rescale_to_peak ? ",plotted" : "")
       << ",model,sigma,eta,T,albedo,g,layers,microfacet\n";
   for (const Lobe& lobe : lobes) {
-    const std::string material = std::string(subsurface_model_name(lobe.model)) + "," +
-                                 format_shortest(lobe.params.sigma) + "," + format_shortest(lobe.params.eta) + "," +
-                                 format_shortest(lobe.params.transparency) + "," + format_shortest(lobe.params.albedo) +
-                                 "," + format_shortest(lobe.params.g) + "," + layers_field(lobe.params) + "," +
-                                 std::string(microfacet_model_name(lobe.params.microfacet));
+    const std::string material =
+        std::string(subsurface_model_name(lobe.model)) + "," + text::format_shortest(lobe.params.sigma) + "," +
+        text::format_shortest(lobe.params.eta) + "," + text::format_shortest(lobe.params.transparency) + "," +
+        text::format_shortest(lobe.params.albedo) + "," + text::format_shortest(lobe.params.g) + "," +
+        layers_field(lobe.params) + "," + std::string(microfacet_model_name(lobe.params.microfacet));
     const bool surface = spec.kind == FigureKind::SurfaceLobes;
     for (const char side : {'R', 'T'}) {
-      const char* quantity = side == 'R' ? (surface ? "brdf_surface" : "brdf_subsurface")
-                                         : (surface ? "interface_btdf" : "btdf");
+      const char* quantity =
+          side == 'R' ? (surface ? "brdf_surface" : "brdf_subsurface") : (surface ? "interface_btdf" : "btdf");
       for (const Sample& s : side == 'R' ? lobe.reflection : lobe.transmission) {
-        out << csv_field(lobe.curve) << ',' << spec.parameter << ',' << lobe.value << ',' << format_shortest(lobe.theta_i_deg)
-            << ',' << format_shortest(theta_of(s.signed_theta_deg)) << ',' << format_shortest(phi_of(s.signed_theta_deg))
-            << ',' << side << ',' << quantity << ',' << format_number(s.f);
-        if (spec.rescale_to_peak) out << ',' << format_number(lobe.peak > 0.0 ? s.f / lobe.peak : 0.0);
+        out << csv_field(lobe.curve) << ',' << spec.parameter << ',' << lobe.value << ','
+            << text::format_shortest(lobe.theta_i_deg) << ',' << text::format_shortest(theta_of(s.signed_theta_deg))
+            << ',' << text::format_shortest(phi_of(s.signed_theta_deg)) << ',' << side << ',' << quantity << ','
+            << text::format_number(s.f);
+        if (spec.rescale_to_peak) out << ',' << text::format_number(lobe.peak > 0.0 ? s.f / lobe.peak : 0.0);
         out << ',' << material << '\n';
       }
     }
@@ -155,7 +154,7 @@ const LayerTables& SolveCache::tables(const LayerParams& params, SubsurfaceModel
 }
 
 FigureSize build_figure(const FigureSpec& spec, const std::filesystem::path& dir, const Font& font, SolveCache& cache,
-                  int size) {
+                        int size) {
   if (spec.kind == FigureKind::SkinSpectra || spec.kind == FigureKind::SkinSpheres ||
       spec.kind == FigureKind::SkinProfiles) {
     return build_skin_figure(spec, dir, font, size);
@@ -177,8 +176,9 @@ FigureSize build_figure(const FigureSpec& spec, const std::filesystem::path& dir
     write_png(image, (dir / (spec.name + ".png")).string(), {figure_metadata(spec)});
     return {image.width, image.height};
   }
-  PolarPlot plot{spec.title, spec.subtitle, spec.rescale_to_peak ? "relative to each peak" : "1/sr", {}, size,
-                 spec.log_decades, spec.separate_scales};
+  PolarPlot plot{
+      spec.title,       spec.subtitle,       spec.rescale_to_peak ? "relative to each peak" : "1/sr", {}, size,
+      spec.log_decades, spec.separate_scales};
   for (std::size_t k = 0; k < spec.curves.size(); ++k) {
     lobes.push_back(sample_lobe(spec.curves[k], spec.kind, cache));
     const Lobe& lobe = lobes.back();

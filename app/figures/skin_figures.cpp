@@ -10,7 +10,6 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/numbers.h"
 #include "app/cli/skin_flag.h"
 #include "app/figures/model_spheres.h"
 #include "app/figures/xy_plot.h"
@@ -18,6 +17,7 @@
 #include "app/process/parallel_for.h"
 #include "app/solution/document_profile.h"
 #include "app/solution/material_solve.h"
+#include "app/text/numbers.h"
 #include "core/conventions.h"
 #include "core/skin/skin_spectrum.h"
 
@@ -32,8 +32,8 @@ std::string skin_field(const SkinParameters& skin) {
 }
 
 std::string material_fields(const FigureCurve& curve) {
-  return skin_field(*curve.skin) + "," + cli::format_shortest(curve.params.sigma) + "," +
-         cli::format_shortest(curve.params.eta);
+  return skin_field(*curve.skin) + "," + text::format_shortest(curve.params.sigma) + "," +
+         text::format_shortest(curve.params.eta);
 }
 
 // The first curve's skin as the picture's material, and the values the figure varies.
@@ -91,8 +91,8 @@ FigureSize build_spectra(const FigureSpec& spec, const std::filesystem::path& di
       const double reflectance = rows[w].front().reflectance();
       series.curve.push_back({wavelengths[w], reflectance});
       csv << curve.label << ',' << spec.parameter << ',' << curve.value << ','
-          << cli::format_shortest(curve.theta_i_deg) << ',' << cli::format_shortest(wavelengths[w]) << ','
-          << cli::format_number(reflectance) << ',' << material_fields(curve) << '\n';
+          << text::format_shortest(curve.theta_i_deg) << ',' << text::format_shortest(wavelengths[w]) << ','
+          << text::format_number(reflectance) << ',' << material_fields(curve) << '\n';
     }
     plot.series.push_back(std::move(series));
   }
@@ -112,7 +112,7 @@ FigureSize build_spheres(const FigureSpec& spec, const std::filesystem::path& di
     ColorMaterial material{curve.params.material(), {1.0, 1.0, 1.0}, {}, SubsurfaceModel::Stam, curve.skin};
     const ColorTables tables = solve_color(material, 0.0, options);
     csv << curve.label << ',' << spec.parameter << ',' << curve.value << ",0";
-    for (int c = 0; c < 3; ++c) csv << ',' << cli::format_number(tables.albedo[c].reflectance());
+    for (int c = 0; c < 3; ++c) csv << ',' << text::format_number(tables.albedo[c].reflectance());
     csv << ',' << material_fields(curve) << '\n';
   }
   close_csv(csv, csv_path);
@@ -157,8 +157,8 @@ FigureSize build_profiles(const FigureSpec& spec, const std::filesystem::path& d
         series.curve.push_back(
             {0.5 * (edges[i] + edges[i + 1]), std::max(0.0, std::log10(std::max(value, 1e-300)) + 4.0)});
         csv << curve.label << ',' << spec.parameter << ',' << curve.value << ','
-            << cli::format_shortest(band.wavelength) << ',' << cli::format_shortest(edges[i]) << ','
-            << cli::format_shortest(edges[i + 1]) << ',' << cli::format_number(value) << ',' << material_fields(curve)
+            << text::format_shortest(band.wavelength) << ',' << text::format_shortest(edges[i]) << ','
+            << text::format_shortest(edges[i + 1]) << ',' << text::format_number(value) << ',' << material_fields(curve)
             << '\n';
       }
       plot.series.push_back(std::move(series));

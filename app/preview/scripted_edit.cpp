@@ -3,8 +3,8 @@
 #include <stdexcept>
 
 #include "app/cli/flag_parser.h"
-#include "app/cli/numbers.h"
 #include "app/preview/layer_stack.h"
+#include "app/text/numbers.h"
 #include "core/skin/skin_parameters.h"
 
 namespace skinlayer {
@@ -12,9 +12,9 @@ namespace {
 
 // A number of a test action, or one line naming it ("test action: split = 'x' is not a number").
 double number_argument(std::string_view what, std::string_view text) {
-  if (const std::optional<double> value = cli::parse_number(text)) return *value;
+  if (const std::optional<double> value = text::parse_number(text)) return *value;
   throw std::runtime_error("test action: " + std::string(what) + " = '" + std::string(text) + "' " +
-                           cli::number_rejection(text));
+                           text::number_rejection(text));
 }
 
 }  // namespace

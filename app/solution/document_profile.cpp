@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/cli/numbers.h"
 #include "app/material/color_channels.h"
+#include "app/text/numbers.h"
 #include "core/spatial/layer_profile.h"
 
 namespace skinlayer {
@@ -36,7 +36,7 @@ void require_profile_layer(const Material& m, Incidence incidence) {
     why = m.bottom.kind == BottomKind::Lambert
               ? "it has a Lambertian base (--bottom " + format_bottom(m.bottom) +
                     ") under no top interface (--eta 1), which the beam reaches unscattered"
-              : "it has a rough bottom interface (bottom-eta " + cli::format_shortest(m.bottom_eta()) +
+              : "it has a rough bottom interface (bottom-eta " + text::format_shortest(m.bottom_eta()) +
                     ") under no top interface (--eta 1), which the beam reaches unscattered";
   }
   if (why.empty()) return;

@@ -33,8 +33,8 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
-#include "app/cli/numbers.h"
 #include "app/cli/quoted.h"
+#include "app/text/numbers.h"
 #include "core/material.h"
 #include "core/models/subsurface_model.h"
 
@@ -127,7 +127,7 @@ std::vector<std::string> extreme_numbers() {
 
 // parse_number's contract for one token; returns false after recording a failure.
 bool check_number_token(const std::string& token) {
-  const std::optional<double> value = parse_number(token);
+  const std::optional<double> value = text::parse_number(token);
   if (value) {
     const bool well_formed = !token.empty() && token.front() != '+' && token.find('\0') == std::string::npos &&
                              token.find_first_of(" \t\r\n") == std::string::npos;
@@ -140,13 +140,13 @@ bool check_number_token(const std::string& token) {
     if (!std::isnan(*value)) {
       const bool same =
           end == token.c_str() + token.size() && reference == *value && std::signbit(reference) == std::signbit(*value);
-      EXPECT_TRUE(same) << escaped(token) << ": parse_number " << format_number(*value) << ", strtod "
-                        << format_number(reference);
+      EXPECT_TRUE(same) << escaped(token) << ": parse_number " << text::format_number(*value) << ", strtod "
+                        << text::format_number(reference);
       if (!same) return false;
     }
     // Both formatters read back as the same double.
-    for (const std::string& text : {format_number(*value), format_shortest(*value)}) {
-      const std::optional<double> again = parse_number(text);
+    for (const std::string& text : {text::format_number(*value), text::format_shortest(*value)}) {
+      const std::optional<double> again = text::parse_number(text);
       const bool round_trip =
           again &&
           (std::isnan(*value) ? std::isnan(*again) : *again == *value && std::signbit(*again) == std::signbit(*value));
@@ -207,7 +207,7 @@ TEST(ParsingFuzz, NumbersAtTheEdges) {
       {"0." + std::string(400, '3'), 1.0 / 3.0},
   };
   for (const Expected& e : expected) {
-    const std::optional<double> value = parse_number(e.token);
+    const std::optional<double> value = text::parse_number(e.token);
     ASSERT_EQ(value.has_value(), e.value.has_value()) << escaped(e.token);
     if (value) {
       EXPECT_EQ(*value, *e.value) << escaped(e.token);
@@ -215,7 +215,7 @@ TEST(ParsingFuzz, NumbersAtTheEdges) {
     }
   }
   for (const char* nan : {"nan", "NaN", "-nan", "nan(123)"}) {
-    const std::optional<double> value = parse_number(nan);
+    const std::optional<double> value = text::parse_number(nan);
     ASSERT_TRUE(value) << nan;
     EXPECT_TRUE(std::isnan(*value)) << nan;
   }
@@ -236,7 +236,7 @@ TEST(ParsingFuzz, RandomNumberTokensReadAsStrtodDoesOrNotAtAll) {
     }
     if (chance(random, 0.3)) {  // a random finite double in one of its written forms
       const double value = std::ldexp(uniform(random, -1.0, 1.0), static_cast<int>(below(random, 2100)) - 1075);
-      token = chance(random, 0.5) ? format_number(value) : format_shortest(value);
+      token = chance(random, 0.5) ? text::format_number(value) : text::format_shortest(value);
     }
     if (!check_number_token(token)) ++failures;
   }
@@ -340,7 +340,7 @@ CsvCheck check_csv(const std::string& text) {
       const double values[] = {row.theta_i, row.theta_o, row.phi};
       for (const double value : values) {
         const std::size_t comma = line.find(',');
-        const std::optional<double> field = parse_number(trimmed(line.substr(0, comma)));
+        const std::optional<double> field = text::parse_number(trimmed(line.substr(0, comma)));
         const bool same = field && *field == value && std::signbit(*field) == std::signbit(value);
         EXPECT_TRUE(same) << "row " << r << " is not its line's numbers in " << escaped(text);
         if (!same) return CsvCheck::Failed;
@@ -387,9 +387,9 @@ std::string valid_csv(Random& random, std::vector<AngleRow>* rows_out) {
   auto written = [&random](double value) -> std::string {
     switch (below(random, 3)) {
       case 0:
-        return format_shortest(value);
+        return text::format_shortest(value);
       case 1:
-        return format_number(value);
+        return text::format_number(value);
       default: {
         char buffer[64];
         std::snprintf(buffer, sizeof buffer, "%.3e", value);
@@ -430,7 +430,7 @@ std::string valid_csv(Random& random, std::vector<AngleRow>* rows_out) {
     double numbers[3] = {polar(), polar(), azimuth()};
     for (int c = 0; c < 3; ++c) {
       values[c] = written(numbers[c]);
-      numbers[c] = *parse_number(values[c]);  // the value as written (%.3e rounds)
+      numbers[c] = *text::parse_number(values[c]);  // the value as written (%.3e rounds)
     }
     // Rounding to %.3e cannot leave [0, 90]: 0 and 90 are exact, and the rest rounds within.
     rows.push_back({numbers[0], numbers[1], numbers[2]});
@@ -557,7 +557,7 @@ TEST(ParsingFuzz, CsvExtremeNumbersInEveryColumn) {
       std::string fields[3] = {"30", "45", "180"};
       fields[column] = token;
       const std::string text = "theta_i,theta_o,phi\n" + fields[0] + "," + fields[1] + "," + fields[2] + "\n";
-      const std::optional<double> value = parse_number(trimmed(token));
+      const std::optional<double> value = text::parse_number(trimmed(token));
       // A token holding a comma, or a line end, is not one field; check_csv covers it.
       const bool one_field = token.find_first_of(",\n") == std::string::npos;
       const bool valid = one_field && value && (column == 2 ? std::isfinite(*value) : *value >= 0.0 && *value <= 90.0);
@@ -853,7 +853,7 @@ std::string random_value(Random& random, std::string_view flag, const std::vecto
       value = uniform(random, info.min, hi);
       break;
   }
-  return chance(random, 0.5) ? format_shortest(value) : format_number(value);
+  return chance(random, 0.5) ? text::format_shortest(value) : text::format_number(value);
 }
 
 enum class MaterialOutcome { Built, Rejected, Failed };
@@ -872,7 +872,7 @@ MaterialOutcome check_material(const ParsedFlags& flags, const std::vector<std::
     }
     return false;
   };
-  const auto number = [&flags](std::string_view name) { return *parse_number(*flags.value(name)); };
+  const auto number = [&flags](std::string_view name) { return *text::parse_number(*flags.value(name)); };
   std::optional<Material> built;
   try {
     built = material_from_flags(flags);
@@ -881,7 +881,8 @@ MaterialOutcome check_material(const ParsedFlags& flags, const std::vector<std::
     const std::string message = error.what();
     bool ok = !message.empty() && names_given_flag(message);
     for (const std::string_view name : kNumericFlags) {
-      if (flags.has(name) && message.starts_with(std::string(name) + " = ") && !parse_number(*flags.value(name))) {
+      if (flags.has(name) && message.starts_with(std::string(name) + " = ") &&
+          !text::parse_number(*flags.value(name))) {
         ok = false;  // a non-number must be a UsageError
       }
     }
@@ -892,7 +893,7 @@ MaterialOutcome check_material(const ParsedFlags& flags, const std::vector<std::
     bool ok = !message.empty() && names_given_flag(message);
     for (const std::string_view name : kNumericFlags) {
       if (flags.has(name) && message.starts_with(std::string(name) + " = ") && contains(message, "is not a number") &&
-          parse_number(*flags.value(name))) {
+          text::parse_number(*flags.value(name))) {
         ok = false;  // a number out of range must be a ParameterError
       }
     }
@@ -937,9 +938,9 @@ MaterialOutcome check_material(const ParsedFlags& flags, const std::vector<std::
                           : bottom == "matched" ? BottomKind::Matched
                                                 : BottomKind::Lambert;
   const bool bottom_ok =
-      m.bottom.kind == kind &&
-      (kind != BottomKind::Lambert || (bottom.starts_with("lambert:") &&
-                                       m.bottom.lambert_albedo == *parse_number(std::string_view(bottom).substr(8))));
+      m.bottom.kind == kind && (kind != BottomKind::Lambert ||
+                                (bottom.starts_with("lambert:") &&
+                                 m.bottom.lambert_albedo == *text::parse_number(std::string_view(bottom).substr(8))));
   const bool bottom_optionals_ok = m.bottom.sigma.has_value() == flags.has("bottom-sigma") &&
                                    m.bottom.eta.has_value() == flags.has("bottom-eta") &&
                                    (!m.bottom.sigma || *m.bottom.sigma == number("bottom-sigma")) &&
@@ -1077,7 +1078,7 @@ TEST(ParsingFuzz, LayerSpecsRandomArguments) {
       bad |= (values.count("sigma") != values.count("eta")) || (i == 0 && values.count("sigma") > 0);
       const auto in_range = [&](const std::string& key, const ParameterInfo& info, double& out) {
         if (!values.count(key)) return;
-        const std::optional<double> v = parse_number(values[key]);
+        const std::optional<double> v = text::parse_number(values[key]);
         if (!v || !(*v >= info.min && *v <= info.max)) {
           bad = true;
           return;

@@ -1,11 +1,12 @@
-// Strict conversion between numbers and text for the command line and its CSV.
+// Strict conversion between numbers and text: for the command line and its CSV, and for every room that writes
+// numbers into text (exports, figures, the previewer's scripted edits).
 #pragma once
 
 #include <optional>
 #include <string>
 #include <string_view>
 
-namespace skinlayer::cli {
+namespace skinlayer::text {
 
 // Parses the whole token as a double with std::from_chars (general format): no leading '+', no surrounding
 // whitespace, no trailing characters. "nan" and "inf" (any case) are accepted here; callers decide whether a
@@ -27,4 +28,4 @@ std::string format_shortest(double value);
 // Formats a value with printf "%.10g" (as core does), for ranges and defaults in help and error text.
 std::string format_short(double value);
 
-}  // namespace skinlayer::cli
+}  // namespace skinlayer::text

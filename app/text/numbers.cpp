@@ -1,4 +1,4 @@
-#include "app/cli/numbers.h"
+#include "app/text/numbers.h"
 
 #include <charconv>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <string>
 #include <system_error>
 
-namespace skinlayer::cli {
+namespace skinlayer::text {
 
 std::optional<double> parse_number(std::string_view token) {
   double value = 0.0;
@@ -48,4 +48,4 @@ std::string format_short(double value) {
   return buffer;
 }
 
-}  // namespace skinlayer::cli
+}  // namespace skinlayer::text

@@ -1,5 +1,5 @@
-// parse_number's rejections and the reasons error messages give for them (app/cli/numbers.h).
-#include "app/cli/numbers.h"
+// parse_number's rejections and the reasons error messages give for them (app/text/numbers.h).
+#include "app/text/numbers.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include "app/cli/csv_reader.h"
 #include "app/cli/errors.h"
 
-namespace skinlayer::cli {
+namespace skinlayer::text {
 namespace {
 
 TEST(NumberRejection, SaysWhetherTheTokenIsMalformedOrOutOfADoublesRange) {
@@ -33,21 +33,21 @@ TEST(NumberRejection, SaysWhetherTheTokenIsMalformedOrOutOfADoublesRange) {
       {"0." + std::string(399, '0') + "1", too_small},
   };
   for (const Case& c : cases) {
-    EXPECT_FALSE(parse_number(c.token).has_value()) << c.token;
-    EXPECT_EQ(number_rejection(c.token), c.reason) << c.token;
+    EXPECT_FALSE(text::parse_number(c.token).has_value()) << c.token;
+    EXPECT_EQ(text::number_rejection(c.token), c.reason) << c.token;
   }
 }
 
 TEST(NumberRejection, ReachesTheCsvError) {
   std::istringstream in("theta_i,theta_o,phi\n30,20,0\n30,1e-400,0\n");
   try {
-    (void)read_angle_rows(in);
+    (void)cli::read_angle_rows(in);
     FAIL() << "an underflowing theta_o was accepted";
-  } catch (const InputError& error) {
+  } catch (const cli::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("line 3: theta_o"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find("is too small for a double"), std::string::npos) << error.what();
   }
 }
 
 }  // namespace
-}  // namespace skinlayer::cli
+}  // namespace skinlayer::text
