@@ -8,6 +8,7 @@
 #include "core/interfaces/fresnel.h"
 #include "core/material.h"
 #include "core/targets/cycles_diffuse.h"
+#include "core/targets/fresnel_terms.h"
 #include "core/targets/ggx_energy_compensation.h"
 #include "core/targets/ggx_fresnel_estimate.h"
 #include "core/targets/ggx_lobe.h"
@@ -119,14 +120,14 @@ double interpolate(const std::array<double, CyclesPrincipled::kAngles>& table, d
 CyclesPrincipled::CyclesPrincipled(const CyclesPrincipledParameters& parameters) : parameters_(checked(parameters)) {
   const CyclesPrincipledParameters& p = parameters_;
   // Specular IOR Level: scale F0(eta) by 2 L and take the index of that reflectance.
-  double f0 = cycles_f0_from_ior(p.ior);
+  double f0 = normal_reflectance(p.ior);
   specular_index_ = p.ior;
   if (p.specular_ior_level != 0.5) {
     f0 *= 2.0 * p.specular_ior_level;
     specular_index_ = cycles_ior_from_f0(f0);
   }
   specular_f0_ = (f0 * p.specular_tint).min(1.0).max(0.0);
-  const double index_f0 = cycles_f0_from_ior(specular_index_);
+  const double index_f0 = normal_reflectance(specular_index_);
   const double average_blend =
       std::clamp((cycles_dielectric_average_fresnel(specular_index_) - index_f0) / (1.0 - index_f0), 0.0, 1.0);
   specular_average_fresnel_ = specular_f0_ * (1.0 - average_blend) + average_blend;

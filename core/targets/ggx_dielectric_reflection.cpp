@@ -7,6 +7,7 @@
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
 #include "core/material.h"
+#include "core/targets/fresnel_terms.h"
 #include "core/targets/ggx_lobe.h"
 
 namespace skinlayer {
@@ -54,7 +55,7 @@ GgxAlbedoTerms materialx_ggx_albedo_terms(double mu, double alpha) {
 GgxDielectricReflection::GgxDielectricReflection(double eta, double alpha) : eta_(eta), alpha_(alpha) {
   if (!(eta > 0.0) || !std::isfinite(eta)) throw ParameterError("GGX reflection: eta must be positive");
   if (!(alpha >= 0.0) || !std::isfinite(alpha)) throw ParameterError("GGX reflection: alpha must be >= 0");
-  f0_ = (eta - 1.0) * (eta - 1.0) / ((eta + 1.0) * (eta + 1.0));
+  f0_ = normal_reflectance(eta);
   fresnel_average_ = f0_ + (1.0 - f0_) / 21.0;
   for (int k = 0; k < kAngles; ++k) {
     const double theta = std::min(k * kAngleStep, degrees_to_radians(89.9));

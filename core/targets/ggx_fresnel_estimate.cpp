@@ -6,6 +6,7 @@
 
 #include "core/interfaces/fresnel.h"
 #include "core/targets/cycles_lookup_table.h"
+#include "core/targets/fresnel_terms.h"
 #include "core/targets/ggx_energy_compensation.h"
 #include "core/targets/ggx_lobe.h"
 #include "core/targets/half_vector_quadrature.h"
@@ -54,15 +55,13 @@ const CyclesLookupTable& blend_table() {
 
 }  // namespace
 
-double cycles_f0_from_ior(double eta) { return (eta - 1.0) * (eta - 1.0) / ((eta + 1.0) * (eta + 1.0)); }
-
 double cycles_ior_from_f0(double f0) {
   const double root = std::sqrt(std::clamp(f0, 0.0, 0.99));
   return (1.0 + root) / (1.0 - root);
 }
 
 double cycles_fresnel_blend(double cos_ih, double eta) {
-  const double f0 = cycles_f0_from_ior(eta);
+  const double f0 = normal_reflectance(eta);
   return std::clamp((fresnel_dielectric(cos_ih, eta) - f0) / (1.0 - f0), 0.0, 1.0);
 }
 
@@ -81,7 +80,7 @@ Rgb cycles_principled_fresnel_estimate(double roughness, double mu, double eta, 
 
 double cycles_dielectric_fresnel_estimate(double roughness, double mu, double eta) {
   if (!(eta > 1.0)) return 0.0;  // index 1: no reflection
-  const double s = cycles_ggx_fresnel_blend(roughness, mu, eta), f0 = cycles_f0_from_ior(eta);
+  const double s = cycles_ggx_fresnel_blend(roughness, mu, eta), f0 = normal_reflectance(eta);
   return f0 * (1.0 - s) + s;
 }
 

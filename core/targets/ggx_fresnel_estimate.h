@@ -22,8 +22,8 @@ namespace skinlayer {
 
 using Rgb = Eigen::Array3d;
 
-// bsdf_util.h's F0_from_ior and ior_from_F0 (which clamps F0 to [0, 0.99]).
-double cycles_f0_from_ior(double eta);
+// bsdf_util.h's ior_from_F0, which clamps F0 to [0, 0.99]; its F0_from_ior is normal_reflectance
+// (core/targets/fresnel_terms.h).
 double cycles_ior_from_f0(double f0);
 
 // s(c) above: the share of the way from F0 to white at the cosine c between light and half vector.

@@ -9,6 +9,7 @@
 #include "core/material.h"
 #include "core/series/quadrature.h"
 #include "core/targets/charlie_sheen.h"
+#include "core/targets/fresnel_terms.h"
 #include "core/targets/ggx_lobe.h"
 #include "core/targets/shader_inputs.h"
 
@@ -42,8 +43,6 @@ const GltfPbrParameters& checked(const GltfPbrParameters& p) {
   return p;
 }
 
-double schlick_weight(double cosine) { return std::pow(1.0 - std::clamp(cosine, 0.0, 1.0), 5.0); }
-
 double alpha_of(double roughness) {
   const double r = std::max(roughness, GltfPbr::kLeastRoughness);
   return r * r;
@@ -72,7 +71,7 @@ GltfPbr::GltfPbr(const GltfPbrParameters& parameters)
     : parameters_(checked(parameters)),
       alpha_(alpha_of(parameters.roughness)),
       coat_alpha_(alpha_of(parameters.clearcoat_roughness)) {
-  const double eta = parameters.ior, normal = (eta - 1.0) * (eta - 1.0) / ((eta + 1.0) * (eta + 1.0));
+  const double eta = parameters.ior, normal = normal_reflectance(eta);
   f0_ = (normal * parameters.specular_color).min(1.0) * parameters.specular;
   f90_ = parameters.specular;
   integrate_tables();

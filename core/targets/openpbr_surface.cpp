@@ -9,6 +9,7 @@
 #include "core/conventions.h"
 #include "core/material.h"
 #include "core/targets/eon_diffuse.h"
+#include "core/targets/fresnel_terms.h"
 #include "core/targets/shader_inputs.h"
 #include "core/targets/zeltner_fuzz.h"
 
@@ -42,8 +43,6 @@ void check(const OpenPbrParameters& p) {
   inputs.not_built(p.base_metalness, "base_metalness");
   inputs.not_built(p.transmission_weight, "transmission_weight");
 }
-
-double normal_reflectance(double eta) { return (eta - 1.0) * (eta - 1.0) / ((eta + 1.0) * (eta + 1.0)); }
 
 // eta_s: the base's index over what lies above it, the coat where there is one; inverted where the coat is denser
 // (the specification's guard against total internal reflection in the coat, after Kutz 2021).

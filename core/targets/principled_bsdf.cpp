@@ -10,6 +10,7 @@
 #include "core/interfaces/fresnel.h"
 #include "core/material.h"
 #include "core/series/quadrature.h"
+#include "core/targets/fresnel_terms.h"
 #include "core/targets/ggx_lobe.h"
 #include "core/targets/shader_inputs.h"
 
@@ -36,8 +37,6 @@ void check(const PrincipledParameters& p) {
   inputs.positive(p.ior, "ior");
   inputs.not_built(p.anisotropic, "anisotropic");
 }
-
-double schlick_weight(double cosine) { return std::pow(std::clamp(1.0 - cosine, 0.0, 1.0), 5); }
 
 // Berry's distribution (GTR1, Burley 2012 appendix B): (a^2 - 1) / (pi ln(a^2) (1 + (a^2 - 1) cos^2)); 1/pi at a >= 1.
 double gtr1_distribution(double cos_m, double alpha) {

@@ -15,6 +15,7 @@
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
 #include "core/material.h"
+#include "core/targets/fresnel_terms.h"
 #include "core/targets/ggx_dielectric_reflection.h"
 #include "core/targets/ggx_energy_compensation.h"
 #include "core/targets/ggx_fresnel_estimate.h"
@@ -217,7 +218,7 @@ TEST(CyclesPrincipled, SpecularIorLevelScalesF0) {
   const CyclesPrincipledLobes none = CyclesPrincipled(p).lobes_cosine_weighted(light, view);
   EXPECT_EQ(none.specular.maxCoeff(), 0.0);
   expect_close(none.diffuse, p.base_color * light.z() * kInvPi, 1e-15, "bare base");
-  const double f0 = cycles_f0_from_ior(1.5);
+  const double f0 = normal_reflectance(1.5);
   for (const double level : {0.5, 1.0}) {
     p.specular_ior_level = level;
     p.base_color = Rgb::Zero();

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/interfaces/fresnel.h"
+#include "core/targets/fresnel_terms.h"
 #include "core/targets/ggx_lobe.h"
 #include "tests/core/targets/graded_hemisphere_integral.h"
 
@@ -18,7 +19,7 @@ using test::over_graded_hemisphere;
 
 TEST(GgxFresnelEstimate, BlendRemapsTheDielectricFresnelFromF0ToWhite) {
   for (const double eta : {1.33, 1.5, 2.4}) {
-    const double f0 = cycles_f0_from_ior(eta);
+    const double f0 = normal_reflectance(eta);
     EXPECT_NEAR(cycles_ior_from_f0(f0), eta, 1e-12);
     EXPECT_NEAR(cycles_fresnel_blend(1.0, eta), 0.0, 1e-15);
     EXPECT_NEAR(cycles_fresnel_blend(0.0, eta), 1.0, 1e-15);
@@ -85,7 +86,7 @@ TEST(GgxFresnelEstimate, MirrorRowIsTheBlendAtTheView) {
   const Rgb estimate = cycles_principled_fresnel_estimate(0.0, 1.0, eta, f0);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(estimate(c), f0(c), 1e-12);  // s = 0 at normal incidence
   EXPECT_EQ(cycles_dielectric_fresnel_estimate(0.3, 0.5, 1.0), 0.0);   // index 1 reflects nothing
-  EXPECT_NEAR(cycles_dielectric_fresnel_estimate(0.0, 1.0, eta), cycles_f0_from_ior(eta), 1e-12);
+  EXPECT_NEAR(cycles_dielectric_fresnel_estimate(0.0, 1.0, eta), normal_reflectance(eta), 1e-12);
 }
 
 }  // namespace
