@@ -8,13 +8,13 @@
 #include "core/interfaces/fresnel.h"
 #include "core/material.h"
 #include "core/targets/cycles_diffuse.h"
+#include "core/targets/cycles_sheen.h"
 #include "core/targets/fresnel_terms.h"
 #include "core/targets/ggx_energy_compensation.h"
 #include "core/targets/ggx_fresnel_estimate.h"
 #include "core/targets/ggx_lobe.h"
 #include "core/targets/half_vector_quadrature.h"
 #include "core/targets/shader_inputs.h"
-#include "core/targets/zeltner_fuzz.h"
 
 namespace skinlayer {
 namespace {
@@ -163,7 +163,7 @@ CyclesPrincipled::Layering CyclesPrincipled::layering(double mu_o) const {
   Rgb w = Rgb::Constant(p.alpha);
   if (p.sheen_weight > kWeightCutoff && made(p.sheen_weight * p.sheen_tint * w)) {
     l.sheen = true;
-    w = layered(w, p.sheen_weight * p.sheen_tint * w * zeltner_fuzz_albedo(mu_o, p.sheen_roughness));
+    w = layered(w, p.sheen_weight * p.sheen_tint * w * cycles_sheen_albedo(mu_o, p.sheen_roughness));
   }
   l.under_sheen = w;
   if (p.coat_weight > kWeightCutoff) {
@@ -203,7 +203,7 @@ CyclesPrincipledLobes CyclesPrincipled::lobes_cosine_weighted(const Vec3& omega_
   const Layering l = layering(mu_o);
   if (l.sheen) {
     lobes.sheen =
-        p.sheen_weight * p.sheen_tint * p.alpha * zeltner_fuzz_cosine_weighted(p.sheen_roughness, omega_i, omega_o);
+        p.sheen_weight * p.sheen_tint * p.alpha * cycles_sheen_cosine_weighted(p.sheen_roughness, omega_i, omega_o);
   }
   if (l.coat) {
     const Microfacet m = single_scattering(p.coat_roughness * p.coat_roughness, omega_i, omega_o);
@@ -240,7 +240,7 @@ CyclesPrincipledLobes CyclesPrincipled::lobe_albedos(double mu_o) const {
   CyclesPrincipledLobes albedos;
   if (!(mu_o > 0.0)) return albedos;
   const Layering l = layering(mu_o);
-  if (l.sheen) albedos.sheen = p.sheen_weight * p.sheen_tint * p.alpha * zeltner_fuzz_albedo(mu_o, p.sheen_roughness);
+  if (l.sheen) albedos.sheen = p.sheen_weight * p.sheen_tint * p.alpha * cycles_sheen_albedo(mu_o, p.sheen_roughness);
   if (l.coat) albedos.coat = p.coat_weight * l.under_sheen * l.coat_compensation * interpolate(coat_albedo_, mu_o);
   if (l.specular) {
     const double white = interpolate(specular_white_, mu_o), blend = interpolate(specular_blend_, mu_o);

@@ -10,7 +10,8 @@
 // one factor for all channels. For light from omega_i seen from omega_o (both unit, away from the surface), r the
 // roughness, alpha = r^2, mu the cosines, and w0 = the node's Alpha (opacity):
 //   sheen     W_sh T_sh w0 f_sh,  f_sh cos_i = E_sh(mu_o) D_ltc(omega_i), Zeltner et al. 2022's LTC sheen of
-//             roughness r_sh (zeltner_fuzz.h); its albedo W_sh T_sh E_sh leaves w1 = w0 (1 - W_sh max_c(T_sh) E_sh);
+//             roughness r_sh read from Cycles' table (cycles_sheen.h); its albedo W_sh T_sh E_sh leaves
+//             w1 = w0 (1 - W_sh max_c(T_sh) E_sh);
 //   coat      W_c w1 K_c f_ss(F_eta_c, alpha_c), GGX of alpha_c = r_c^2 with the exact dielectric Fresnel of index
 //             eta_c and Cycles' energy compensation K_c (ggx_energy_compensation.h, F_ss from Kulla & Conty's fit),
 //             whatever the distribution; its estimate A = W_c w1 K_c E(r_c, mu_o) mix(F0(eta_c), 1, s_bar(r_c, mu_o,
@@ -38,8 +39,7 @@
 // IOR and anisotropy and the walk's method do not enter; Diffuse Roughness does not shape it.
 //
 // The energy compensation's tables E(r, mu), E_avg(r) and s_bar(r, mu, eta) are Cycles' (their nodes, coordinates and
-// interpolation), their values integrated here. The sheen reads Cycles' sheen_ltc table, the paper's tabulated fit;
-// zeltner_fuzz.h evaluates the paper's analytic fit of the same quantities instead (within the fits' error).
+// interpolation), their values integrated here. The sheen's LTC and albedo are Cycles' own table's values.
 // Not here: metal, transmission, thin film, anisotropy (each must be 0) and emission (adds light, reflects none).
 #pragma once
 

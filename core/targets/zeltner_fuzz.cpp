@@ -22,6 +22,16 @@ double zeltner_fuzz_albedo(double mu_o, double roughness) {
   return std::max(0.0, std::exp(-0.5 * z * z) / (s * std::sqrt(2.0 * kPi)) + o);  // the fit dips to -2e-5
 }
 
+double zeltner_ltc_distribution(double a, double b, const Vec3& omega_i, const Vec3& omega_o) {
+  if (!(omega_i.z() > 0.0)) return 0.0;
+  const double tangent = std::hypot(omega_o.x(), omega_o.y());
+  const double cx = tangent > 0.0 ? omega_o.x() / tangent : 1.0, cy = tangent > 0.0 ? omega_o.y() / tangent : 0.0;
+  const double lx = cx * omega_i.x() + cy * omega_i.y(), ly = -cy * omega_i.x() + cx * omega_i.y(), lz = omega_i.z();
+  const double wx = a * lx + b * lz, wy = a * ly, wz = lz;
+  const double length2 = wx * wx + wy * wy + wz * wz;
+  return wz * kInvPi * (a / length2) * (a / length2);
+}
+
 double zeltner_fuzz_cosine_weighted(double roughness, const Vec3& omega_i, const Vec3& omega_o) {
   const double x = omega_o.z();
   if (!(omega_i.z() > 0.0 && x > 0.0)) return 0.0;
@@ -29,14 +39,7 @@ double zeltner_fuzz_cosine_weighted(double roughness, const Vec3& omega_i, const
   const double a = (2.58126 * x + 0.813703 * r) * r / (1.0 + 0.310327 * x * x + 2.60994 * x * r);
   const double b = std::sqrt(std::max(0.0, 1.0 - x)) * (r - 1.0) * r * r * r /
                    (0.0000254053 + 1.71228 * x - 1.71506 * x * r + 1.34174 * r * r);
-  // The frame: x along the view's tangent direction (any, at normal view), z the normal.
-  const double tangent = std::hypot(omega_o.x(), omega_o.y());
-  const double cx = tangent > 0.0 ? omega_o.x() / tangent : 1.0, cy = tangent > 0.0 ? omega_o.y() / tangent : 0.0;
-  const double lx = cx * omega_i.x() + cy * omega_i.y(), ly = -cy * omega_i.x() + cx * omega_i.y(), lz = omega_i.z();
-  const double wx = a * lx + b * lz, wy = a * ly, wz = lz;
-  const double length2 = wx * wx + wy * wy + wz * wz;
-  const double D = wz * kInvPi * (a / length2) * (a / length2);
-  return zeltner_fuzz_albedo(x, roughness) * D;
+  return zeltner_fuzz_albedo(x, roughness) * zeltner_ltc_distribution(a, b, omega_i, omega_o);
 }
 
 }  // namespace skinlayer

@@ -17,6 +17,10 @@ namespace skinlayer {
 // The lobe's albedo E(mu_o, r).
 double zeltner_fuzz_albedo(double mu_o, double roughness);
 
+// The LTC's cosine-weighted density D over the light omega_i for the inverse-matrix entries a and b, in the frame
+// whose x axis is omega_o's tangent direction (any, at normal view); it integrates to 1 over the upper hemisphere.
+double zeltner_ltc_distribution(double a, double b, const Vec3& omega_i, const Vec3& omega_o);
+
 // f cos(theta_i) for a white fuzz of weight 1 (0 where either direction is below the surface).
 double zeltner_fuzz_cosine_weighted(double roughness, const Vec3& omega_i, const Vec3& omega_o);
 

@@ -15,12 +15,12 @@
 #include "core/conventions.h"
 #include "core/interfaces/fresnel.h"
 #include "core/material.h"
+#include "core/targets/cycles_sheen.h"
 #include "core/targets/fresnel_terms.h"
 #include "core/targets/ggx_dielectric_reflection.h"
 #include "core/targets/ggx_energy_compensation.h"
 #include "core/targets/ggx_fresnel_estimate.h"
 #include "core/targets/ggx_lobe.h"
-#include "core/targets/zeltner_fuzz.h"
 #include "tests/core/targets/hemisphere_integral.h"
 
 namespace skinlayer {
@@ -198,12 +198,12 @@ TEST(CyclesPrincipled, SheenLeavesTheRestByItsLargestChannel) {
   const CyclesPrincipled bare(p), fuzzy(sheened);
   for (const double theta : {0.2, 1.3}) {
     const Vec3 light = direction_from_angles(0.6, 0.0), view = direction_from_angles(theta, 1.0);
-    const double left = 1.0 - 0.8 * 0.9 * zeltner_fuzz_albedo(view.z(), 0.3);
+    const double left = 1.0 - 0.8 * 0.9 * cycles_sheen_albedo(view.z(), 0.3);
     const CyclesPrincipledLobes a = bare.lobes_cosine_weighted(light, view),
                                 b = fuzzy.lobes_cosine_weighted(light, view);
     expect_close(b.specular, a.specular * left, 1e-12, "specular");
     expect_close(b.diffuse, a.diffuse * left, 1e-12, "diffuse");
-    expect_close(b.sheen, 0.8 * sheened.sheen_tint * zeltner_fuzz_cosine_weighted(0.3, light, view), 1e-12, "sheen");
+    expect_close(b.sheen, 0.8 * sheened.sheen_tint * cycles_sheen_cosine_weighted(0.3, light, view), 1e-12, "sheen");
   }
 }
 
