@@ -169,9 +169,12 @@ CyclesPrincipled::Layering CyclesPrincipled::layering(double mu_o) const {
   if (p.coat_weight > kWeightCutoff) {
     if (made(p.coat_weight * w)) {
       l.coat = true;
-      l.coat_compensation = cycles_ggx_energy_factor(p.coat_roughness, mu_o, Rgb::Constant(coat_average_fresnel_))(0);
-      const double estimate = l.coat_compensation * cycles_ggx_albedo(p.coat_roughness, mu_o) *
-                              cycles_dielectric_fresnel_estimate(p.coat_roughness, mu_o, p.coat_ior);
+      double estimate = fresnel_dielectric(mu_o, p.coat_ior);  // Blender 4.0-4.3: a smooth surface's
+      if (p.release == CyclesRelease::kBlender4_4On) {
+        l.coat_compensation = cycles_ggx_energy_factor(p.coat_roughness, mu_o, Rgb::Constant(coat_average_fresnel_))(0);
+        estimate = l.coat_compensation * cycles_ggx_albedo(p.coat_roughness, mu_o) *
+                   cycles_dielectric_fresnel_estimate(p.coat_roughness, mu_o, p.coat_ior);
+      }
       w = layered(w, p.coat_weight * w * estimate);
     }
     if (!(p.coat_tint == 1.0).all()) {

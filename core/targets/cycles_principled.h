@@ -16,7 +16,8 @@
 //             eta_c and Cycles' energy compensation K_c (ggx_energy_compensation.h, F_ss from Kulla & Conty's fit),
 //             whatever the distribution; its estimate A = W_c w1 K_c E(r_c, mu_o) mix(F0(eta_c), 1, s_bar(r_c, mu_o,
 //             eta_c)) (ggx_fresnel_estimate.h) leaves w2 = w1 (1 - W_c K_c E mix(...)) lerp(1, T_c^(1/cos_t), W_c),
-//             T_c the coat tint and cos_t = sqrt(1 - (1 - mu_o^2) / eta_c^2) the refracted view;
+//             T_c the coat tint and cos_t = sqrt(1 - (1 - mu_o^2) / eta_c^2) the refracted view (Blender 4.4
+//             on; 4.0-4.3 differ, CyclesRelease below);
 //   specular  w2 K_s f_ss(F_s, alpha), F_s(c) = mix(f0, 1, s(c)), s(c) = saturate((F_eta'(c) - F0(eta')) / (1 -
 //             F0(eta'))), f0 = saturate(2 L F0(eta) T_s) and eta' = ior_from_F0(2 L F0(eta)) (eta itself at L =
 //             0.5), L the Specular IOR Level and T_s the Specular Tint; K_s = 1 for "GGX", and for "Multiscatter GGX"
@@ -55,6 +56,13 @@ using Rgb = Eigen::Array3d;
 // The node's "Distribution": "GGX" is single scattering; "Multiscatter GGX" (the default) compensates its specular.
 enum class CyclesDistribution { kGgx, kMultiscatterGgx };
 
+// The Cycles whose coat is modelled. Blender 4.4 (Cycles commit 2b408569, February 2025, "Principled coat doesn't
+// pass furnace test") gave the coat the energy compensation K_c and the tabulated Fresnel estimate above. Blender
+// 4.0-4.3 make the coat with the exact Fresnel alone: K_c = 1 and the estimate A = W_c w1 F_eta_c(mu_o), the
+// Fresnel of a smooth surface at the view. Nothing else in this model differs between them (4.2 has no Diffuse
+// Roughness: it must stay 0 there).
+enum class CyclesRelease { kBlender4_0To4_3, kBlender4_4On };
+
 // The node's inputs, Blender 4.x-5.x's defaults (node_shader_bsdf_principled.cc). Ranges: the node's.
 struct CyclesPrincipledParameters {
   Rgb base_color = Rgb::Constant(0.8);
@@ -85,6 +93,7 @@ struct CyclesPrincipledParameters {
   double thin_film_thickness = 0.0;  // nm; must be 0 for now
   double thin_film_ior = 1.33;       // [1, 1000]
   CyclesDistribution distribution = CyclesDistribution::kMultiscatterGgx;
+  CyclesRelease release = CyclesRelease::kBlender4_4On;  // not an input of the node: the Blender that renders it
 };
 
 // The lobes, each already weighted as in the sum above; f cos(theta_i) per channel.

@@ -66,26 +66,30 @@ std::vector<std::string> blender_command() {
   return command;
 }
 
-int blender_major_version() {
-  static const int major = [] {
+// Blender's version as major * 100 + minor (403 for 4.3.2), from `--version`.
+int blender_version() {
+  static const int version = [] {
     std::vector<std::string> argv = blender_command();
     argv.push_back("--version");
     const ProcessResult result = run_process(argv);
     const std::size_t at = result.out.find("Blender ");
-    if (result.exit_code != 0 || at == std::string::npos) {
+    const std::size_t dot = at == std::string::npos ? at : result.out.find('.', at);
+    if (result.exit_code != 0 || dot == std::string::npos) {
       throw std::runtime_error("cannot tell the version of " + std::string(SKINLAYER_BLENDER_COMMAND) + ": " +
                                result.out + result.err);
     }
-    return std::stoi(result.out.substr(at + 8));
+    return 100 * std::stoi(result.out.substr(at + 8)) + std::stoi(result.out.substr(dot + 1));
   }();
-  return major;
+  return version;
 }
+int blender_major_version() { return blender_version() / 100; }
 
 // The export whose node this Blender has.
 std::string blender_format() { return blender_major_version() >= 4 ? "blender" : "blender-3.4"; }
 
-// skinlayer's model of the node the script built, from the script's fit report: f cos(theta_i) for light omega_i
-// seen from omega_o, and the light sent toward a view at theta under a white sky.
+// skinlayer's model of the node the script built in this Blender (its coat before 4.4 too), from the script's fit
+// report: f cos(theta_i) for light omega_i seen from omega_o, and the light sent toward a view at theta under a white
+// sky.
 struct NodeModel {
   std::function<Rgb(const Vec3&, const Vec3&)> brdf_cosine;
   std::function<Rgb(double theta)> albedo;
@@ -99,7 +103,9 @@ NodeModel node_model(const nlohmann::json& report) {
             [p](double theta) { return principled_albedo(p, Vec3(std::sin(theta), 0.0, std::cos(theta)), 32); },
             p.clearcoat > 0.0};
   }
-  const CyclesPrincipled node(cycles_principled_parameters(report));
+  CyclesPrincipledParameters parameters = cycles_principled_parameters(report);
+  parameters.release = blender_version() < 404 ? CyclesRelease::kBlender4_0To4_3 : CyclesRelease::kBlender4_4On;
+  const CyclesPrincipled node(parameters);
   return {[node](const Vec3& i, const Vec3& o) { return node.brdf_cosine_weighted(i, o); },
           [node](double theta) { return node.albedo(std::cos(theta)); }, false};
 }

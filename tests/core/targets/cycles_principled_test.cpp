@@ -186,6 +186,29 @@ TEST(CyclesPrincipled, CoatTintIsBeersLawAlongTheRefractedView) {
   }
 }
 
+// Blender 4.0-4.3's coat (before Cycles' 2b408569): no energy compensation, and the layers under it keep 1 - W F(mu_o),
+// the Fresnel of a smooth surface at the view; 4.4 on compensates it and estimates its albedo from its tables. At a
+// rough coat and a grazing view the two part (the older coat loses light its successor keeps).
+TEST(CyclesPrincipled, CoatBeforeBlender44IsUncompensatedAndEstimatedByItsFresnel) {
+  CyclesPrincipledParameters today;
+  today.coat_weight = 0.8;
+  today.coat_roughness = 0.5;
+  today.coat_ior = 1.5;
+  CyclesPrincipledParameters older = today;
+  older.release = CyclesRelease::kBlender4_0To4_3;
+  const CyclesPrincipled now(today), before(older);
+  for (const double mu : {1.0, 0.5, 0.2}) {
+    const CyclesPrincipled::Layering l = before.layering(mu), m = now.layering(mu);
+    EXPECT_EQ(l.coat_compensation, 1.0) << mu;
+    EXPECT_GT(m.coat_compensation, 1.0) << mu;
+    expect_close(l.under_coat, Rgb::Constant(1.0 - 0.8 * fresnel_dielectric(mu, 1.5)), 1e-12, "under the coat");
+    const Vec3 light = direction_from_angles(0.4, 0.0), view(std::sqrt(1.0 - mu * mu), 0.0, mu);
+    expect_close(before.lobes_cosine_weighted(light, view).coat,
+                 now.lobes_cosine_weighted(light, view).coat / m.coat_compensation, 1e-12, "coat lobe");
+  }
+  EXPECT_LT(before.albedo(0.2)(0), now.albedo(0.2)(0));
+}
+
 // The sheen leaves w1 = 1 - W E_sh max_c(T) to the layers below it (closure_layering_weight: one factor, the
 // largest channel's), E_sh the sheen's albedo at the view.
 TEST(CyclesPrincipled, SheenLeavesTheRestByItsLargestChannel) {
