@@ -1,5 +1,9 @@
 #include "app/export/fit_report_json.h"
 
+#include <cmath>
+
+#include "core/conventions.h"
+
 namespace skinlayer {
 namespace {
 
@@ -22,6 +26,16 @@ nlohmann::ordered_json report(const char* target, const char* renderer, const nl
   json["albedo_matched_at_normal_incidence"] = albedo_matched;
   json["albedo_miss_at_normal_incidence"] = channels(albedo_miss);
   json["errors"] = errors;
+  nlohmann::ordered_json albedo;
+  albedo["degrees"] = nlohmann::ordered_json::array();
+  albedo["fitted"] = nlohmann::ordered_json::array();
+  albedo["material"] = nlohmann::ordered_json::array();
+  for (std::size_t a = 0; a < fit_errors.albedo_angles.size(); ++a) {
+    albedo["degrees"].push_back(std::round(radians_to_degrees(fit_errors.albedo_angles[a]) * 1e6) / 1e6);
+    albedo["fitted"].push_back(channels(fit_errors.albedo_fitted[a]));
+    albedo["material"].push_back(channels(fit_errors.albedo_target[a]));
+  }
+  json["albedo"] = albedo;  // under a white sky, at each angle of the view (or of the light, for a reciprocal shader)
   return json;
 }
 

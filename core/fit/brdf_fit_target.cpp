@@ -67,7 +67,11 @@ FitErrors fit_errors(const BrdfFitTarget& target, const std::function<Rgb(const 
   errors.lobe_worst /= peak;
   Rgb albedo_squared = Rgb::Zero();
   for (std::size_t a = 0; a < target.albedo.size(); ++a) {
-    const Rgb relative = (albedo(target.albedo_angles[a]) - target.albedo[a]).abs() / target.albedo[a];
+    const Rgb fitted = albedo(target.albedo_angles[a]);
+    errors.albedo_angles.push_back(target.albedo_angles[a]);
+    errors.albedo_fitted.push_back(fitted);
+    errors.albedo_target.push_back(target.albedo[a]);
+    const Rgb relative = (fitted - target.albedo[a]).abs() / target.albedo[a];
     albedo_squared += relative.square();
     errors.albedo_worst = errors.albedo_worst.max(relative);
   }

@@ -55,6 +55,10 @@ void check_fit_target(const BrdfFitTarget& target);
 // worst relative.
 struct FitErrors {
   Rgb lobe_rms = Rgb::Zero(), lobe_worst = Rgb::Zero(), albedo_rms = Rgb::Zero(), albedo_worst = Rgb::Zero();
+  // The directional albedos behind albedo_rms and albedo_worst, at the target's albedo_angles (radians): the fitted
+  // shader's (what its renderer shows under a white sky) and the target's.
+  std::vector<double> albedo_angles;
+  std::vector<Rgb> albedo_fitted, albedo_target;
 };
 
 // `brdf_cosine(omega_i, omega_o)` is the fitted f cos(theta_i); `albedo(theta)` its directional albedo with the light

@@ -56,7 +56,6 @@ GgxDielectricReflection::GgxDielectricReflection(double eta, double alpha) : eta
   if (!(eta > 0.0) || !std::isfinite(eta)) throw ParameterError("GGX reflection: eta must be positive");
   if (!(alpha >= 0.0) || !std::isfinite(alpha)) throw ParameterError("GGX reflection: alpha must be >= 0");
   f0_ = normal_reflectance(eta);
-  fresnel_average_ = f0_ + (1.0 - f0_) / 21.0;
   for (int k = 0; k < kAngles; ++k) {
     const double theta = std::min(k * kAngleStep, degrees_to_radians(89.9));
     const Vec3 view(std::sin(theta), 0.0, std::cos(theta));
@@ -87,7 +86,7 @@ double GgxDielectricReflection::interpolate(const std::array<double, kAngles>& t
 double GgxDielectricReflection::compensation(double mu_o) const {
   const GgxAlbedoTerms fit = materialx_ggx_albedo_terms(mu_o, alpha_);
   const double white = fit.a + fit.b;
-  return 1.0 + fresnel_average_ * (1.0 - white) / white;
+  return 1.0 + fresnel_dielectric(std::clamp(mu_o, 0.0, 1.0), eta_) * (1.0 - white) / white;
 }
 
 double GgxDielectricReflection::cosine_weighted(const Vec3& omega_i, const Vec3& omega_o) const {

@@ -2,8 +2,9 @@
 // (docs/model.md §22.3; the graph's dielectric_bsdf in reflection, as its GLSL generator implements it): GGX with
 // Smith's height-correlated masking and the exact dielectric Fresnel,
 //   f_ss cos(theta_i) = F(omega_i.h, eta) D(h) G2(mu_i, mu_o) / (4 mu_o),
-// made up for the light it loses to single scattering by Turquin 2019's scaling,
-//   f = f_ss c(mu_o),   c(mu_o) = 1 + F_avg (1 - E_w(mu_o)) / E_w(mu_o),   F_avg = F0 + (1 - F0) / 21,
+// made up for the light it loses to single scattering by Turquin 2019's scaling, as MaterialX 1.39 (1.39.5, the
+// release renderers run) weighs it under an environment (mx_dielectric_bsdf.glsl, its indirect closure):
+//   f = f_ss c(mu_o),   c(mu_o) = 1 + F(mu_o, eta) (1 - E_w(mu_o)) / E_w(mu_o),
 // with E_w MaterialX's rational fit of the GGX albedo for a white Fresnel (materialx_ggx_albedo_terms below, a + b),
 // not the integral: the renderer's own numbers. The factor is the view's, so the lobe is not reciprocal. Two albedos
 // at the view follow:
@@ -14,10 +15,10 @@
 //   layer_albedo(mu_o)  what MaterialX's layer node takes from the light under the lobe: c(mu_o) (F0 a + b), the fit
 //                       with Schlick's Fresnel of the same F0 = ((eta - 1)/(eta + 1))^2. Within about 1% of albedo,
 //                       and not equal to it: the graph does not conserve energy exactly.
-// MaterialX 1.39.5 itself weighs the compensation by F(omega_o.h) (under lights) or F(mu_o) (under its environment)
-// in place of F_avg; the F_avg form is the one its next releases take (after 1.39.5), and what this class computes:
-// F(mu_o) of a low index rises to 1 at grazing views and inflates the lobe there by up to 11% (docs/model.md §22.3
-// gives what that changes).
+// Under a light MaterialX 1.39 weighs c by F(omega_o.h) instead, in the lobe and in what it passes on, so that its
+// direct lighting differs from this at grazing views where F(omega_o.h) and F(mu_o) part. Its next release (after
+// 1.39.5, pull request 2958) weighs c by F_avg = F0 + (1 - F0) / 21 everywhere: 1.3-2.6% less light at 80 degrees
+// for a coat of index 1.5 over a base of index 1.2 (docs/model.md §22.3).
 // Below alpha 1e-4 the interface is smooth: a mirror, whose albedo is c(mu_o) F(mu_o, eta) and whose f is 0 between
 // mirror pairs (MaterialX clamps alpha at 1e-8 and its fit is a polynomial in alpha, so c is the same there).
 #pragma once
@@ -57,13 +58,13 @@ class GgxDielectricReflection {
   // What a layer of this lobe takes from the light under it, in MaterialX's graph: c(mu_o) (F0 a + b).
   double layer_albedo(double mu_o) const;
 
-  // Turquin's factor c(mu_o) with MaterialX's fit for E_w.
+  // Turquin's factor c(mu_o) with MaterialX's fit for E_w and the Fresnel at the view.
   double compensation(double mu_o) const;
 
  private:
   double interpolate(const std::array<double, kAngles>& table, double mu) const;
 
-  double eta_, alpha_, f0_, fresnel_average_;
+  double eta_, alpha_, f0_;
   std::array<double, kAngles> fresnel_{};  // E_F on the angles
 };
 

@@ -15,7 +15,9 @@
 // lights; filtered importance sampling with 1024 samples, the analytic albedo fits, MaterialX's defaults for a
 // viewer), one flat pixel seen at 0, 30, 60 and 80 degrees: the directional albedo at the view. At 0 degrees it
 // must be the material's own albedo (`skinlayer albedo`, which the fit matches exactly with skinlayer's model of
-// the node) within 0.5% per channel; the other angles are printed, their difference being the fit's error.
+// the node) within 0.5% per channel. At every angle of the fit's report (0, 20, ..., 80 degrees) it must be the
+// albedo skinlayer's OpenPBR model gives the fitted surface (the report's albedo.fitted) within 0.5%; its distance
+// from the material is the fit's error.
 //
 // Usage: node materialx_validate.mjs PACKAGE_DIR SKINLAYER_EXECUTABLE SCRATCH_DIR [--furnace NODE_MODULES CHROMIUM]
 //   PACKAGE_DIR: node_modules/@needle-tools/materialx; NODE_MODULES: a node_modules folder holding puppeteer-core;
@@ -209,7 +211,9 @@ async function furnace(browser, preset, doc) {
     const own = node.getInput(input.getName());
     values[input.getName()] = [input.getType(), (own ? own : input).getValueString()];
   }
-  const angles = [0, 30, 60, 80];
+  // The fit's report rides in the shader's doc: the fitted model's albedo at its angles is what MaterialX must show.
+  const report = JSON.parse(node.getAttribute('doc').replace(/^skinlayer fit /, ''));
+  const angles = report.albedo.degrees;
   const page = await browser.newPage();
   const result = await page.evaluate(renderFurnace, shader.getSourceCode('vertex'), shader.getSourceCode('pixel'),
                                      values, angles, 1024);
@@ -227,7 +231,12 @@ async function furnace(browser, preset, doc) {
     const material = rgb.map((c) => Number(csv[k + 1][c]));
     const rendered = result.albedos[k];
     const text = (v) => v.map((x) => x.toFixed(5)).join(' ');
-    console.log(`     ${preset} at ${degrees} degrees: MaterialX ${text(rendered)}, material ${text(material)}`);
+    const fitted = report.albedo.fitted[k];
+    console.log(`     ${preset} at ${degrees} degrees: MaterialX ${text(rendered)}, skinlayer's OpenPBR ` +
+                `${text(fitted)}, material ${text(material)}`);
+    const fromModel = Math.max(...rendered.map((x, c) => Math.abs(x / fitted[c] - 1)));
+    check(fromModel < 0.005, `${preset} at ${degrees} degrees: MaterialX's furnace is skinlayer's model of the ` +
+                             `fitted surface (worst ${(100 * fromModel).toFixed(3)}%)`);
     if (degrees === 0) {
       const worst = Math.max(...rendered.map((x, c) => Math.abs(x / material[c] - 1)));
       check(worst < 0.005, `${preset}: MaterialX's furnace at normal incidence is the material's albedo ` +
