@@ -46,6 +46,9 @@ readonly sanitizer_env=(
   UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 )
 readonly tsan_env=(TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1)
+# The sanitized builds keep line tables only (-g1): a report's stack still names file and line, and the builds take a
+# quarter less time than with full debug information (-g: 36 s against 28 s for core's heaviest file under ASan).
+readonly sanitized_flags=("-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
 
 install_packages() {
   local missing=()
@@ -123,6 +126,7 @@ make_blender_chroots() {
 # the whole of `./setup.sh test` stays inside CI's 45 minutes on 2 cores.
 sanitize_skipped_tests=(
   'SolverEnergy\.ConservativeHalfSpaceWithoutInterfaceAtExtremeAsymmetry.*'  # the other SolverEnergy checks
+  'LayerTables\.BsdfIsNonNegativeBesideALobeNarrowerThanAGridStep'            # the other LayerTables checks
   'UnscatteredLight\.PublishedValuesAtTheSharpLobes'                          # the other UnscatteredLight ones
   'UnscatteredLight\.MatchedBottomWithoutScatteringIsTheClosedFormBetweenNodes'
   'MeasuredSkin\.TheNistSpectraAreFitWithinTheTargets'                        # SkinSpectrumFit, SkinColorMatch
@@ -175,8 +179,8 @@ readonly sanitize_skipped
 # The second build of `test`: core, the GL-free parsers and the readers' fuzz targets with their tests, with clang
 # (libFuzzer) under ASan + UBSan; then each reader fuzzed for fuzz_seconds.
 sanitize_test() {
-  local options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINLAYER_SANITIZE=address -DSKINLAYER_FUZZ=ON
-                 -DSKINLAYER_BUILD_APP=OFF -DSKINLAYER_BUILD_BENCH=OFF)
+  local options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "${sanitized_flags[@]}" -DSKINLAYER_SANITIZE=address
+                 -DSKINLAYER_FUZZ=ON -DSKINLAYER_BUILD_APP=OFF -DSKINLAYER_BUILD_BENCH=OFF)
   # A folder configured before with another compiler (g++ until issue 28) cannot switch: it is made anew.
   if [[ -f "$sanitize_dir/CMakeCache.txt" ]] &&
      ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++' "$sanitize_dir/CMakeCache.txt"; then
@@ -197,7 +201,8 @@ sanitize_test() {
 # The third build of `test`: the threaded code's tests (the solver's parallel paths, the parallel-for, the solve
 # worker, the export job: tests/CMakeLists.txt labels them `threads`) under ThreadSanitizer, with g++.
 thread_sanitize_test() {
-  local options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSKINLAYER_SANITIZE=thread -DSKINLAYER_BUILD_BENCH=OFF)
+  local options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "${sanitized_flags[@]}" -DSKINLAYER_SANITIZE=thread
+                 -DSKINLAYER_BUILD_BENCH=OFF)
   if [[ -f "$tsan_dir/CMakeCache.txt" ]]; then
     cmake -S . -B "$tsan_dir" "${options[@]}"
   else
