@@ -65,9 +65,11 @@ nlohmann::ordered_json principled_fit_json(const DocumentFit<CyclesPrincipledFit
   parameters["sheen_tint"] = channels(p.sheen_tint);
   parameters["distribution"] =
       p.distribution == CyclesDistribution::kMultiscatterGgx ? "MULTI_GGX" : "GGX";  // Blender's enum names
-  return report("principled",
-                "Blender 4.2-5.x (Cycles), Principled BSDF, distribution Multiscatter GGX; Diffuse Roughness needs 4.3",
-                parameters, fit.radius_source, fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
+  return report(
+      "principled",
+      "Blender 4.2-5.x (Cycles), Principled BSDF, distribution Multiscatter GGX; Diffuse Roughness needs 4.3; "
+      "a coat as 4.4+ renders it (4.2-4.3's coat keeps less light at grazing views)",
+      parameters, fit.radius_source, fit.fit.albedo_matched, fit.fit.albedo_miss, fit.fit.errors);
 }
 
 nlohmann::ordered_json principled_3_4_fit_json(const DocumentFit<PrincipledFit>& fit) {
