@@ -38,7 +38,7 @@ readonly npm_tools=(gltf-validator@2.0.0-dev.3.10 three@0.187.0 puppeteer-core@2
 readonly build_dir=build
 readonly sanitize_dir=build-sanitize
 readonly tsan_dir=build-tsan
-readonly fuzz_seconds=30  # per reader, two readers at a time
+readonly fuzz_seconds=20  # per reader, two readers at a time; their corpora are replayed first
 # Any report stops the test with a stack trace. LeakSanitizer is on: it works in this VM (it needs ptrace-like
 # thread suspension, which some containers forbid; there, add detect_leaks=0 to ASAN_OPTIONS).
 readonly sanitizer_env=(
@@ -49,6 +49,9 @@ readonly tsan_env=(TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1)
 # The sanitized builds keep line tables only (-g1): a report's stack still names file and line, and the builds take a
 # quarter less time than with full debug information (-g: 36 s against 28 s for core's heaviest file under ASan).
 readonly sanitized_flags=("-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG")
+# The threaded tests are small (their solves on few ordinates), so ThreadSanitizer's build optimises less (-O1:
+# core's heaviest file in 13 s instead of 16).
+readonly tsan_flags=("-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG")
 
 install_packages() {
   local missing=()
@@ -127,6 +130,8 @@ make_blender_chroots() {
 sanitize_skipped_tests=(
   'SolverEnergy\.ConservativeHalfSpaceWithoutInterfaceAtExtremeAsymmetry.*'  # the other SolverEnergy checks
   'LayerTables\.BsdfIsNonNegativeBesideALobeNarrowerThanAGridStep'            # the other LayerTables checks
+  'SolverPreview\.TablesAreFiniteAndSmallerThanTheFullSolves'                 # the other SolverPreview checks
+  'SkinSpectrum\.AgreesWithMonteCarloAtStrongAndWeakAbsorption'               # the other SkinSpectrum checks
   'UnscatteredLight\.PublishedValuesAtTheSharpLobes'                          # the other UnscatteredLight ones
   'UnscatteredLight\.MatchedBottomWithoutScatteringIsTheClosedFormBetweenNodes'
   'MeasuredSkin\.TheNistSpectraAreFitWithinTheTargets'                        # SkinSpectrumFit, SkinColorMatch
@@ -137,6 +142,7 @@ sanitize_skipped_tests=(
   'InterfaceAlbedo\.WithinOneInAMillionOfAnAdaptiveIntegration'              # InterfaceAlbedo's brute force
   'MonteCarlo\.DirectionalAlbedosAgreeWithSolver'                            # SkinSpectrum's Monte Carlo
   'MonteCarlo\.BinnedBsdfInPlaneOfIncidenceAgreesWithSolver.*'
+  'MonteCarlo\.BinnedBsdfInRingsOfExitAngleAgreesWithSolver.*'
   'InterfaceDirections\..*'                                                  # MultipleScattering's walk checks
   'MultipleScatteringEstimate\..*'
   'StackSolver\.UnscatteredLightThroughAnInterfaceBetweenLayersIsExact'      # the other StackSolver ones
@@ -147,6 +153,7 @@ sanitize_skipped_tests=(
   'LayerProfile\.SlabReflectionAndTransmissionMatchTheWalk'
   'LayerProfile\.AgreesWithMcmlsAnnuli'
   'LayerProfile\.PointValuesAverageToTheAnnuli'
+  'LayerProfile\.FarFromTheSourceTheShapeIsTheDiffusionDipoles'
   'RoughTopProfile\.ForwardScatteringHalfSpaceMatchesTheWalk'                # the other RoughTopProfile ones
   'RoughTopProfile\.RoughTopOverAnAbsorbingHalfSpaceMatchesTheWalk'
   'RoughTopProfile\.PointValuesAverageToTheAnnuli'
@@ -201,7 +208,7 @@ sanitize_test() {
 # The third build of `test`: the threaded code's tests (the solver's parallel paths, the parallel-for, the solve
 # worker, the export job: tests/CMakeLists.txt labels them `threads`) under ThreadSanitizer, with g++.
 thread_sanitize_test() {
-  local options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "${sanitized_flags[@]}" -DSKINLAYER_SANITIZE=thread
+  local options=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "${tsan_flags[@]}" -DSKINLAYER_SANITIZE=thread
                  -DSKINLAYER_BUILD_BENCH=OFF)
   if [[ -f "$tsan_dir/CMakeCache.txt" ]]; then
     cmake -S . -B "$tsan_dir" "${options[@]}"
