@@ -12,7 +12,7 @@
 // soak's own material is saved first and opened again after the reading). What the window holds otherwise depends
 // on what it shows (a stack's tables, B's, an environment's maps): 115-150 MB of heap in this soak.
 //
-// ctest runs SKINLAYER_SOAK_DEFAULT_EDITS edits (300, for CI's time); SKINLAYER_SOAK_EDITS=2000
+// ctest runs SKINLAYER_SOAK_DEFAULT_EDITS edits (250, for CI's time); SKINLAYER_SOAK_EDITS=2000
 // build/tests/app/window/window_soak_tests runs the full soak.
 #include <gtest/gtest.h>
 #include <stb_image.h>  // libstb.so holds the implementation
