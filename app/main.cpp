@@ -9,8 +9,8 @@
 #include "app/cli/errors.h"
 #include "app/cli/help_command.h"
 #include "app/cli/previewer_launcher.h"
-#include "app/cli/quoted.h"
 #include "app/process/heap_retention.h"
+#include "app/text/quoted.h"
 
 namespace {
 
@@ -27,7 +27,7 @@ int dispatch(std::span<const std::string_view> arguments, int argc, char** argv)
     std::cout << "skinlayer " << SKINLAYER_VERSION << '\n';
     return kExitSuccess;
   }
-  throw UsageError("unknown command " + quoted(command) + "; see skinlayer --help");
+  throw UsageError("unknown command " + skinlayer::text::quoted(command) + "; see skinlayer --help");
 }
 
 }  // namespace
@@ -36,5 +36,5 @@ int main(int argc, char** argv) {
   skinlayer::retain_freed_heap_memory();
   const std::vector<std::string_view> arguments(argv + 1, argv + argc);
   return skinlayer::cli::run_reporting_errors(std::cerr,
-                                             [&arguments, argc, argv] { return dispatch(arguments, argc, argv); });
+                                              [&arguments, argc, argv] { return dispatch(arguments, argc, argv); });
 }

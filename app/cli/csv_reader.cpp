@@ -7,8 +7,8 @@
 #include <string_view>
 
 #include "app/cli/errors.h"
-#include "app/cli/quoted.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -49,7 +49,7 @@ double parse_angle(std::string_view field, std::size_t column, std::size_t line_
   const std::string name(kColumnNames[column]);
   const std::optional<double> value = text::parse_number(field);
   if (!value) {
-    throw InputError(at_line(line_number) + name + " = " + quoted(field) + " " + text::number_rejection(field));
+    throw InputError(at_line(line_number) + name + " = " + text::quoted(field) + " " + text::number_rejection(field));
   }
   const bool is_polar = column < 2;
   if (is_polar && !(*value >= 0.0 && *value <= kMaxPolarDegrees)) {
@@ -78,7 +78,7 @@ std::vector<AngleRow> read_angle_rows(std::istream& in) {
     if (line_number == 1 && is_header(split)) continue;
     if (split.count != kColumns) {
       throw InputError(at_line(line_number) + "expected 3 fields theta_i,theta_o,phi but found " +
-                       std::to_string(split.count) + " in " + quoted(line));
+                       std::to_string(split.count) + " in " + text::quoted(line));
     }
     rows.push_back({parse_angle(split.fields[0], 0, line_number), parse_angle(split.fields[1], 1, line_number),
                     parse_angle(split.fields[2], 2, line_number)});

@@ -4,8 +4,8 @@
 #include <cmath>
 
 #include "app/cli/errors.h"
-#include "app/cli/quoted.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 #include "core/conventions.h"
 
 namespace skinlayer::cli {
@@ -40,25 +40,25 @@ LightingFlags lighting_from_flags(const ParsedFlags& flags) {
   lighting.view.scale = std::exp2(number_flag(flags, "env-ev", 0.0, -20.0, 20.0, " (exposure value: radiance x 2^EV)"));
   const std::string_view background = flags.value("background").value_or("show");
   const std::optional<std::size_t> backdrop = index_of(kBackgroundNames, background);
-  if (!backdrop) throw UsageError("background = " + quoted(background) + " is not one of: show, blur, hide");
+  if (!backdrop) throw UsageError("background = " + text::quoted(background) + " is not one of: show, blur, hide");
   lighting.view.background = static_cast<EnvironmentBackground>(*backdrop);
   if (const std::optional<std::string_view> text = flags.value("samples")) {
     const std::optional<double> value = text::parse_number(*text);
     if (!value || *value != std::floor(*value) || *value < 1 || *value > kMaxEnvironmentSamples) {
-      throw UsageError("samples = " + quoted(*text) + " must be a whole number in [1, " +
+      throw UsageError("samples = " + text::quoted(*text) + " must be a whole number in [1, " +
                        std::to_string(kMaxEnvironmentSamples) + "] (estimates per pixel)");
     }
     lighting.samples = static_cast<int>(*value);
   }
   const std::string_view light = flags.value("light").value_or(lighting.environment ? "off" : "on");
-  if (light != "on" && light != "off") throw UsageError("light = " + quoted(light) + " is not on or off");
+  if (light != "on" && light != "off") throw UsageError("light = " + text::quoted(light) + " is not on or off");
   lighting.directional_light = light == "on";
   if (!lighting.directional_light && !lighting.environment) {
     throw UsageError("--light off needs --env: nothing would light the sphere");
   }
   const std::string_view tonemap = flags.value("tonemap").value_or("exponential");
   const std::optional<std::size_t> tone_map = index_of(kToneMapNames, tonemap);
-  if (!tone_map) throw UsageError("tonemap = " + quoted(tonemap) + " is not one of: exponential, aces, none");
+  if (!tone_map) throw UsageError("tonemap = " + text::quoted(tonemap) + " is not one of: exponential, aces, none");
   lighting.tone_map = static_cast<ToneMap>(*tone_map);
   return lighting;
 }

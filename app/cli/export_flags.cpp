@@ -8,8 +8,8 @@
 #include <string>
 
 #include "app/cli/errors.h"
-#include "app/cli/quoted.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -21,8 +21,9 @@ int parse_nodes(std::optional<std::string_view> text) {
   if (!text) return kDefaultScatfunNodes;
   const std::optional<double> value = text::parse_number(*text);
   if (!value || *value != std::floor(*value) || *value < kMinScatfunNodes || *value > kMaxScatfunNodes) {
-    throw UsageError("nodes = " + quoted(*text) + " must be a whole number in [" + std::to_string(kMinScatfunNodes) +
-                     ", " + std::to_string(kMaxScatfunNodes) + "] (polar nodes per hemisphere)");
+    throw UsageError("nodes = " + text::quoted(*text) + " must be a whole number in [" +
+                     std::to_string(kMinScatfunNodes) + ", " + std::to_string(kMaxScatfunNodes) +
+                     "] (polar nodes per hemisphere)");
   }
   return static_cast<int>(*value);
 }
@@ -31,7 +32,7 @@ int parse_resolution(std::optional<std::string_view> text) {
   if (!text) return RglOptions{}.samples;
   const std::optional<double> value = text::parse_number(*text);
   if (!value || *value != std::floor(*value) || *value < RglOptions::kMinSamples || *value > RglOptions::kMaxSamples) {
-    throw UsageError("resolution = " + quoted(*text) + " must be a whole number in [" +
+    throw UsageError("resolution = " + text::quoted(*text) + " must be a whole number in [" +
                      std::to_string(RglOptions::kMinSamples) + ", " + std::to_string(RglOptions::kMaxSamples) +
                      "] (sample nodes per side of an RGL slice)");
   }
@@ -56,7 +57,7 @@ ExportRequest export_request_from_flags(const ParsedFlags& flags) {
   const auto fitted_format =
       std::find_if(kFitted.begin(), kFitted.end(), [&](const auto& f) { return f.first == *format; });
   if (*format != "merl" && *format != "bsdf" && *format != "rgl" && fitted_format == kFitted.end())
-    throw UsageError("format = " + quoted(*format) +
+    throw UsageError("format = " + text::quoted(*format) +
                      " is not one of: bsdf, merl, rgl, blender, blender-3.4, mtlx, gltf");
   const bool bsdf = *format == "bsdf", rgl = *format == "rgl";
   const bool blender = *format == "blender" || *format == "blender-3.4";

@@ -8,12 +8,12 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
-#include "app/cli/quoted.h"
 #include "app/figures/figure_builder.h"
 #include "app/figures/figure_index.h"
 #include "app/figures/figure_set.h"
 #include "app/figures/font.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 
@@ -37,7 +37,7 @@ int run_figures_command(std::span<const std::string_view> arguments, std::ostrea
   if (const std::optional<std::string_view> text = flags.value("size")) {
     const std::optional<double> value = text::parse_number(*text);
     if (!value || *value != static_cast<int>(*value) || *value < 160 || *value > 4096) {
-      throw UsageError("size = " + quoted(*text) + " must be a whole number of pixels in [160, 4096]");
+      throw UsageError("size = " + text::quoted(*text) + " must be a whole number of pixels in [160, 4096]");
     }
     size = static_cast<int>(*value);
   }

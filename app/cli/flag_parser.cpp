@@ -3,8 +3,8 @@
 #include <algorithm>
 
 #include "app/cli/errors.h"
-#include "app/cli/quoted.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -41,7 +41,7 @@ ParsedFlags ParsedFlags::parse(std::span<const std::string_view> arguments,
     const std::string_view argument = arguments[index];
     const bool output_short = argument == kOutputShortFlag && is_known(known_flags, "output");
     if (!output_short && (!argument.starts_with(kFlagPrefix) || argument.size() == kFlagPrefix.size())) {
-      throw UsageError("unexpected argument " + quoted(argument) + " for " + std::string(command) +
+      throw UsageError("unexpected argument " + text::quoted(argument) + " for " + std::string(command) +
                        "; flags are written --name value or --name=value");
     }
     const std::string_view body = output_short ? std::string_view("output") : argument.substr(kFlagPrefix.size());
@@ -49,7 +49,7 @@ ParsedFlags ParsedFlags::parse(std::span<const std::string_view> arguments,
     const std::string_view name = body.substr(0, equals);
     const bool is_switch = is_known(known_switches, name);
     if (!is_switch && !is_known(known_flags, name)) {
-      throw UsageError("unknown flag " + quoted(argument.substr(0, kFlagPrefix.size() + name.size())) + " for " +
+      throw UsageError("unknown flag " + text::quoted(argument.substr(0, kFlagPrefix.size() + name.size())) + " for " +
                        std::string(command) + "; see " + std::string(command) + " --help");
     }
     std::string_view value;
@@ -94,7 +94,7 @@ double number_flag(const ParsedFlags& flags, std::string_view name, double fallb
   if (!text) return fallback;
   const std::optional<double> value = text::parse_number(*text);
   if (!value || !(*value >= low && *value <= high)) {
-    throw UsageError(std::string(name) + " = " + quoted(*text) + " is out of range; valid range is [" +
+    throw UsageError(std::string(name) + " = " + text::quoted(*text) + " is out of range; valid range is [" +
                      text::format_short(low) + ", " + text::format_short(high) + "]" + std::string(note));
   }
   return *value;

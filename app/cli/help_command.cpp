@@ -2,7 +2,7 @@
 
 #include "app/cli/command_table.h"
 #include "app/cli/errors.h"
-#include "app/cli/quoted.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 
@@ -55,7 +55,7 @@ int run_help_command(std::span<const std::string_view> arguments, std::ostream& 
   if (arguments.size() > 1) throw UsageError("help takes at most one command name, as in skinlayer help eval");
   const Command* command = find_command(arguments.front());
   if (command == nullptr) {
-    throw UsageError("unknown command " + quoted(arguments.front()) + "; the commands are " + command_names());
+    throw UsageError("unknown command " + text::quoted(arguments.front()) + "; the commands are " + command_names());
   }
   out << command->usage();
   return kExitSuccess;

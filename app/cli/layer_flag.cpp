@@ -7,9 +7,9 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
-#include "app/cli/quoted.h"
 #include "app/material/exact_transparency.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -22,8 +22,9 @@ std::string prefix(int place) { return "layer " + std::to_string(place) + ": "; 
 double checked(const ParameterInfo& info, std::string_view key, std::string_view text, int place) {
   const std::optional<double> value = text::parse_number(text);
   if (!value) {
-    throw UsageError(prefix(place) + std::string(key) + " = " + quoted(text) + " " + text::number_rejection(text) +
-                     "; valid range is " + range_text(info) + " (" + std::string(info.description) + ")");
+    throw UsageError(prefix(place) + std::string(key) + " = " + text::quoted(text) + " " +
+                     text::number_rejection(text) + "; valid range is " + range_text(info) + " (" +
+                     std::string(info.description) + ")");
   }
   try {
     check_parameter(info, *value, key);  // named as the layer spells it ("mu_t" for the row "mu-t")
@@ -40,12 +41,12 @@ LayerSpec parse_layer_spec(std::string_view text, int place, bool rgb_albedo) {
   for (const std::string_view item : split_list(text, ',')) {
     const std::size_t equals = item.find('=');
     if (item.empty() || equals == std::string_view::npos) {
-      throw UsageError(prefix(place) + quoted(item) +
+      throw UsageError(prefix(place) + text::quoted(item) +
                        " is not KEY=VALUE; keys are T or tau, albedo, g, mu_t, sigma, eta, " + std::string(kExample));
     }
     const std::string_view key = item.substr(0, equals);
     if (std::find(kKeys.begin(), kKeys.end(), key) == kKeys.end()) {
-      throw UsageError(prefix(place) + "unknown key " + quoted(key) +
+      throw UsageError(prefix(place) + "unknown key " + text::quoted(key) +
                        "; keys are T or tau, albedo, g, mu_t, sigma, eta");
     }
     if (std::any_of(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == key; })) {
@@ -74,11 +75,11 @@ LayerSpec parse_layer_spec(std::string_view text, int place, bool rgb_albedo) {
   if (const auto albedo = find("albedo")) {
     const std::vector<std::string_view> parts = split_list(*albedo, ':');
     if (parts.size() == 3 && !rgb_albedo) {
-      throw UsageError(prefix(place) + "albedo = " + quoted(*albedo) +
+      throw UsageError(prefix(place) + "albedo = " + text::quoted(*albedo) +
                        " is RGB and this command solves one channel; give one number in [0, 1]");
     }
     if (parts.size() != 1 && parts.size() != 3) {
-      throw UsageError(prefix(place) + "albedo = " + quoted(*albedo) + " must be one number" +
+      throw UsageError(prefix(place) + "albedo = " + text::quoted(*albedo) + " must be one number" +
                        (rgb_albedo ? " or three (r:g:b)" : "") + ", each in [0, 1]");
     }
     for (std::size_t c = 0; c < 3; ++c) {

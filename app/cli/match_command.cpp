@@ -13,13 +13,13 @@
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
-#include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
 #include "app/material/color_match.h"
 #include "app/material/material_file.h"
 #include "app/material/material_json.h"
 #include "app/process/parallel_for.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 #include "core/color/spectral_color.h"
 #include "core/conventions.h"
 #include "core/fit/skin_fit.h"
@@ -49,18 +49,20 @@ std::array<double, 3> parse_color(std::string_view text) {
       valid = high >= 0 && low >= 0;
       rgb[c] = (16 * high + low) / 255.0;
     }
-    if (!valid) throw UsageError("color = " + quoted(text) + " is not #RRGGBB (six hexadecimal digits)");
+    if (!valid) throw UsageError("color = " + text::quoted(text) + " is not #RRGGBB (six hexadecimal digits)");
     return rgb;
   }
   const std::vector<std::string_view> parts = split_list(text, ',');
-  if (parts.size() != 3) throw UsageError("color = " + quoted(text) + " must be R,G,B (each in [0, 1]) or #RRGGBB");
+  if (parts.size() != 3)
+    throw UsageError("color = " + text::quoted(text) + " must be R,G,B (each in [0, 1]) or #RRGGBB");
   for (std::size_t c = 0; c < 3; ++c) {
     const std::optional<double> value = text::parse_number(parts[c]);
     if (!value) {
-      throw UsageError("color = " + quoted(text) + ": " + quoted(parts[c]) + " " + text::number_rejection(parts[c]));
+      throw UsageError("color = " + text::quoted(text) + ": " + text::quoted(parts[c]) + " " +
+                       text::number_rejection(parts[c]));
     }
     if (!(*value >= 0.0 && *value <= 1.0)) {
-      throw ParameterError("color = " + quoted(text) + ": " + text::format_number(*value) +
+      throw ParameterError("color = " + text::quoted(text) + ": " + text::format_number(*value) +
                            " is out of range; valid range is [0, 1] (each channel)");
     }
     rgb[c] = *value;
@@ -94,7 +96,7 @@ void write_document(const MaterialDocument& document, const ParsedFlags& flags, 
 // CSV wavelength_nm,reflectance with an optional header: the pairs, ascending.
 void read_spectrum(const std::string& path, std::vector<double>& wavelengths, std::vector<double>& reflectance) {
   std::ifstream file(path);
-  if (!file) throw UsageError("spectrum = " + quoted(path) + " cannot be read");
+  if (!file) throw UsageError("spectrum = " + text::quoted(path) + " cannot be read");
   std::string line;
   int number = 0;
   while (std::getline(file, line)) {
@@ -128,7 +130,7 @@ int match_spectrum(const ParsedFlags& flags, const MaterialDocument& document, s
     const std::optional<double> a = ends.size() == 2 ? text::parse_number(ends[0]) : std::nullopt;
     const std::optional<double> b = ends.size() == 2 ? text::parse_number(ends[1]) : std::nullopt;
     if (!a || !b || !(*a >= 360.0 && *b <= 830.0 && *a < *b)) {
-      throw UsageError("range = " + quoted(*range) + " must be FROM:TO in nm, 360 <= FROM < TO <= 830");
+      throw UsageError("range = " + text::quoted(*range) + " must be FROM:TO in nm, 360 <= FROM < TO <= 830");
     }
     from = *a;
     to = *b;

@@ -7,12 +7,12 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/layer_flag.h"
-#include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
 #include "app/material/exact_transparency.h"
 #include "app/material/material_file.h"
 #include "app/material/presets.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -36,7 +36,7 @@ std::optional<double> checked_number(const ParsedFlags& flags, std::string_view 
   const ParameterInfo& info = parameter_info(name);
   const std::optional<double> value = text::parse_number(*text);
   if (!value) {
-    throw UsageError(std::string(name) + " = " + quoted(*text) + " " + text::number_rejection(*text) +
+    throw UsageError(std::string(name) + " = " + text::quoted(*text) + " " + text::number_rejection(*text) +
                      "; valid range is " + range_text(info) + " (" + std::string(info.description) + ")");
   }
   check_parameter(info, *value);
@@ -103,12 +103,14 @@ std::array<double, 3> albedo_rgb_from_text(std::string_view text) {
   std::array<double, 3> rgb{};
   const std::vector<std::string_view> parts = split_list(text, ',');
   if (parts.size() != 1 && parts.size() != 3) {
-    throw UsageError("albedo = " + quoted(text) + " must be one number or three (r,g,b), each in [0, 1]");
+    throw UsageError("albedo = " + text::quoted(text) + " must be one number or three (r,g,b), each in [0, 1]");
   }
   for (std::size_t c = 0; c < 3; ++c) {
     const std::string_view part = parts[parts.size() == 1 ? 0 : c];
     const std::optional<double> value = text::parse_number(part);
-    if (!value) throw UsageError("albedo = " + quoted(text) + ": " + quoted(part) + " " + text::number_rejection(part));
+    if (!value)
+      throw UsageError("albedo = " + text::quoted(text) + ": " + text::quoted(part) + " " +
+                       text::number_rejection(part));
     check_parameter(parameter_info("albedo"), *value);
     rgb[c] = *value;
   }
@@ -118,7 +120,7 @@ std::array<double, 3> albedo_rgb_from_text(std::string_view text) {
 MicrofacetModel microfacet_from_text(std::string_view text) {
   const std::optional<MicrofacetModel> model = parse_microfacet_model(text);
   if (!model) {
-    throw UsageError("microfacet = " + quoted(text) +
+    throw UsageError("microfacet = " + text::quoted(text) +
                      " is not a microfacet model; valid values are multiple (energy-conserving, the default) and "
                      "single (Stam 2001)");
   }

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "app/cli/errors.h"
-#include "app/cli/quoted.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 
@@ -13,7 +13,7 @@ SubsurfaceModel model_from_flags(const ParsedFlags& flags, std::optional<Subsurf
   if (!text) return fallback.value_or(SubsurfaceModel::Stam);
   const std::optional<SubsurfaceModel> model = parse_subsurface_model(*text);
   if (!model) {
-    throw UsageError("model = " + quoted(*text) +
+    throw UsageError("model = " + text::quoted(*text) +
                      " is not one of stam (the layer model), lambert, hk (Hanrahan-Krueger single scattering)");
   }
   return *model;

@@ -9,11 +9,11 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
 #include "app/cli/numeric_table.h"
-#include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
 #include "app/process/parallel_for.h"
 #include "app/solution/document_profile.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 namespace {
@@ -26,7 +26,7 @@ constexpr int kMaxAnnuli = 10000;
 double positive_number(std::string_view flag, std::string_view text) {
   const std::optional<double> value = text::parse_number(text);
   if (!value || !(*value > 0.0) || !std::isfinite(*value)) {
-    throw UsageError(std::string(flag) + " = " + quoted(text) + " must be a number > 0");
+    throw UsageError(std::string(flag) + " = " + text::quoted(text) + " must be a number > 0");
   }
   return *value;
 }
@@ -39,11 +39,11 @@ std::vector<double> annulus_edges(std::optional<std::string_view> text, double d
     return edges;
   }
   const std::vector<std::string_view> parts = split_list(*text, ':');
-  if (parts.size() != 2) throw UsageError("annuli = " + quoted(*text) + " must be DR:N, as in --annuli 0.05:40");
+  if (parts.size() != 2) throw UsageError("annuli = " + text::quoted(*text) + " must be DR:N, as in --annuli 0.05:40");
   const double width = positive_number("annuli's width DR", parts[0]);
   const std::optional<double> count = text::parse_number(parts[1]);
   if (!count || *count != std::floor(*count) || *count < 1 || *count > kMaxAnnuli) {
-    throw UsageError("annuli = " + quoted(*text) + ": the count N must be a whole number in [1, " +
+    throw UsageError("annuli = " + text::quoted(*text) + ": the count N must be a whole number in [1, " +
                      std::to_string(kMaxAnnuli) + "]");
   }
   std::vector<double> edges;
@@ -104,7 +104,7 @@ int run_profile_command(std::span<const std::string_view> arguments, std::ostrea
       "skinlayer profile");
   const std::string_view incidence_name = flags.value(kIncidenceFlag).value_or("normal");
   if (incidence_name != "normal" && incidence_name != "diffuse") {
-    throw UsageError("incidence = " + quoted(incidence_name) + " is not one of normal, diffuse");
+    throw UsageError("incidence = " + text::quoted(incidence_name) + " is not one of normal, diffuse");
   }
   const Incidence incidence = incidence_name == "diffuse" ? Incidence::Diffuse : Incidence::Normal;
   if (flags.has(kAnnuliFlag) && flags.has(kRadiiFlag)) {

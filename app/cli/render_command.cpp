@@ -10,7 +10,6 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
-#include "app/cli/quoted.h"
 #include "app/cli/skin_flag.h"
 #include "app/gl/osmesa_context.h"
 #include "app/material/atomic_file.h"
@@ -25,6 +24,7 @@
 #include "app/solution/material_solve.h"
 #include "app/solution/sphere_spread.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 #include "core/conventions.h"
 
 namespace skinlayer::cli {
@@ -38,7 +38,7 @@ std::pair<int, int> parse_size(std::string_view text) {
   const std::optional<double> h = x == std::string_view::npos ? std::nullopt : text::parse_number(text.substr(x + 1));
   if (!w || !h || *w != static_cast<int>(*w) || *h != static_cast<int>(*h) || *w < 16 || *h < 16 || *w > kMaxSide ||
       *h > kMaxSide) {
-    throw UsageError("size = " + quoted(text) + " must be WIDTHxHEIGHT in pixels, each a whole number in [16, " +
+    throw UsageError("size = " + text::quoted(text) + " must be WIDTHxHEIGHT in pixels, each a whole number in [16, " +
                      std::to_string(kMaxSide) + "], as in --size 1024x512");
   }
   return {static_cast<int>(*w), static_cast<int>(*h)};
@@ -46,7 +46,7 @@ std::pair<int, int> parse_size(std::string_view text) {
 
 ViewKind parse_view(std::string_view text) {
   const std::optional<ViewKind> view = parse_view_kind(text);
-  if (!view) throw UsageError("view = " + quoted(text) + " is not one of sphere, polar, both, compare");
+  if (!view) throw UsageError("view = " + text::quoted(text) + " is not one of sphere, polar, both, compare");
   return *view;
 }
 
@@ -103,7 +103,7 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
   const double light_phi = degrees_to_radians(number_flag(flags, "light-phi", 180.0, -360.0, 360.0, " (degrees)"));
   const double exposure = number_flag(flags, "exposure", 1.0, 1e-6, 1000.0, "");
   const std::string_view scale = flags.value("scale").value_or("linear");
-  if (scale != "linear" && scale != "log") throw UsageError("scale = " + quoted(scale) + " is not linear or log");
+  if (scale != "linear" && scale != "log") throw UsageError("scale = " + text::quoted(scale) + " is not linear or log");
   const LightingFlags lighting = lighting_from_flags(flags);
   const bool hdr = output->ends_with(".hdr");
   if (hdr && view != ViewKind::Sphere) {

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "app/cli/errors.h"
-#include "app/cli/quoted.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 #include "core/skin/skin_optics.h"
 
 namespace skinlayer::cli {
@@ -30,21 +30,21 @@ SkinParameters parse_skin_spec(std::string_view text, const SkinParameters& base
   for (const std::string_view item : split_list(text, ',')) {
     const std::size_t equals = item.find('=');
     if (item.empty() || equals == std::string_view::npos) {
-      throw UsageError("skin: " + quoted(item) + " is not KEY=VALUE; keys are " + key_list() + ", " +
+      throw UsageError("skin: " + text::quoted(item) + " is not KEY=VALUE; keys are " + key_list() + ", " +
                        std::string(kExample));
     }
     const std::string_view key = item.substr(0, equals);
     const std::string_view value_text = item.substr(equals + 1);
     const auto& table = skin_parameter_table();
     const auto info = std::find_if(table.begin(), table.end(), [&](const ParameterInfo& i) { return i.flag == key; });
-    if (info == table.end()) throw UsageError("skin: unknown key " + quoted(key) + "; keys are " + key_list());
+    if (info == table.end()) throw UsageError("skin: unknown key " + text::quoted(key) + "; keys are " + key_list());
     if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
       throw UsageError("skin: key " + std::string(key) + " is given more than once");
     }
     seen.push_back(key);
     const std::optional<double> value = text::parse_number(value_text);
     if (!value) {
-      throw UsageError("skin: " + std::string(key) + " = " + quoted(value_text) + " " +
+      throw UsageError("skin: " + std::string(key) + " = " + text::quoted(value_text) + " " +
                        text::number_rejection(value_text) + "; valid range is " + range_text(*info) + " (" +
                        std::string(info->description) + ")");
     }
@@ -74,7 +74,7 @@ std::optional<double> wavelength_from_flags(const ParsedFlags& flags) {
   if (!text) return std::nullopt;
   const std::optional<double> value = text::parse_number(*text);
   if (!value) {
-    throw UsageError("wavelength = " + quoted(*text) + " " + text::number_rejection(*text) +
+    throw UsageError("wavelength = " + text::quoted(*text) + " " + text::number_rejection(*text) +
                      "; valid range is [360, 830] (nm)");
   }
   if (!(*value >= 360.0 && *value <= 830.0)) {

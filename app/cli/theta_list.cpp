@@ -5,8 +5,8 @@
 
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
-#include "app/cli/quoted.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 
@@ -15,7 +15,7 @@ std::vector<double> parse_theta_list(std::string_view list) {
   for (const std::string_view item : split_list(list, ',')) {
     const std::optional<double> value = text::parse_number(item);
     if (!value) {
-      throw UsageError(std::string(kThetaFlag) + " = " + quoted(item) + " " + text::number_rejection(item) +
+      throw UsageError(std::string(kThetaFlag) + " = " + text::quoted(item) + " " + text::number_rejection(item) +
                        "; give a comma-separated list of angles in [0, 90] degrees, as in "
                        "--theta-i 0,30,60,80");
     }

@@ -4,14 +4,14 @@
 #include <string>
 
 #include "app/cli/errors.h"
-#include "app/cli/quoted.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer::cli {
 
 UnscatteredLobe unscattered_lobe_named(std::string_view text) {
   const std::optional<UnscatteredLobe> lobe = parse_unscattered_lobe(text);
   if (!lobe)
-    throw UsageError("unscattered = " + quoted(text) + " is not one of " + std::string(kUnscatteredLobeChoices));
+    throw UsageError("unscattered = " + text::quoted(text) + " is not one of " + std::string(kUnscatteredLobeChoices));
   return *lobe;
 }
 

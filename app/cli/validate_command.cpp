@@ -13,10 +13,10 @@
 #include "app/cli/errors.h"
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
-#include "app/cli/quoted.h"
 #include "app/figures/font.h"
 #include "app/material/picture_metadata.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 #include "app/validate/validation_grid.h"
 #include "app/validate/validation_plot.h"
 #include "app/validate/validation_report.h"
@@ -31,7 +31,7 @@ constexpr double kProgressInterval = 2.0;  // seconds between progress lines wit
 std::uint64_t whole_number(std::string_view flag, std::string_view text, double lo, double hi) {
   const std::optional<double> value = text::parse_number(text);
   if (!value || !(*value >= lo && *value <= hi) || *value != std::floor(*value)) {
-    throw UsageError(std::string(flag) + " = " + quoted(text) + " must be a whole number in [" +
+    throw UsageError(std::string(flag) + " = " + text::quoted(text) + " must be a whole number in [" +
                      text::format_short(lo) + ", " + text::format_short(hi) + "]");
   }
   return static_cast<std::uint64_t>(*value);
@@ -52,7 +52,7 @@ std::vector<validation::ValidationSet> chosen_sets(std::optional<std::string_vie
   for (const std::string_view name : wanted) {
     const bool found =
         std::any_of(grid.begin(), grid.end(), [name](const validation::ValidationSet& s) { return s.name == name; });
-    if (!found) throw UsageError("set = " + quoted(name) + " is not a validation set; the sets are " + known);
+    if (!found) throw UsageError("set = " + text::quoted(name) + " is not a validation set; the sets are " + known);
   }
   std::erase_if(grid, [&wanted](const validation::ValidationSet& s) {
     return std::find(wanted.begin(), wanted.end(), s.name) == wanted.end();

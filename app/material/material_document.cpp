@@ -2,11 +2,11 @@
 
 #include <algorithm>
 
-#include "app/cli/quoted.h"
+#include "app/text/quoted.h"
 
 namespace skinlayer {
 
-MaterialFileError::MaterialFileError(const std::string& message) : std::runtime_error(cli::printable(message)) {}
+MaterialFileError::MaterialFileError(const std::string& message) : std::runtime_error(text::printable(message)) {}
 
 bool MaterialDocument::grey() const {
   const auto is_grey = [](const AlbedoRgb& rgb) { return rgb[0] == rgb[1] && rgb[1] == rgb[2]; };

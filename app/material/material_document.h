@@ -58,7 +58,7 @@ MaterialDocument grey_document(const Material& material);
 // A material file (or preset, or picture) that cannot be read. The message is one line that names the file and,
 // as the case may be, line:column of a syntax error or the key at fault with what would be valid. The command line
 // exits with status 2, as for a bad flag. Whatever of the file the message quotes is made printable
-// (app/cli/quoted.h: no control characters, valid UTF-8), so that a hostile file cannot break the line.
+// (app/text/quoted.h: no control characters, valid UTF-8), so that a hostile file cannot break the line.
 class MaterialFileError : public std::runtime_error {
  public:
   explicit MaterialFileError(const std::string& message);

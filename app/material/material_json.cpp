@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/quoted.h"
 #include "app/material/exact_transparency.h"
+#include "app/text/quoted.h"
 #include "core/skin/skin_parameters.h"
 
 namespace skinlayer {
@@ -267,7 +267,7 @@ nlohmann::ordered_json parse_json_document(std::string_view text, std::string_vi
     const std::string what = error.what();
     const std::size_t open = what.find('\''), close = what.rfind('\'');
     const std::string token =
-        open != std::string::npos && close > open ? cli::quoted(what.substr(open + 1, close - open - 1)) + " " : "";
+        open != std::string::npos && close > open ? text::quoted(what.substr(open + 1, close - open - 1)) + " " : "";
     throw MaterialFileError(std::string(source) + ": not valid JSON: the number " + token +
                             "is too large for a double (magnitude above 1.8e308)");
   }
@@ -338,9 +338,9 @@ MaterialDocument material_from_json(const Json& json, std::string_view source) {
   }
   if (version.get<long long>() < 1)
     reader.fail("version", "must be 1, not " + std::to_string(version.get<long long>()));
-  reader.only_keys(
-      json, "", {"format", "version", "name", "description", "top", "microfacet", "layers", "bottom", "skin", "ordinates",
-                 "model"});
+  reader.only_keys(json, "",
+                   {"format", "version", "name", "description", "top", "microfacet", "layers", "bottom", "skin",
+                    "ordinates", "model"});
 
   MaterialDocument document;
   if (json.contains("name")) document.name = reader.text(json["name"], "name");

@@ -33,8 +33,8 @@
 #include "app/cli/flag_parser.h"
 #include "app/cli/material_flags.h"
 #include "app/cli/model_flag.h"
-#include "app/cli/quoted.h"
 #include "app/text/numbers.h"
+#include "app/text/quoted.h"
 #include "core/material.h"
 #include "core/models/subsurface_model.h"
 
@@ -637,13 +637,13 @@ ExpectedFlags expected_flags(const std::vector<std::string>& arguments, const st
     } else if (argument.starts_with("--") && argument.size() > 2) {
       body = argument.substr(2);
     } else {
-      expected.error_names = cli::quoted(argument);  // not a flag
+      expected.error_names = text::quoted(argument);  // not a flag
       return expected;
     }
     const std::size_t equals = body.find('=');
     const std::string name = body.substr(0, equals);
     if (!is_known(name) && !is_switch(name)) {
-      expected.error_names = cli::quoted("--" + name);
+      expected.error_names = text::quoted("--" + name);
       return expected;
     }
     std::string value;
@@ -966,7 +966,7 @@ bool check_model(const ParsedFlags& flags, const std::vector<std::string>& argum
     return want && model == *want;
   } catch (const UsageError& error) {
     const std::string message = error.what();
-    const bool ok = !want && message.starts_with("model = ") && contains(message, cli::quoted(*text));
+    const bool ok = !want && message.starts_with("model = ") && contains(message, text::quoted(*text));
     EXPECT_TRUE(ok) << "UsageError \"" << escaped(message) << "\" for " << escaped(arguments);
     return ok;
   } catch (const std::exception& error) {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/quoted.h"
+#include "app/text/quoted.h"
 #include "core/material.h"
 
 namespace skinlayer {
@@ -275,7 +275,7 @@ TEST(MaterialJson, MessagesQuoteTheFileAsPrintableUtf8) {
     } catch (const MaterialFileError& error) {
       const std::string message = error.what();
       EXPECT_NE(message.find(part), std::string::npos) << message;
-      EXPECT_EQ(cli::printable(message), message) << "not printable UTF-8: " << message;
+      EXPECT_EQ(text::printable(message), message) << "not printable UTF-8: " << message;
     }
   }
 }

@@ -1,6 +1,6 @@
-#include "app/cli/quoted.h"
+#include "app/text/quoted.h"
 
-namespace skinlayer::cli {
+namespace skinlayer::text {
 namespace {
 
 // The length of the well-formed UTF-8 sequence that starts text[0] (RFC 3629, Table 3-7 of Unicode 15), or 0.
@@ -59,4 +59,4 @@ std::string quoted(std::string_view text) {
   return result;
 }
 
-}  // namespace skinlayer::cli
+}  // namespace skinlayer::text

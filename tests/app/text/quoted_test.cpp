@@ -1,5 +1,5 @@
-// Text quoted into error messages (app/cli/quoted.h): one line of well-formed UTF-8, whatever the input.
-#include "app/cli/quoted.h"
+// Text quoted into error messages (app/text/quoted.h): one line of well-formed UTF-8, whatever the input.
+#include "app/text/quoted.h"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace skinlayer::cli {
+namespace skinlayer::text {
 namespace {
 
 TEST(Printable, KeepsWellFormedUtf8AndMarksEverythingElse) {
@@ -28,16 +28,16 @@ TEST(Printable, KeepsWellFormedUtf8AndMarksEverythingElse) {
       {"\xe2\x82", "??"},               // a sequence cut short
       {"\xe2\x82x", "??x"},
   };
-  for (const auto& [text, shown] : cases) EXPECT_EQ(printable(text), shown) << shown;
+  for (const auto& [text, shown] : cases) EXPECT_EQ(text::printable(text), shown) << shown;
 }
 
 TEST(Quoted, CutsAtFortyBytesWithoutSplittingACharacterIntoBadUtf8) {
-  EXPECT_EQ(cli::quoted("abc"), "'abc'");
+  EXPECT_EQ(text::quoted("abc"), "'abc'");
   const std::string long_text(39, 'x');
-  const std::string cut = cli::quoted(long_text + "\xc3\xa9" + "tail");  // the 40th byte is the first of a 2-byte 'é'
+  const std::string cut = text::quoted(long_text + "\xc3\xa9" + "tail");  // the 40th byte is the first of a 2-byte 'é'
   EXPECT_EQ(cut, "'" + long_text + "?...'");
-  EXPECT_EQ(printable(cut), cut);
+  EXPECT_EQ(text::printable(cut), cut);
 }
 
 }  // namespace
-}  // namespace skinlayer::cli
+}  // namespace skinlayer::text
