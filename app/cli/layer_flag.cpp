@@ -105,22 +105,4 @@ LayerSpec parse_layer_spec(std::string_view text, int place, bool rgb_albedo) {
   return spec;
 }
 
-std::string format_layer_spec(const StackedLayer& layer, const AlbedoRgb& albedo) {
-  // Appended piece by piece: GCC 12 reports a false -Wrestrict overlap for a literal prepended to a temporary.
-  const std::optional<double> transparency = exact_transparency(layer.tau);
-  std::string text = transparency ? "T=" : "tau=";
-  text.append(text::format_shortest(transparency.value_or(layer.tau)));
-  text.append(",albedo=").append(text::format_shortest(albedo[0]));
-  if (albedo[1] != albedo[0] || albedo[2] != albedo[0]) {
-    text.append(":").append(text::format_shortest(albedo[1])).append(":").append(text::format_shortest(albedo[2]));
-  }
-  text.append(",g=").append(text::format_shortest(layer.g));
-  if (layer.extinction) text.append(",mu_t=").append(text::format_shortest(*layer.extinction));
-  if (layer.interface) {
-    text.append(",sigma=").append(text::format_shortest(layer.interface->sigma));
-    text.append(",eta=").append(text::format_shortest(layer.interface->eta));
-  }
-  return text;
-}
-
 }  // namespace skinlayer::cli

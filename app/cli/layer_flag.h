@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "app/material/material_document.h"
+#include "app/material/material_flag_text.h"
 #include "core/material.h"
 
 namespace skinlayer::cli {
@@ -25,8 +26,5 @@ struct LayerSpec {
 // range is [-0.95, 0.95] (Henyey-Greenstein asymmetry)"). Throws skinlayer::ParameterError for a value out of
 // range, UsageError for anything else malformed.
 LayerSpec parse_layer_spec(std::string_view text, int place, bool rgb_albedo);
-
-// The spec that parse_layer_spec reads back into the same layer ("T=0.5,albedo=0.9,g=0.8[,mu_t=..][,sigma=..,eta=..]").
-std::string format_layer_spec(const StackedLayer& layer, const AlbedoRgb& albedo);
 
 }  // namespace skinlayer::cli

@@ -255,32 +255,6 @@ Material single_channel(const MaterialDocument& document) {
   return document.layer;
 }
 
-std::string material_to_flags(const Material& material) {
-  std::string text =
-      "--sigma " + text::format_shortest(material.sigma) + " --eta " + text::format_shortest(material.eta);
-  if (material.below.empty()) {
-    // T with the fewest digits that give back the same tau (0.1, not exp(-(-ln 0.1)) = 0.10000000000000002).
-    const std::optional<double> transparency = exact_transparency(material.tau);
-    const std::string depth =
-        transparency ? " --T " + text::format_shortest(*transparency) : " --tau " + text::format_shortest(material.tau);
-    text += depth;
-    text += " --albedo " + text::format_shortest(material.albedo) + " --g " + text::format_shortest(material.g);
-    if (material.extinction) text += " --mu-t " + text::format_shortest(*material.extinction);
-  } else {
-    for (const StackedLayer& layer : stack_layers(material)) {
-      text += " --layer " + format_layer_spec(layer, {layer.albedo, layer.albedo, layer.albedo});
-    }
-  }
-  text += " --bottom " + format_bottom(material.bottom);
-  if (material.bottom.sigma) text += " --bottom-sigma " + text::format_shortest(*material.bottom.sigma);
-  if (material.bottom.eta) text += " --bottom-eta " + text::format_shortest(*material.bottom.eta);
-  if (material.ordinates) text += " --ordinates " + std::to_string(*material.ordinates);
-  if (material.microfacet != Material{}.microfacet) {
-    text += " --microfacet " + std::string(microfacet_model_name(material.microfacet));
-  }
-  return text;
-}
-
 std::string rgb_albedo_usage() {
   const ParameterInfo& albedo = parameter_info("albedo");
   return "  --albedo A | r,g,b   single-scattering albedo, grey or per color channel, each in " + range_text(albedo) +

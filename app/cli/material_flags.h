@@ -13,6 +13,7 @@
 
 #include "app/cli/flag_parser.h"
 #include "app/material/material_document.h"
+#include "app/material/material_flag_text.h"
 #include "core/material.h"
 
 namespace skinlayer::cli {
@@ -49,11 +50,6 @@ std::array<double, 3> albedo_rgb_from_text(std::string_view text);
 
 // --microfacet's value, "multiple" or "single"; UsageError naming the flag and both values otherwise.
 MicrofacetModel microfacet_from_text(std::string_view text);
-
-// The flags that material_from_flags reads back into the same material: every parameter, e.g.
-// "--sigma 0.5 --eta 1.4 --T 0.2 --albedo 1 --g 0.8 --bottom air" (--tau when T would not read back exactly; the
-// bottom's own sigma and eta and --ordinates only when set), each number in its shortest exact form.
-std::string material_to_flags(const Material& material);
 
 // The help line of --albedo where it takes RGB: "  --albedo A | r,g,b   ..." with its range and default.
 std::string rgb_albedo_usage();

@@ -58,17 +58,6 @@ SkinParameters parse_skin_spec(std::string_view text, const SkinParameters& base
   return skin;
 }
 
-std::string format_skin_spec(const SkinParameters& skin) {
-  std::string text;
-  for (const ParameterInfo& info : skin_parameter_table()) {
-    if (!text.empty()) text += ',';
-    text.append(info.flag);
-    text += '=';
-    text += text::format_shortest(skin_parameter(skin, info.flag));
-  }
-  return text;
-}
-
 std::optional<double> wavelength_from_flags(const ParsedFlags& flags) {
   const std::optional<std::string_view> text = flags.value(kWavelengthFlag);
   if (!text) return std::nullopt;
@@ -85,13 +74,7 @@ std::optional<double> wavelength_from_flags(const ParsedFlags& flags) {
 }
 
 MaterialDocument document_at_wavelength(const MaterialDocument& document, double wavelength_nm) {
-  if (document.skin) {
-    MaterialDocument grey = grey_document(skin_material(*document.skin, wavelength_nm, document.layer));
-    grey.name = document.name;
-    grey.description = document.description;
-    grey.model = document.model;
-    return grey;
-  }
+  if (document.skin) return skin_document_at_wavelength(document, wavelength_nm);
   if (!document.grey()) {
     throw UsageError(
         "flag --wavelength picks one wavelength of a spectrum, and an RGB material has none; give"

@@ -9,6 +9,7 @@
 
 #include "app/cli/flag_parser.h"
 #include "app/material/material_document.h"
+#include "app/material/material_flag_text.h"
 #include "core/skin/skin_parameters.h"
 
 namespace skinlayer::cli {
@@ -19,9 +20,6 @@ inline constexpr std::string_view kWavelengthFlag = "wavelength";
 // Throws ParameterError ("skin: blood = 0.3 is out of range; valid range is [0, 0.2] (...)") for a value out of
 // range or NaN, UsageError for an unknown or repeated key or a value that is not a number.
 SkinParameters parse_skin_spec(std::string_view text, const SkinParameters& base = {});
-
-// The spec that parse_skin_spec reads back into the same parameters ("melanin=0.02,eumelanin=0.7,...").
-std::string format_skin_spec(const SkinParameters& skin);
 
 // --wavelength's value in nm, in [360, 830] (where the colour tables are defined; the hemoglobin table reaches
 // 250-1000 nm); none when the flag is absent.

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/layer_flag.h"
 #include "app/figures/model_spheres.h"
 #include "app/figures/polar_plot.h"
 #include "app/figures/skin_figures.h"
+#include "app/material/material_flag_text.h"
 #include "app/material/picture_metadata.h"
 #include "app/text/numbers.h"
 #include "core/conventions.h"
@@ -74,7 +74,7 @@ std::string layers_field(const LayerParams& params) {
   const Material material = params.material();
   std::string field;
   for (const StackedLayer& layer : stack_layers(material)) {
-    std::string spec = cli::format_layer_spec(layer, {layer.albedo, layer.albedo, layer.albedo});
+    std::string spec = format_layer_spec(layer, {layer.albedo, layer.albedo, layer.albedo});
     std::replace(spec.begin(), spec.end(), ',', ';');
     field.append(field.empty() ? "" : " ").append(spec);
   }

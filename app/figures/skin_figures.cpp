@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/skin_flag.h"
 #include "app/figures/model_spheres.h"
 #include "app/figures/xy_plot.h"
+#include "app/material/material_flag_text.h"
 #include "app/material/picture_metadata.h"
 #include "app/process/parallel_for.h"
 #include "app/solution/document_profile.h"
@@ -26,7 +26,7 @@ namespace {
 
 // The --skin value of a curve, with ';' for ',' so that it is one CSV field.
 std::string skin_field(const SkinParameters& skin) {
-  std::string spec = cli::format_skin_spec(skin);
+  std::string spec = format_skin_spec(skin);
   std::replace(spec.begin(), spec.end(), ',', ';');
   return spec;
 }
@@ -147,7 +147,7 @@ FigureSize build_profiles(const FigureSpec& spec, const std::filesystem::path& d
     const double shade = 1.0 - 0.3 * static_cast<double>(k);  // fair bright, dark deep
     for (const Band& band : kBands) {
       const DocumentProfile profile =
-          document_profile_in_annuli(cli::document_at_wavelength(document, band.wavelength), edges, request);
+          document_profile_in_annuli(skin_document_at_wavelength(document, band.wavelength), edges, request);
       const Rgba color{static_cast<std::uint8_t>(band.color[0] * shade),
                        static_cast<std::uint8_t>(band.color[1] * shade),
                        static_cast<std::uint8_t>(band.color[2] * shade), 255};

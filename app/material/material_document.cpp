@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "app/text/quoted.h"
+#include "core/skin/skin_optics.h"
 
 namespace skinlayer {
 
@@ -67,6 +68,14 @@ MaterialDocument grey_document(const Material& material) {
     document.set_layer_albedo(i, {layers[i].albedo, layers[i].albedo, layers[i].albedo});
   }
   return document;
+}
+
+MaterialDocument skin_document_at_wavelength(const MaterialDocument& skin, double wavelength_nm) {
+  MaterialDocument grey = grey_document(skin_material(*skin.skin, wavelength_nm, skin.layer));
+  grey.name = skin.name;
+  grey.description = skin.description;
+  grey.model = skin.model;
+  return grey;
 }
 
 }  // namespace skinlayer

@@ -55,6 +55,10 @@ void require_layered(const MaterialDocument& document, std::string_view what);
 // The document of a one-channel material: every layer's albedo the same in the three channels.
 MaterialDocument grey_document(const Material& material);
 
+// A skin document at one wavelength: its layers there as a grey document, with its name, description and model.
+// The document must be a skin's (document.skin set).
+MaterialDocument skin_document_at_wavelength(const MaterialDocument& skin, double wavelength_nm);
+
 // A material file (or preset, or picture) that cannot be read. The message is one line that names the file and,
 // as the case may be, line:column of a syntax error or the key at fault with what would be valid. The command line
 // exits with status 2, as for a bad flag. Whatever of the file the message quotes is made printable

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <string>
 
-#include "app/cli/material_flags.h"
 #include "app/figures/canvas.h"
 #include "app/figures/xy_plot.h"
+#include "app/material/material_flag_text.h"
 #include "core/conventions.h"
 #include "core/solver.h"
 
@@ -84,7 +84,7 @@ Image draw_validation_plot(const SetResult& result, const figures::Font& font) {
   std::snprintf(title, sizeof title, "%s: %s, θi %g°", result.set.name.c_str(), result.set.description.c_str(),
                 result.set.theta_i_deg);
   canvas.text(font, title, {canvas.width() / 2.0, 24}, 18, figures::kPlotInk, figures::Align::Center);
-  canvas.text(font, cli::material_to_flags(result.set.material), {canvas.width() / 2.0, 48}, 13, figures::kPlotMuted,
+  canvas.text(font, material_to_flags(result.set.material), {canvas.width() / 2.0, 48}, 13, figures::kPlotMuted,
               figures::Align::Center);
   int row = 0;
   for (const ExitSide side : {ExitSide::Reflected, ExitSide::Transmitted}) {

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "app/cli/material_flags.h"
+#include "app/material/material_flag_text.h"
 
 namespace skinlayer::validation {
 namespace {
@@ -140,7 +140,7 @@ void write_markdown_report(const std::filesystem::path& dir, std::span<const Set
          << formatted("%llu paths (%llu cut at the event limit), MC %.1f s, solver %.3f s.\n\n",
                       static_cast<unsigned long long>(r.paths), static_cast<unsigned long long>(r.truncated_paths),
                       r.monte_carlo_seconds, r.solver_seconds)
-         << "Material: `" << cli::material_to_flags(r.set.material) << "`\n\n"
+         << "Material: `" << material_to_flags(r.set.material) << "`\n\n"
          << "![" << r.set.name << "](" << r.set.name << ".png)\n\n"
          << verdict_line(r) << ".\n\n"
          << "| quantity | Monte Carlo | SE | solver | diff / SE | relative | verdict |\n"

@@ -19,7 +19,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   fuzz::require(place > 1 || !spec.interface, "the first layer read an interface above it");
   StackedLayer layer{spec.tau, spec.albedo[0], spec.g, spec.interface};
-  const std::string formatted = cli::format_layer_spec(layer, spec.albedo);
+  const std::string formatted = format_layer_spec(layer, spec.albedo);
   cli::LayerSpec again;
   if (fuzz::refused_cleanly<ParameterError, cli::UsageError>(
           [&] { again = cli::parse_layer_spec(formatted, place, rgb_albedo); })) {
