@@ -2,12 +2,13 @@
 # Installs the Debian 12 packages skinlayer needs, then builds it.
 #
 #   ./setup.sh         install the packages only
-#   ./setup.sh run     install, configure, build and start the previewer (build/skinlayer; without a display it
-#                      says so and points to the headless `skinlayer render`)
+#   ./setup.sh run     install, configure, build the command line, the previewer and the Python package
+#                      (build/python: docs/guide/library.md) and start the previewer (build/skinlayer; without a
+#                      display it says so and points to the headless `skinlayer render`)
 #   ./setup.sh test    install, configure, build everything and run every test (with the glTF tools of npm in
 #                      build-tools/; with SKINLAYER_BLENDER_CHROOTS=1 also Blender 4.3 and 5.2 in debootstrap chroots
-#                      in build-blender/, 80 s and 1.0-1.35 GB each, and their render tests, some of which fail where
-#                      Blender and skinlayer's models disagree: docs/examples/blender); then build core, the command line's
+#                      in build-blender/, 80 s and 1.0-1.35 GB each, and their render tests, 3-4 minutes each:
+#                      docs/examples/blender); then build core, the command line's
 #                      GL-free parsers, the readers' fuzz targets and their tests again with clang under
 #                      AddressSanitizer + UndefinedBehaviorSanitizer (build-sanitize/: SKINLAYER_SANITIZE=address,
 #                      SKINLAYER_FUZZ=ON, SKINLAYER_BUILD_APP=OFF), run those tests too but the slowest
@@ -103,9 +104,8 @@ install_npm_tools() {
 }
 
 # Debian's Blender 4.3 (trixie) and 5.2 (sid) in chroots, and their render tests, where SKINLAYER_BLENDER_CHROOTS=1
-# asks for them (root and debootstrap needed; 80 s and 1.0-1.35 GB each). Not by default, nor in CI: some of those
-# tests fail where Blender and skinlayer's models of its nodes disagree (docs/examples/blender), and their 60 renders
-# do not fit CI's 45 minutes. Prints the CMake option that builds their tests, ON or OFF.
+# asks for them (root and debootstrap needed; 80 s and 1.0-1.35 GB each). Not by default, nor in CI: their 60 renders
+# (docs/examples/blender) do not fit CI's 45 minutes. Prints the CMake option that builds their tests, ON or OFF.
 make_blender_chroots() {
   if [[ "${SKINLAYER_BLENDER_CHROOTS:-}" != 1 ]]; then
     echo "-DSKINLAYER_BLENDER_CHROOT_TESTS=OFF"
@@ -227,7 +227,7 @@ case "${1:-}" in
     ;;
   run)
     configure
-    cmake --build "$build_dir" -j2 --target skinlayer skinlayer-window
+    cmake --build "$build_dir" -j2 --target skinlayer skinlayer-window skinlayer_python
     exec "$build_dir/skinlayer" "${@:2}"
     ;;
   test)
