@@ -68,4 +68,16 @@ class MaterialFileError : public std::runtime_error {
   explicit MaterialFileError(const std::string& message);
 };
 
+// The file is not there, or is a folder: a MaterialFileError that Python raises as FileNotFoundError or
+// IsADirectoryError.
+class MaterialFileMissing : public MaterialFileError {
+ public:
+  enum class Kind { kNoSuchFile, kFolder };
+  MaterialFileMissing(const std::string& message, Kind kind) : MaterialFileError(message), kind_(kind) {}
+  Kind kind() const { return kind_; }
+
+ private:
+  Kind kind_;
+};
+
 }  // namespace skinlayer

@@ -229,6 +229,10 @@ void translate_errors() {
       PyErr_SetString(PyExc_ValueError, bad.what());
     } catch (const cli::InputError& bad) {
       PyErr_SetString(PyExc_ValueError, bad.what());
+    } catch (const MaterialFileMissing& missing) {
+      PyErr_SetString(
+          missing.kind() == MaterialFileMissing::Kind::kFolder ? PyExc_IsADirectoryError : PyExc_FileNotFoundError,
+          missing.what());
     } catch (const MaterialFileError& bad) {
       PyErr_SetString(PyExc_ValueError, bad.what());
     }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tests/app/error_expectations.h"
@@ -206,6 +207,23 @@ TEST_F(MaterialCommands, EveryFailureIsOneLineAndWritesNothing) {
   }
   for (const std::string& name : entries()) {
     EXPECT_TRUE(name == "typo.json" || name == "broken.json" || (name == "m.json" && ::geteuid() == 0)) << name;
+  }
+}
+
+// What a newcomer gives --material by mistake gets one line that says what the file is: a folder (exit 2, as a
+// missing file), or one of skinlayer's own exports, which carry the fit but are not a material.
+TEST_F(MaterialCommands, AFolderOrAnExportGivenAsTheMaterialSaysWhatItIs) {
+  EXPECT_TRUE(failed_with_one_line(eval_with({"--material", dir_.string()}), 2, {"is a folder, not a material file"}));
+  const std::vector<std::pair<std::string, std::string>> exports = {
+      {"rgl", "x.bsdf"}, {"mtlx", "x.mtlx"}, {"blender", "x.py"}, {"gltf", "x.gltf"}};
+  for (const auto& [format, name] : exports) {
+    const ProcessResult exported =
+        run_skinlayer({"export", "--format", format, "--preset", "paper-thin", "-o", path(name)});
+    ASSERT_EQ(exported.exit_code, 0) << exported.err;
+    const std::string made_by = "export --format " + format;
+    EXPECT_TRUE(
+        failed_with_one_line(eval_with({"--material", path(name)}), 2, {name, made_by, "not a material", ".json"}))
+        << format;
   }
 }
 

@@ -87,5 +87,7 @@ def test_save_and_load_round_trip_and_the_command_line_reads_the_file(tmp_path):
     assert skinlayer.Material.load(path).to_dict() == material.to_dict()
     table = cli_table(["albedo", "--material", str(path), "--theta-i", "0"])
     assert "reflectance_r" in table
-    with pytest.raises(ValueError, match="missing.json"):
+    with pytest.raises(FileNotFoundError, match="missing.json"):
         skinlayer.Material.load(tmp_path / "missing.json")
+    with pytest.raises(IsADirectoryError, match="is a folder"):
+        skinlayer.Material.load(tmp_path)
