@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
 
 #include "app/cli/errors.h"
 #include "app/text/numbers.h"
@@ -29,6 +31,13 @@ LightingFlags lighting_from_flags(const ParsedFlags& flags) {
   LightingFlags lighting;
   if (const std::optional<std::string_view> env = flags.value("env")) {
     if (env->empty()) throw UsageError("env = '' is empty; give furnace, studio, sky or FILE.hdr");
+    const bool builtin = *env == "furnace" || *env == "studio" || *env == "sky";
+    std::error_code error;
+    if (!builtin && !std::filesystem::is_regular_file(std::string(*env), error)) {
+      const bool folder = std::filesystem::is_directory(std::string(*env), error);
+      throw UsageError("env = " + text::quoted(*env) + (folder ? " is a folder" : " is no file") +
+                       " and not a built-in environment: give furnace, studio, sky or FILE.hdr");
+    }
     lighting.environment = std::string(*env);
   } else {
     for (std::string_view name : {"env-rotate", "env-ev", "background", "samples"}) {

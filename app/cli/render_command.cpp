@@ -106,6 +106,10 @@ int run_render_command(std::span<const std::string_view> arguments, std::ostream
   if (scale != "linear" && scale != "log") throw UsageError("scale = " + text::quoted(scale) + " is not linear or log");
   const LightingFlags lighting = lighting_from_flags(flags);
   const bool hdr = output->ends_with(".hdr");
+  if (!hdr && !output->ends_with(".png")) {
+    throw UsageError("output = " + text::quoted(*output) +
+                     ": render writes PNG (.png) or Radiance HDR (.hdr) pictures; give a name ending in one of them");
+  }
   if (hdr && view != ViewKind::Sphere) {
     throw UsageError("a .hdr picture holds the sphere's linear radiance: give --view sphere");
   }

@@ -212,7 +212,8 @@ TEST(EnvironmentRender, BadEnvironmentsAndFlagsAreOneLineErrors) {
     EXPECT_NE(result.err.find(text), std::string::npos) << result.err;
     EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
   };
-  fails({"--env", "/nonexistent/sky.hdr"}, 1, "/nonexistent/sky.hdr");
+  // No such file is a mistake on the command line (exit 2), named with the built-ins; a file that is no image, 1.
+  fails({"--env", "/nonexistent/sky.hdr"}, 2, "/nonexistent/sky.hdr");
   const fs::path text_file = temporary("text", ".hdr");
   { std::ofstream(text_file) << "not an image\n"; }
   fails({"--env", text_file.string()}, 1, text_file.string());

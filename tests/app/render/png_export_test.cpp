@@ -3,12 +3,12 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>  // libstb.so holds the implementation
 
-#include "tests/app/process_runner.h"
-
 #include <array>
 #include <filesystem>
 #include <sstream>
 #include <string>
+
+#include "tests/app/process_runner.h"
 
 namespace skinlayer::test {
 namespace {
@@ -24,7 +24,8 @@ ProcessResult run_render(const std::string& arguments) {
 TEST(PngExport, RenderWritesADecodablePictureOfTheRequestedSize) {
   const std::filesystem::path out = std::filesystem::temp_directory_path() / "skinlayer_render_test.png";
   std::filesystem::remove(out);
-  const ProcessResult result = run_render("render --size 300x200 --albedo 0.9,0.6,0.5 --light-theta 30 -o " + out.string());
+  const ProcessResult result =
+      run_render("render --size 300x200 --albedo 0.9,0.6,0.5 --light-theta 30 -o " + out.string());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   int width = 0, height = 0, channels = 0;
   unsigned char* pixels = stbi_load(out.c_str(), &width, &height, &channels, 4);
@@ -136,6 +137,27 @@ TEST(PngExport, BadRenderFlagsNameTheFlag) {
   EXPECT_NE(run_render("render --T 0 --albedo 0.9 --sphere-radius 10 -o /tmp/x.png").err.find("mu-t"),
             std::string::npos);
   EXPECT_NE(run_render("render --mu-t 5 --sphere-radius 10 -o /tmp/x.png").err.find("profile"), std::string::npos);
+}
+
+// A picture name render cannot write, and an environment that is neither built in nor a file: exit 2 and one line
+// that says what to give, before anything is solved or written.
+TEST(PngExport, AnUnwritablePictureNameOrAnUnknownEnvironmentSaysWhatToGive) {
+  const std::filesystem::path jpeg = std::filesystem::temp_directory_path() / "skinlayer_render_test.jpg";
+  std::filesystem::remove(jpeg);
+  const ProcessResult as_jpeg = run_render("render --size 32x32 -o " + jpeg.string());
+  EXPECT_EQ(as_jpeg.exit_code, 2);
+  EXPECT_NE(as_jpeg.err.find(".png"), std::string::npos) << as_jpeg.err;
+  EXPECT_NE(as_jpeg.err.find(".hdr"), std::string::npos) << as_jpeg.err;
+  EXPECT_FALSE(std::filesystem::exists(jpeg));
+  const ProcessResult typo = run_render("render --size 32x32 --env studoi -o /tmp/x.png");
+  EXPECT_EQ(typo.exit_code, 2);
+  for (const char* word : {"studoi", "furnace", "studio", "sky", "FILE.hdr"}) {
+    EXPECT_NE(typo.err.find(word), std::string::npos) << word << ": " << typo.err;
+  }
+  const ProcessResult folder =
+      run_render("render --size 32x32 --env " + std::filesystem::temp_directory_path().string() + " -o /tmp/x.png");
+  EXPECT_EQ(folder.exit_code, 2);
+  EXPECT_NE(folder.err.find("is a folder"), std::string::npos) << folder.err;
 }
 
 }  // namespace
