@@ -1,5 +1,6 @@
 #include "app/cli/match_command.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -93,7 +94,8 @@ void write_document(const MaterialDocument& document, const ParsedFlags& flags, 
   }
 }
 
-// CSV wavelength_nm,reflectance with an optional header: the pairs, ascending.
+// CSV wavelength_nm,reflectance with an optional header and blank lines anywhere: the pairs, ascending (a file that
+// descends throughout is read backwards). A reflectance above 1.5 gets the hint that the file may be in per cent.
 void read_spectrum(const std::string& path, std::vector<double>& wavelengths, std::vector<double>& reflectance) {
   std::ifstream file(path);
   if (!file) throw UsageError("spectrum = " + text::quoted(path) + " cannot be read");
@@ -111,19 +113,30 @@ void read_spectrum(const std::string& path, std::vector<double>& wavelengths, st
       if (number == 1) continue;  // a header
       throw InputError(where() + "expected two numbers, wavelength_nm,reflectance");
     }
+    if (*r > 1.5 && *r <= 100.0) {
+      throw InputError(where() + "reflectance " + text::format_number(*r) +
+                       " is above 1.5: a fraction is expected; if the file is in per cent, divide it by 100");
+    }
     if (!(*w > 0.0) || !(*r >= 0.0 && *r <= 1.5)) {
       throw InputError(where() + "wavelength must be positive and reflectance in [0, 1.5]");
     }
-    if (!wavelengths.empty() && *w <= wavelengths.back()) throw InputError(where() + "wavelengths must ascend");
+    if (wavelengths.size() >= 2 && (*w > wavelengths.back()) != (wavelengths.back() > wavelengths.front())) {
+      throw InputError(where() + "wavelengths must ascend (or descend) throughout");
+    }
+    if (!wavelengths.empty() && *w == wavelengths.back()) throw InputError(where() + "a wavelength is repeated");
     wavelengths.push_back(*w);
     reflectance.push_back(*r);
+  }
+  if (wavelengths.size() >= 2 && wavelengths.back() < wavelengths.front()) {
+    std::reverse(wavelengths.begin(), wavelengths.end());
+    std::reverse(reflectance.begin(), reflectance.end());
   }
 }
 
 int match_spectrum(const ParsedFlags& flags, const MaterialDocument& document, std::ostream& out, std::ostream& err) {
   std::vector<double> wavelengths, reflectance;
   read_spectrum(std::string(*flags.value(kSpectrumFlag)), wavelengths, reflectance);
-  const double theta = number_flag(flags, kThetaFlag, 8.0, 0.0, 89.0, " (degrees)");
+  const double theta = number_flag(flags, kThetaFlag, 8.0, 0.0, 90.0, " (degrees)");
   double from = 400.0, to = 700.0;
   if (const auto range = flags.value(kRangeFlag)) {
     const std::vector<std::string_view> ends = split_list(*range, ':');
@@ -172,12 +185,14 @@ std::string match_usage() {
          "\n"
          "Pick the colour, get the parameters. --color is the colour of the sphere's centre under a white furnace:\n"
          "the reflectance at normal incidence, surface and subsurface, in linear sRGB (sRGB-encoded on the command\n"
-         "line unless --linear; #RRGGBB is sRGB-encoded). With --skin (or a skin material) match adjusts melanin,\n"
-         "blood and scattering (the other skin keys stay as given); otherwise the top layer's albedo per channel.\n"
+         "line unless --linear; #RRGGBB is sRGB-encoded). With --skin (or a skin material), or with no material\n"
+         "flags at all, match adjusts a skin's melanin, blood and scattering (the other skin keys stay as given);\n"
+         "with other material flags, the top layer's albedo per channel.\n"
          "It writes the material file. A colour out of reach gives the nearest reachable one and one line on\n"
          "stderr naming the CIEDE2000 distance.\n"
          "--spectrum fits a measured directional-hemispherical reflectance spectrum, CSV wavelength_nm,reflectance\n"
-         "on any grid (a header line is allowed), with all six skin parameters, least squares at the measured\n"
+         "on any grid, ascending or descending (a header line and blank lines are allowed; reflectance as a\n"
+         "fraction, not per cent), with all six skin parameters, least squares at the measured\n"
          "wavelengths in the range (default 400:700 nm) at incidence --theta-i (default 8 degrees, the usual\n"
          "integrating-sphere geometry). It writes the material and one stderr line with the RMS residual.\n"
          "\n"
@@ -195,10 +210,21 @@ int run_match_command(std::span<const std::string_view> arguments, std::ostream&
       material_flags_and({kColorFlag, kSpectrumFlag, kThetaFlag, kRangeFlag, kSkinFlag, "output"});
   const std::string_view switches[] = {kLinearSwitch};
   const ParsedFlags flags = ParsedFlags::parse(arguments, known, "skinlayer match", switches);
-  if (flags.has(kColorFlag) == flags.has(kSpectrumFlag)) {
+  if (flags.has(kColorFlag) && flags.has(kSpectrumFlag)) {
+    throw UsageError("match takes one of --color and --spectrum, not both: a colour or a measured spectrum");
+  }
+  if (!flags.has(kColorFlag) && !flags.has(kSpectrumFlag)) {
     throw UsageError("match needs one of --color R,G,B and --spectrum FILE.csv");
   }
   MaterialDocument document = material_document_from_flags(flags, AlbedoFlag::GreyOrRgb);
+  // A colour with nothing else is a skin's: what the command is for, and what a grey layer of the paper's defaults
+  // would only come near (skin-fair's own #C09F8B was 17.7 CIEDE2000 away from any albedo of that layer). Said on
+  // stderr before the fit, with how to match a layer instead.
+  const bool material_given =
+      flags.has(kSkinFlag) || flags.has("material") || flags.has("preset") ||
+      std::ranges::any_of(material_flag_names(), [&](std::string_view name) { return flags.has(name); });
+  const bool skin_by_default = flags.has(kColorFlag) && !material_given;
+  if (skin_by_default) document.skin = SkinParameters{};
   if (flags.has(kSpectrumFlag)) {
     if (flags.has(kLinearSwitch)) throw UsageError("--linear applies to --color, not --spectrum");
     if (!document.skin) document.skin = SkinParameters{};  // a spectrum fit is of the skin model
@@ -206,6 +232,11 @@ int run_match_command(std::span<const std::string_view> arguments, std::ostream&
   }
   if (flags.has(kThetaFlag) || flags.has(kRangeFlag)) {
     throw UsageError("--theta-i and --range apply to --spectrum; --color matches at normal incidence");
+  }
+  if (skin_by_default) {
+    (void)parse_color(*flags.value(kColorFlag));  // a malformed colour is the one line, before any notice
+    err << "skinlayer: match: matching a skin (--skin with its defaults); give material flags (--preset, --layer, "
+           "--T, ...) to match a layer's albedo instead\n";
   }
   return match_color(flags, document, out, err);
 }

@@ -176,8 +176,14 @@ MaterialDocument material_document_from_flags(const ParsedFlags& flags, AlbedoFl
   if (const auto value = checked_number(flags, "tau")) material.tau = *value;
   if (albedo_flag == AlbedoFlag::GreyOrRgb) {
     if (const auto text = flags.value("albedo")) document.albedo_rgb = albedo_rgb_from_text(*text);
-  } else if (const auto value = checked_number(flags, "albedo")) {
-    document.albedo_rgb = {*value, *value, *value};
+  } else {
+    const std::optional<std::string_view> text = flags.value("albedo");
+    if (text && text->find(',') != std::string_view::npos && text::parse_number(*text) == std::nullopt) {
+      throw UsageError("albedo = " + text::quoted(*text) +
+                       " is one per colour channel, and this command takes one albedo: a grey material, whose "
+                       "spectrum is flat, or a skin (--skin) for a spectrum that is not");
+    }
+    if (const auto value = checked_number(flags, "albedo")) document.albedo_rgb = {*value, *value, *value};
   }
   material.albedo = document.albedo_rgb[0];
   if (const auto value = checked_number(flags, "g")) material.g = *value;

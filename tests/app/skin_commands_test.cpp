@@ -125,6 +125,9 @@ TEST(SkinCommands, BadSkinValuesAreOneLineNamingTheKeyAndItsRange) {
                                    {"wavelength = 900", "[360, 830]"}));
   EXPECT_TRUE(failed_with_one_line(run_skinlayer({"albedo", "--preset", "paper-skin", "--wavelength", "500"}), 2,
                                    {"RGB material has none"}));
+  // An RGB albedo where a spectrum is asked for: the reason, not "is not a number".
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"spectrum", "--albedo", "0.5,0.6,0.7"}), 2,
+                                   {"albedo = '0.5,0.6,0.7'", "one albedo", "grey", "--skin"}));
 }
 
 // A skin material file (as `material --skin` writes it) reads back into the same spectrum; render and export take it,
@@ -189,6 +192,18 @@ TEST_F(MatchCommand, ASkinColourRoundTripsWithinHalfAPercent) {
   }
 }
 
+// A colour alone is matched as a skin's, and the command says so first: skin-fair's own colour is reached, where the
+// paper's grey layer stayed 17.7 CIEDE2000 away from it.
+TEST_F(MatchCommand, AColourAloneIsASkinsAndTheCommandSaysSo) {
+  const ProcessResult result = run_skinlayer({"match", "--color", "#C09F8B"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("\"skin\""), std::string::npos) << result.out;
+  EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  EXPECT_NE(result.err.find("matching a skin"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("--preset"), std::string::npos) << result.err;
+  EXPECT_EQ(result.err.find("out of reach"), std::string::npos) << result.err;
+}
+
 TEST_F(MatchCommand, ALayeredMaterialGetsItsTopAlbedoPerChannel) {
   const Eigen::Vector3d target(0.5, 0.3, 0.2);
   const std::string out = path("wax.json");
@@ -237,6 +252,36 @@ TEST_F(MatchCommand, ASpectrumOfTheModelIsFitClosely) {
   ASSERT_NE(at, std::string::npos) << fit.err;
   EXPECT_LT(std::stod(fit.err.substr(at + 13)), 2e-3) << fit.err;
   std::remove(csv.c_str());
+}
+
+// The files people have: one that descends (many spectrometers write red first), with blank lines, reads as the
+// same spectrum; one in per cent gets one line that says so; both --color and --spectrum say "not both".
+TEST_F(MatchCommand, ADescendingSpectrumReadsAsItsAscendingOneAndPerCentGetsAHint) {
+  const CsvOutput spectrum = run_csv({"spectrum", "--skin", "melanin=0.1,blood=0.02,epidermis=0.08", "--theta-i", "8"});
+  const std::string up = path("up.csv"), down = path("down.csv"), percent = path("percent.csv");
+  {
+    std::ofstream ascending(up), descending(down), in_percent(percent);
+    ascending << "wavelength_nm,reflectance\n";
+    descending << "wavelength_nm,reflectance\n\n";
+    in_percent << "wavelength_nm,reflectance\n";
+    for (const std::vector<double>& row : spectrum.rows) {
+      ascending << row[1] << "," << std::setprecision(17) << row[2] << "\n";
+      in_percent << row[1] << "," << std::setprecision(17) << 100.0 * row[2] << "\n";
+    }
+    for (auto row = spectrum.rows.rbegin(); row != spectrum.rows.rend(); ++row) {
+      descending << (*row)[1] << "," << std::setprecision(17) << (*row)[2] << "\n\n";
+    }
+  }
+  const ProcessResult from_up = run_skinlayer({"match", "--spectrum", up});
+  const ProcessResult from_down = run_skinlayer({"match", "--spectrum", down});
+  ASSERT_EQ(from_up.exit_code, 0) << from_up.err;
+  ASSERT_EQ(from_down.exit_code, 0) << from_down.err;
+  EXPECT_EQ(from_down.out, from_up.out);
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"match", "--spectrum", percent}), 1,
+                                   {"percent.csv:2:", "above 1.5", "per cent", "divide it by 100"}));
+  EXPECT_TRUE(failed_with_one_line(run_skinlayer({"match", "--color", "#C09F8B", "--spectrum", up}), 2,
+                                   {"--color", "--spectrum", "not both"}));
+  for (const std::string& file : {up, down, percent}) std::remove(file.c_str());
 }
 
 TEST_F(MatchCommand, BadRequestsAreOneLine) {
