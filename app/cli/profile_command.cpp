@@ -35,7 +35,7 @@ double positive_number(std::string_view flag, std::string_view text) {
 std::vector<double> annulus_edges(std::optional<std::string_view> text, double default_width) {
   if (!text) {
     std::vector<double> edges;
-    for (int i = 0; i <= 100; ++i) edges.push_back(default_width * i);
+    for (int i = 0; i <= 100; ++i) edges.push_back(text::decimal_multiple(default_width, i));
     return edges;
   }
   const std::vector<std::string_view> parts = split_list(*text, ':');
@@ -47,7 +47,7 @@ std::vector<double> annulus_edges(std::optional<std::string_view> text, double d
                      std::to_string(kMaxAnnuli) + "]");
   }
   std::vector<double> edges;
-  for (int i = 0; i <= static_cast<int>(*count); ++i) edges.push_back(width * i);
+  for (int i = 0; i <= static_cast<int>(*count); ++i) edges.push_back(text::decimal_multiple(width, i));
   return edges;
 }
 

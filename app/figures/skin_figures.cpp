@@ -136,7 +136,7 @@ FigureSize build_profiles(const FigureSpec& spec, const std::filesystem::path& d
   constexpr std::array<Band, 3> kBands = {
       {{650.0, "650 nm", {200, 40, 40}}, {550.0, "550 nm", {40, 150, 40}}, {450.0, "450 nm", {40, 70, 200}}}};
   std::vector<double> edges;
-  for (int i = 0; i <= 20; ++i) edges.push_back(0.2 * i);
+  for (int i = 0; i <= 20; ++i) edges.push_back(text::decimal_multiple(0.2, i));  // as profile --annuli 0.2:20
   ProfileRequest request;
   request.options.parallel_for = parallel_for_threads;
   for (std::size_t k = 0; k < spec.curves.size(); ++k) {

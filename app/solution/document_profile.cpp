@@ -31,7 +31,10 @@ void require_profile_layer(const Material& m, Incidence incidence) {
   } else if (faces && !ends_in_half_space) {
     why = "it has an interface between its layers over a finite stack (its last layer needs tau=inf)";
   } else if (stack && !all_lengths) {
-    why = "its layers do not all have their extinction (mu_t=, 1/mm), which relates their lengths";
+    // Not a geometry the profile lacks, but a number the material lacks: said alone, with what to give.
+    throw ParameterError(
+        "profile: the stack's layers do not all have their extinction (mu_t=, 1/mm), which relates their lengths "
+        "across the stack; give every layer one (--layer ...,mu_t=MU_T)");
   } else if (bottom_face && collimated) {
     why = m.bottom.kind == BottomKind::Lambert
               ? "it has a Lambertian base (--bottom " + format_bottom(m.bottom) +

@@ -48,4 +48,10 @@ std::string format_short(double value) {
   return buffer;
 }
 
+double decimal_multiple(double step, int i) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.12g", step * i);
+  return std::strtod(text, nullptr);
+}
+
 }  // namespace skinlayer::text

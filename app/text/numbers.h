@@ -25,6 +25,10 @@ std::string format_number(double value);
 // Formats a value in the shortest form that reads back as the same double (std::to_chars), e.g. 0.1 as "0.1".
 std::string format_shortest(double value);
 
+// step times i as the decimal a person would write: to 12 significant digits, so that 3 x 0.2 is 0.6, not
+// 0.6000000000000001 (a grid of annulus edges, radii, angles; the value moves by 1e-16 relative at most).
+double decimal_multiple(double step, int i);
+
 // Formats a value with printf "%.10g" (as core does), for ranges and defaults in help and error text.
 std::string format_short(double value);
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,20 @@ TEST(ProfileCommand, AnnuliInMeanFreePathsAreTheCoresProfile) {
     EXPECT_EQ(csv.rows[i][1], edges[i + 1]);
     EXPECT_NEAR(csv.rows[i][2], expected.reflectance[i], 1e-12 * expected.reflectance[i]);
     EXPECT_NEAR(csv.rows[i][3], expected.transmittance[i], 1e-12 * expected.transmittance[i]);
+  }
+}
+
+// The edges are the decimals the user asked for: 3 x 0.05 is written 0.15, not 0.15000000000000002.
+TEST(ProfileCommand, AnnulusEdgesAreWrittenAsTheDecimalsAskedFor) {
+  const ProcessResult result = profile({"--eta", "1", "--bottom", "matched", "--tau", "2", "--annuli", "0.05:4"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::istringstream lines(result.out);
+  std::string line;
+  std::getline(lines, line);  // the header
+  const std::vector<std::string> edges = {"0", "0.05", "0.1", "0.15", "0.2"};
+  for (std::size_t i = 0; i + 1 < edges.size(); ++i) {
+    ASSERT_TRUE(std::getline(lines, line));
+    EXPECT_EQ(line.substr(0, line.find(',', line.find(',') + 1)), edges[i] + "," + edges[i + 1]) << line;
   }
 }
 
@@ -235,6 +250,10 @@ TEST(ProfileCommand, WhatItCannotTakeIsOneLine) {
   EXPECT_TRUE(
       failed_with_one_line(profile({"--layer", "tau=0.5,albedo=0.9,g=0.5", "--layer", "tau=inf,albedo=0.9,g=0.5"}), 2,
                            {"extinction", "mu_t="}));
+  // A preset without lengths: the missing number, not a paragraph about the geometries the profile takes.
+  const ProcessResult preset = profile({"--preset", "clear-coat-red"});
+  EXPECT_TRUE(failed_with_one_line(preset, 2, {"profile: the stack's layers", "mu_t="}));
+  EXPECT_EQ(preset.err.find("computed so far"), std::string::npos) << preset.err;
   EXPECT_TRUE(failed_with_one_line(profile({"--eta", "1", "--layer", "tau=1,albedo=0.9,g=0.8,mu_t=20", "--layer",
                                             "tau=inf,albedo=0.99,g=0.8,mu_t=40,sigma=0.3,eta=1.1"}),
                                    2, {"interface between its layers", "--eta 1"}));
