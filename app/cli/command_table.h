@@ -22,7 +22,12 @@ struct Command {
   std::string_view name;
   std::string (*usage)();
   int (*run)(std::span<const std::string_view> arguments, const CommandStreams& streams);
+  // What it does, for the overview under the usage's own synopsis (each line up to 110 columns).
+  std::string_view summary;
 };
+
+// The synopsis of a usage text: its lines up to the first blank one, "Usage: " and its indent taken off.
+std::string usage_synopsis(std::string_view usage);
 
 // Every command, in the order the overview lists them. `help` itself is not among them.
 std::span<const Command> command_table();

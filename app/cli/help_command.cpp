@@ -7,35 +7,22 @@
 namespace skinlayer::cli {
 
 std::string overview_usage() {
-  return "skinlayer: Stam's (2001) skin-layer illumination model: a rough dielectric surface over a scattering slab.\n"
-         "\n"
-         "Usage:\n"
-         "  skinlayer eval [material flags] < rows.csv\n"
-         "      BRDF and BTDF at direction pairs: CSV rows theta_i,theta_o,phi (degrees) in, values (1/sr) out.\n"
-         "  skinlayer albedo [material flags] [--theta-i LIST]\n"
-         "      reflectance, transmittance and absorptance for light from each incidence angle.\n"
-         "  skinlayer profile [material flags] [--annuli DR:N | --radii LIST]\n"
-         "      where a pencil beam's light leaves the layer, per unit area: the spatial profile (BSSRDF).\n"
-         "  skinlayer spectrum [material flags] [--skin KEY=VALUE,...] [--theta-i LIST] [--wavelength NM]\n"
-         "      reflectance, transmittance and absorptance per wavelength, of a skin or a grey material.\n"
-         "  skinlayer match --color R,G,B|#RRGGBB | --spectrum FILE.csv [material flags] [-o FILE.json]\n"
-         "      pick the colour (or a measured spectrum), get the parameters: the material that reproduces it.\n"
-         "  skinlayer render [material flags] [--albedo A | r,g,b] [view flags] -o FILE.png\n"
-         "      the previewer's sphere and polar lobes, rendered offscreen (no display needed) to a PNG.\n"
-         "  skinlayer material [material flags] [--name N] [--description D] [-o FILE.json]\n"
-         "      the complete material as a material file, which --material FILE reads back (every command).\n"
-         "  skinlayer presets [--colors]\n"
-         "      the named presets (--preset NAME): the paper's settings, skin, leaf, paper, wax, jade, paint;\n"
-         "      --colors gives each one's colour at normal incidence.\n"
-         "  skinlayer figures -o DIR [--size PX]\n"
-         "      the results figures (lobe plots and model spheres): a PNG and a CSV each, and index.html.\n"
-         "  skinlayer fit --target principled [material flags] [-o FILE.json]\n"
-         "      the Blender 3.4 Principled BSDF parameters nearest the material, with the fit's error.\n"
-         "  skinlayer export --format bsdf|merl|rgl [material flags] -o FILE\n"
-         "      the solved material as a tabulated Fourier BSDF (pbrt-v3, layerlab), a MERL BRDF table or an\n"
-         "      RGL measured-BSDF tensor file (pbrt-v4, Mitsuba 3).\n"
-         "  skinlayer validate [--quick] [-o DIR]\n"
-         "      the solver against an independent Monte Carlo walk over a grid of layers: tables and a report.\n"
+  std::string text =
+      "skinlayer: Stam's (2001) skin-layer illumination model: a rough dielectric surface over a scattering slab.\n"
+      "\n"
+      "Usage:\n";
+  // Each command's own synopsis (its --help's first lines), so that the two cannot drift apart, and its summary.
+  for (const Command& command : command_table()) {
+    const std::string synopsis = usage_synopsis(command.usage());
+    std::size_t at = 0;
+    while (at < synopsis.size()) {
+      const std::size_t end = synopsis.find('\n', at);
+      text += "  " + synopsis.substr(at, end - at + 1);
+      at = end + 1;
+    }
+    text += "      " + std::string(command.summary) + "\n";
+  }
+  return text +
          "  skinlayer help [COMMAND], skinlayer COMMAND --help\n"
          "      usage of a command, with every flag, its range and default.\n"
          "  skinlayer --version\n"

@@ -81,6 +81,24 @@ TEST(CliDispatch, EveryCommandAnswersHelp) {
   }
 }
 
+// The overview's synopsis of each command is the command's own, line for line: the first lines of its --help up to
+// the first blank one, "Usage: " and its indent taken off (the overview had drifted: fit listed one target, export
+// three formats). And every synopsis line of the overview is some command's.
+TEST(CliDispatch, TheOverviewGivesEachCommandsOwnSynopsis) {
+  const std::string overview = run_skinlayer({"--help"}).out;
+  for (const std::string& command : skinlayer_command_names()) {
+    const std::string help = run_skinlayer({command, "--help"}).out;
+    std::istringstream lines(help);
+    std::string line, expected;
+    while (std::getline(lines, line) && !line.empty()) {
+      expected += "  " + line.substr(std::string("Usage: ").size()) + "\n";
+    }
+    EXPECT_NE(overview.find("\n" + expected), std::string::npos) << command << ": the overview lacks\n" << expected;
+  }
+  EXPECT_NE(overview.find("gltf"), std::string::npos);
+  EXPECT_NE(overview.find("openpbr"), std::string::npos);
+}
+
 TEST(CliDispatch, VersionPrintsOneLine) {
   const ProcessResult result = run_skinlayer({"--version"});
   ASSERT_EQ(result.exit_code, 0);
