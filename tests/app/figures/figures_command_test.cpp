@@ -175,8 +175,15 @@ TEST_F(FiguresCommand, CsvValuesEqualEvalAtThosePoints) {
       const std::vector<std::string>& row = csv.rows[k];
       ASSERT_EQ(row.size(), csv.column.size()) << figure.name << " row " << k;
       if (field(row, "quantity") == "interface_btdf") continue;  // core's microfacet_btdf: no eval column
-      std::vector<std::string> flags = {"eval",  "--model",        field(row, "model"), "--sigma", field(row, "sigma"),
-                                        "--eta", field(row, "eta"), "--microfacet", field(row, "microfacet")};
+      std::vector<std::string> flags = {"eval",
+                                        "--model",
+                                        field(row, "model"),
+                                        "--sigma",
+                                        field(row, "sigma"),
+                                        "--eta",
+                                        field(row, "eta"),
+                                        "--microfacet",
+                                        field(row, "microfacet")};
       const std::string layers = field(row, "layers");
       if (layers.empty()) {
         flags.insert(flags.end(), {"--T", field(row, "T"), "--albedo", field(row, "albedo"), "--g", field(row, "g")});
@@ -218,8 +225,8 @@ TEST_F(FiguresCommand, CsvValuesEqualEvalAtThosePoints) {
 }
 
 // The spectral skin's CSVs: every reflectance on the 10 nm grid equals `skinlayer spectrum --skin ... --theta-i ...`
-// at its wavelength (the spectra), or `skinlayer albedo --skin ... --theta-i 0`'s RGB reflectance (the spheres), with the recorded skin
-// and top interface.
+// at its wavelength (the spectra), or `skinlayer albedo --skin ... --theta-i 0`'s RGB reflectance (the spheres), with
+// the recorded skin and top interface.
 TEST_F(FiguresCommand, SkinCsvValuesEqualSpectrumAndAlbedo) {
   std::size_t skin_figures = 0, compared = 0;
   for (const StatedPng& figure : stated_) {
@@ -337,6 +344,29 @@ TEST_F(FiguresCommand, RescaledCurvesPeakAtOne) {
     }
   }
   EXPECT_EQ(rescaled_files, 1u);
+}
+
+// --only draws the named figures alone, and index.html shows those; an unknown name lists the figures and makes no
+// folder.
+TEST(FiguresCommandOnly, DrawsTheNamedFiguresAlone) {
+  const fs::path dir = fs::path(::testing::TempDir()) / "skinlayer_figures_only";
+  fs::remove_all(dir);
+  const ProcessResult result =
+      run_skinlayer({"figures", "-o", dir.string(), "--size", "160", "--only", "surface-eta,subsurface-g"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  std::vector<std::string> written;
+  for (const auto& entry : fs::directory_iterator(dir)) written.push_back(entry.path().filename().string());
+  std::sort(written.begin(), written.end());
+  EXPECT_EQ(written, (std::vector<std::string>{"index.html", "subsurface-g.csv", "subsurface-g.png", "surface-eta.csv",
+                                               "surface-eta.png"}));
+  EXPECT_NE(result.out.find("[2/2]"), std::string::npos) << result.out;
+  fs::remove_all(dir);
+  const fs::path never = fs::path(::testing::TempDir()) / "skinlayer_figures_never";
+  const ProcessResult typo = run_skinlayer({"figures", "-o", never.string(), "--only", "surface-etta"});
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_NE(typo.err.find("'surface-etta' is not a figure"), std::string::npos) << typo.err;
+  EXPECT_NE(typo.err.find("skin-profiles"), std::string::npos) << typo.err;
+  EXPECT_FALSE(fs::exists(never));
 }
 
 TEST(FiguresCommandErrors, MissingOutputIsAUsageError) {
