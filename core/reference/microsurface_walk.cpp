@@ -36,8 +36,9 @@ double next_height(const Vec3& w, double h, double sigma, double u) {
 // cumulative
 //   F(x) = c sqrt(pi)/2 erfc(-x) + s/2 exp(-x^2),   x <= c/s,
 // with Newton steps kept inside a bisection bracket. The search starts at min(0, x_max/2), x_max = c/s, near the
-// density's bulk (or mid-bracket where that is outside it), and stops once a Newton step moves x by less than 1e-12 (or hits the root): about 6
-// evaluations of F on average. (Stopping on the bracket's width alone bisected on for 18 after convergence.)
+// density's bulk (or mid-bracket where that is outside it), and stops once a Newton step moves x by less than
+// 1e-12 (or hits the root): about 6 evaluations of F on average. (Stopping on the bracket's width alone bisected
+// on for 18 after convergence.)
 double visible_slope_x(double c, double s, double u) {
   const auto cumulative = [c, s](double x) { return 0.5 * c * kSqrtPi * std::erfc(-x) + 0.5 * s * std::exp(-x * x); };
   double hi = s > 1e-12 ? c / s : 9.0;

@@ -12,9 +12,10 @@ namespace skinlayer {
 namespace {
 
 constexpr int kNodes = 32;
+constexpr std::size_t kValues = 3 * kNodes * kNodes;
 
 // a, b and E, each kNodes x kNodes, the view's cosine running fastest.
-constexpr std::array<double, 3 * kNodes* kNodes> kSheenLtc = {
+constexpr std::array<double, kValues> kSheenLtc = {
 #include "core/targets/cycles_sheen_ltc_table.inc"
 };
 
