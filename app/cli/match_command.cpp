@@ -224,7 +224,6 @@ int run_match_command(std::span<const std::string_view> arguments, std::ostream&
       flags.has(kSkinFlag) || flags.has("material") || flags.has("preset") ||
       std::ranges::any_of(material_flag_names(), [&](std::string_view name) { return flags.has(name); });
   const bool skin_by_default = flags.has(kColorFlag) && !material_given;
-  if (skin_by_default) document.skin = SkinParameters{};
   if (flags.has(kSpectrumFlag)) {
     if (flags.has(kLinearSwitch)) throw UsageError("--linear applies to --color, not --spectrum");
     if (!document.skin) document.skin = SkinParameters{};  // a spectrum fit is of the skin model
@@ -234,6 +233,7 @@ int run_match_command(std::span<const std::string_view> arguments, std::ostream&
     throw UsageError("--theta-i and --range apply to --spectrum; --color matches at normal incidence");
   }
   if (skin_by_default) {
+    document.skin = SkinParameters{};
     (void)parse_color(*flags.value(kColorFlag));  // a malformed colour is the one line, before any notice
     err << "skinlayer: match: matching a skin (--skin with its defaults); give material flags (--preset, --layer, "
            "--T, ...) to match a layer's albedo instead\n";
